@@ -1,0 +1,94 @@
+// mrd-bench: cost of one control-period step of the model parts. The current changes every
+// step (a 0.5 Hz sine of 0..1.2 A sampled at 1 kHz), so every step integrates Eq. 10.
+#include <benchmark/benchmark.h>
+
+#include <array>
+#include <cmath>
+#include <numbers>
+
+#include "model/hysteresis_compensator.hpp"
+#include "model/observer.hpp"
+
+namespace {
+
+constexpr int kSamplesPerCycle = 2000;  // 0.5 Hz at 1 kHz
+
+const std::array<double, kSamplesPerCycle>& sine_current() {
+  static const auto table = [] {
+    std::array<double, kSamplesPerCycle> t{};
+    for (int i = 0; i < kSamplesPerCycle; ++i) {
+      t[i] = 0.6 - 0.6 * std::cos(2.0 * std::numbers::pi * i / kSamplesPerCycle);
+    }
+    return t;
+  }();
+  return table;
+}
+
+const std::array<double, kSamplesPerCycle>& sine_displacement() {
+  static const auto table = [] {
+    std::array<double, kSamplesPerCycle> t{};
+    for (int i = 0; i < kSamplesPerCycle; ++i) {
+      t[i] = 0.04 * std::sin(2.0 * std::numbers::pi * i / kSamplesPerCycle);
+    }
+    return t;
+  }();
+  return table;
+}
+
+void BM_JilesAthertonStep(benchmark::State& state) {
+  const mrd::model::DamperModel m;
+  mrd::model::JilesAtherton core(m.jiles_atherton, m.circuit, m.integration);
+  const auto& current = sine_current();
+  int i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(core.apply_current(current[i]));
+    i = (i + 1) % kSamplesPerCycle;
+  }
+}
+BENCHMARK(BM_JilesAthertonStep);
+
+void BM_ObserverStep(benchmark::State& state) {
+  mrd::model::Observer observer{mrd::model::DamperModel{}};
+  const auto& current = sine_current();
+  const auto& x = sine_displacement();
+  int i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(observer.step(x[i], current[i]));
+    i = (i + 1) % kSamplesPerCycle;
+  }
+}
+BENCHMARK(BM_ObserverStep);
+
+void BM_CompensatorStep(benchmark::State& state) {
+  const mrd::model::DamperModel m;
+  mrd::model::JilesAtherton core(m.jiles_atherton, m.circuit, m.integration);
+  const mrd::model::TargetCurve target(core, 1.5);
+  mrd::model::HysteresisCompensator compensator(core, target, {}, 1e-3);
+  const auto& current = sine_current();
+  int i = 0;
+  for (auto _ : state) {
+    const double command = compensator.command(current[i], core);
+    benchmark::DoNotOptimize(core.apply_current(command));
+    i = (i + 1) % kSamplesPerCycle;
+  }
+}
+BENCHMARK(BM_CompensatorStep);
+
+}  // namespace
+
+namespace {
+// The cheaper 2nd-order option, for the trade-off table in docs/PERFORMANCE.md.
+void BM_JilesAthertonStepHeun(benchmark::State& state) {
+  const mrd::model::DamperModel m;
+  mrd::model::JilesAthertonSettings heun = m.integration;
+  heun.integrator = mrd::model::Integrator::kHeun;
+  mrd::model::JilesAtherton core(m.jiles_atherton, m.circuit, heun);
+  const auto& current = sine_current();
+  int i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(core.apply_current(current[i]));
+    i = (i + 1) % kSamplesPerCycle;
+  }
+}
+BENCHMARK(BM_JilesAthertonStepHeun);
+}  // namespace

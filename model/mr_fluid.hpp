@@ -1,0 +1,33 @@
+#pragma once
+
+#include "model/parameter_check.hpp"
+
+namespace mrd::model {
+
+// MR fluid properties behind Eq. 12-13. Defaults are the paper's Table 3 (mid-range).
+struct MrFluid {
+  double viscosity = 2.25;             // eta, zero-field viscosity [Pa s]
+  double volume_fraction = 0.40;       // V, particle volume fraction [-]
+  double particle_diameter = 1.5e-6;   // rho in Eq. 13, particle diameter [m]
+  double particle_saturation = 2.1;    // Ms in Eq. 13, mu0*Ms of the particles [T] (docs/MODEL.md)
+};
+
+ParameterReport validate(const MrFluid& fluid);
+
+// Eq. 13: yield stress [Pa] from the gap induction |B| [T].
+//   tau_y = 146960 B^0.5811 V^1.706 rho^0.2 Ms^0.8 + 1083.2 V - 287.03
+// The fit takes rho in micrometres and Ms as mu0*Ms in tesla: with those units it gives
+// 10-100 kPa at 1 T, the range of commercial MR fluids; SI metres or A/m would give
+// values 1e3-1e5 times too large. Below V = 0.265 the constant term is negative, so the
+// result is clamped at 0: a fluid cannot have negative yield stress.
+class YieldStress {
+ public:
+  explicit YieldStress(const MrFluid& fluid);
+  [[nodiscard]] double operator()(double B) const;
+
+ private:
+  double field_gain_;  // 146960 V^1.706 rho^0.2 Ms^0.8 [Pa / T^0.5811]
+  double offset_;      // 1083.2 V - 287.03 [Pa]
+};
+
+}  // namespace mrd::model

@@ -1,0 +1,48 @@
+#pragma once
+
+#include "model/bingham_damper.hpp"
+#include "model/damper_model.hpp"
+#include "model/jiles_atherton.hpp"
+#include "model/mr_fluid.hpp"
+#include "model/velocity_filter.hpp"
+
+namespace mrd::model {
+
+struct ObserverSettings {
+  double sample_period = 1e-3;          // [s]
+  double velocity_cutoff_frequency = 20.0;  // [Hz], used only without a velocity sensor
+};
+
+struct ObserverEstimate {
+  double B = 0.0;             // gap induction [T]
+  double yield_stress = 0.0;  // [Pa]
+  double velocity = 0.0;      // measured or filtered [m/s]
+  double force = 0.0;         // predicted damper force [N]
+};
+
+// The J-A + Bingham observer of Fig. 5: coil current -> B (Eq. 1-10) -> tau_y (Eq. 13)
+// -> force with the piston velocity (Eq. 11-12). One step per control period; no heap.
+class Observer {
+ public:
+  Observer(const DamperModel& model, const ObserverSettings& settings = {});
+
+  // Displacement only: velocity comes from the VelocityFilter.
+  ObserverEstimate step(double displacement, double coil_current);
+  // With a velocity sensor.
+  ObserverEstimate step(double displacement, double velocity, double coil_current);
+
+  [[nodiscard]] const JilesAtherton& magnetics() const { return magnetics_; }
+  [[nodiscard]] const ObserverEstimate& estimate() const { return estimate_; }
+  [[nodiscard]] const BinghamDamper& damper() const { return damper_; }
+  [[nodiscard]] const YieldStress& yield_stress() const { return yield_stress_; }
+  void reset();
+
+ private:
+  JilesAtherton magnetics_;
+  YieldStress yield_stress_;
+  BinghamDamper damper_;
+  VelocityFilter velocity_filter_;
+  ObserverEstimate estimate_;
+};
+
+}  // namespace mrd::model

@@ -1,0 +1,39 @@
+#pragma once
+
+#include <vector>
+
+#include "model/jiles_atherton.hpp"
+
+namespace mrd::tools {
+
+// One symmetric major loop at field amplitude Hmax, driven as a sampled sine.
+struct LoopScanRow {
+  double H_max = 0.0;            // [A/m]
+  double B_max = 0.0;            // B at +Hmax on the last cycle [T]
+  double remanence = 0.0;        // B at H = 0 on the falling branch [T]
+  double closure_error = 0.0;    // |B(end of cycle 3) - B(end of cycle 2)| [T]
+  double symmetry_error = 0.0;   // |B(+Hmax) + B(-Hmax)| on the last cycle [T]
+  std::uint64_t guard_events = 0;  // runaway of Eq. 10 detected on the last two cycles
+  [[nodiscard]] bool physical() const { return guard_events == 0; }
+};
+
+// Runs three cycles of H = Hmax sin(2 pi t) from the demagnetised state, with
+// `samples_per_cycle` samples, and measures the last ones.
+LoopScanRow scan_loop(const model::JilesAthertonParams& params, double H_max,
+                      int samples_per_cycle = 2000,
+                      const model::JilesAthertonSettings& settings = {});
+
+std::vector<LoopScanRow> scan_loops(const model::JilesAthertonParams& params,
+                                    const std::vector<double>& amplitudes,
+                                    const model::JilesAthertonSettings& settings = {});
+
+}  // namespace mrd::tools
+
+namespace mrd::tools {
+
+// Max |B - B_ref| [T] over two cycles of H = Hmax sin(2 pi i / n), where the reference uses
+// 1/refinement of the sub-step size with RK4: the integrator error figure of docs/MODEL.md.
+double integrator_error(const model::JilesAthertonParams& params, double H_max, int n,
+                        const model::JilesAthertonSettings& settings, double refinement = 100.0);
+
+}  // namespace mrd::tools
