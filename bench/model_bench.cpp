@@ -35,9 +35,11 @@ const std::array<double, kSamplesPerCycle>& sine_displacement() {
   return table;
 }
 
-void BM_JilesAthertonStep(benchmark::State& state) {
+void run_jiles_atherton_steps(benchmark::State& state, mrd::model::Integrator integrator) {
   const mrd::model::DamperModel m;
-  mrd::model::JilesAtherton core(m.jiles_atherton, m.circuit, m.integration);
+  mrd::model::JilesAthertonSettings settings = m.integration;
+  settings.integrator = integrator;
+  mrd::model::JilesAtherton core(m.jiles_atherton, m.circuit, settings);
   const auto& current = sine_current();
   int i = 0;
   for (auto _ : state) {
@@ -45,7 +47,17 @@ void BM_JilesAthertonStep(benchmark::State& state) {
     i = (i + 1) % kSamplesPerCycle;
   }
 }
+
+void BM_JilesAthertonStep(benchmark::State& state) {
+  run_jiles_atherton_steps(state, mrd::model::Integrator::kRk4);
+}
 BENCHMARK(BM_JilesAthertonStep);
+
+// The cheaper 2nd-order option, for the trade-off table in docs/PERFORMANCE.md.
+void BM_JilesAthertonStepHeun(benchmark::State& state) {
+  run_jiles_atherton_steps(state, mrd::model::Integrator::kHeun);
+}
+BENCHMARK(BM_JilesAthertonStepHeun);
 
 void BM_ObserverStep(benchmark::State& state) {
   mrd::model::Observer observer{mrd::model::DamperModel{}};
@@ -76,19 +88,3 @@ BENCHMARK(BM_CompensatorStep);
 
 }  // namespace
 
-namespace {
-// The cheaper 2nd-order option, for the trade-off table in docs/PERFORMANCE.md.
-void BM_JilesAthertonStepHeun(benchmark::State& state) {
-  const mrd::model::DamperModel m;
-  mrd::model::JilesAthertonSettings heun = m.integration;
-  heun.integrator = mrd::model::Integrator::kHeun;
-  mrd::model::JilesAtherton core(m.jiles_atherton, m.circuit, heun);
-  const auto& current = sine_current();
-  int i = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(core.apply_current(current[i]));
-    i = (i + 1) % kSamplesPerCycle;
-  }
-}
-BENCHMARK(BM_JilesAthertonStepHeun);
-}  // namespace
