@@ -24,8 +24,9 @@ model::ParameterReport validate(const ControlLawConfig& config) {
 ControlLaw::ControlLaw(const ControlLawConfig& config)
     : schedule_(config.schedule),
       observer_(config.damper, config.observer),
-      target_(observer_.magnetics(), config.limits.max_current, config.target),
-      compensator_(observer_.magnetics(), target_, config.limits, config.observer.sample_period),
+      compensator_(observer_.magnetics(),
+                   model::TargetCurve(observer_.magnetics(), config.limits.max_current, config.target),
+                   config.limits, config.observer.sample_period),
       uncompensated_(config.limits.min_current, config.limits.max_current, config.limits.slew_rate,
                      config.observer.sample_period),
       compensate_(config.compensate_hysteresis) {}
@@ -49,7 +50,7 @@ ControlOutput ControlLaw::decide(double scheduled, const model::ObserverEstimate
     out.target_B = compensator_.target_B();
   } else {
     out.command_current = uncompensated_.update(scheduled);
-    out.target_B = target_.B(scheduled);
+    out.target_B = compensator_.target().B(scheduled);
   }
   return out;
 }

@@ -45,7 +45,6 @@ class ControlLaw {
 
   model::CurrentSchedule schedule_;
   model::Observer observer_;
-  model::TargetCurve target_;
   model::HysteresisCompensator compensator_;
   model::SlewLimiter uncompensated_;
   bool compensate_;

@@ -29,6 +29,7 @@ class HysteresisCompensator {
   double command(double scheduled_current, const JilesAtherton& core);
 
   [[nodiscard]] double target_B() const { return target_B_; }
+  [[nodiscard]] const TargetCurve& target() const { return target_; }
   [[nodiscard]] double last_command() const { return limiter_.value(); }
   [[nodiscard]] int last_iterations() const { return iterations_; }
   void reset(double current = 0.0) { limiter_.reset(current); }
