@@ -5,6 +5,7 @@ export DEBIAN_FRONTEND=noninteractive
 packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev libmodbus-dev libgpiod-dev libtomlplusplus-dev libcli11-dev
+  libpagmo-dev libboost-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox
 )
