@@ -4,7 +4,7 @@ set -euo pipefail
 export DEBIAN_FRONTEND=noninteractive
 packages=(
   build-essential cmake ninja-build pkg-config
-  libeigen3-dev libmodbus-dev libgpiod-dev libtomlplusplus-dev libcli11-dev
+  libeigen3-dev libboost-dev libmodbus-dev libgpiod-dev libtomlplusplus-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox
 )
