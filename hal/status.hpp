@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <string_view>
 
 namespace mrd::hal {
@@ -24,5 +25,14 @@ enum class IoStatus : std::uint8_t {
   }
   return "unknown";
 }
+
+// What a back end's start() reports: start-up may allocate and explain itself in words.
+struct StartResult {
+  bool ok = true;
+  std::string error;  // one line per problem when !ok
+
+  static StartResult success() { return {}; }
+  static StartResult failure(std::string why) { return {false, std::move(why)}; }
+};
 
 }  // namespace mrd::hal
