@@ -1,8 +1,6 @@
 #include "hal/modbus/modbus_backend.hpp"
 
 #include <modbus/modbus.h>
-#include <pthread.h>
-
 #include <algorithm>
 #include <array>
 #include <cerrno>
@@ -21,13 +19,29 @@ void split(std::chrono::microseconds t, std::uint32_t& sec, std::uint32_t& usec)
 
 bool is_exception_response(int err) { return err >= EMBXILFUN && err <= EMBXGTAR; }
 
-void bump(std::atomic<std::uint64_t>& c) { c.fetch_add(1, std::memory_order_relaxed); }
-
 std::string modbus_error(const char* what) {
   return std::string(what) + ": " + modbus_strerror(errno);
 }
 
 }  // namespace
+
+std::string_view to_string(ModbusEvent e) {
+  switch (e) {
+    case ModbusEvent::kConnects: return "connects";
+    case ModbusEvent::kConnectFailures: return "connect_failures";
+    case ModbusEvent::kDisconnects: return "disconnects";
+    case ModbusEvent::kReadsOk: return "reads_ok";
+    case ModbusEvent::kReadErrors: return "read_errors";
+    case ModbusEvent::kTimeouts: return "timeouts";
+    case ModbusEvent::kExceptionResponses: return "exception_responses";
+    case ModbusEvent::kDecodeErrors: return "decode_errors";
+    case ModbusEvent::kWritesOk: return "writes_ok";
+    case ModbusEvent::kWriteErrors: return "write_errors";
+    case ModbusEvent::kSamplesDropped: return "samples_dropped";
+    case ModbusEvent::kCount: break;
+  }
+  return "unknown";
+}
 
 ModbusBackend::ModbusBackend(ModbusConfig config, const Clock& clock)
     : config_(std::move(config)), clock_(clock) {}
@@ -38,7 +52,7 @@ ModbusBackend::~ModbusBackend() {
 }
 
 StartResult ModbusBackend::start() {
-  if (thread_.joinable()) return StartResult::failure("modbus: already started");
+  if (thread_.running()) return StartResult::failure("modbus: already started");
   if (const auto report = config_.validate(); !report.ok()) {
     return StartResult::failure("modbus config:\n" + report.to_string());
   }
@@ -64,23 +78,11 @@ StartResult ModbusBackend::start() {
   if (modbus_set_byte_timeout(ctx_, sec, usec) != 0) {
     return StartResult::failure(modbus_error("modbus: cannot set byte timeout"));
   }
-  {
-    const std::lock_guard lock(stop_mutex_);
-    stop_requested_ = false;
-  }
-  thread_ = std::thread([this] { run(); });
-  pthread_setname_np(thread_.native_handle(), "mrd-modbus");
+  thread_.start("mrd-modbus", [this] { run(); });
   return StartResult::success();
 }
 
-void ModbusBackend::stop() {
-  {
-    const std::lock_guard lock(stop_mutex_);
-    stop_requested_ = true;
-  }
-  stop_cv_.notify_all();
-  if (thread_.joinable()) thread_.join();
-}
+void ModbusBackend::stop() { thread_.stop(); }
 
 std::optional<DisplacementSample> ModbusBackend::latest() { return samples_.pop_latest(); }
 
@@ -93,44 +95,28 @@ IoStatus ModbusBackend::write_setpoint(double amps) {
 
 std::optional<CurrentReading> ModbusBackend::measured() { return feedback_.take(); }
 
-ModbusCounters ModbusBackend::counters() const {
-  const auto get = [](const std::atomic<std::uint64_t>& c) {
-    return c.load(std::memory_order_relaxed);
-  };
-  const auto& c = counters_;
-  return {get(c.connects),    get(c.connect_failures),    get(c.disconnects),
-          get(c.reads_ok),    get(c.read_errors),         get(c.timeouts),
-          get(c.exception_responses), get(c.decode_errors), get(c.writes_ok),
-          get(c.write_errors), get(c.samples_dropped)};
-}
-
-bool ModbusBackend::wait_until(steady_clock::time_point deadline) {
-  std::unique_lock lock(stop_mutex_);
-  return !stop_cv_.wait_until(lock, deadline, [this] { return stop_requested_; });
-}
-
 void ModbusBackend::run() {
   auto backoff = config_.reconnect_min;
   bool linked = false;
   auto next_poll = steady_clock::now();
   const auto back_off = [&] {
-    const bool go_on = wait_until(steady_clock::now() + backoff);
+    const bool go_on = thread_.wait_for(backoff);
     backoff = std::min(backoff * 2, config_.reconnect_max);
     return go_on;
   };
 
-  while (wait_until(next_poll)) {
+  while (thread_.wait_until(next_poll)) {
     if (!linked) {
       if (modbus_connect(ctx_) != 0) {
         last_errno_.store(errno, std::memory_order_relaxed);
-        bump(counters_.connect_failures);
+        counters_.bump(ModbusEvent::kConnectFailures);
         if (!back_off()) break;
         next_poll = steady_clock::now();
         continue;
       }
       linked = true;
       connected_.store(true, std::memory_order_relaxed);
-      bump(counters_.connects);
+      counters_.bump(ModbusEvent::kConnects);
     }
 
     const Outcome outcome = poll_once();
@@ -138,7 +124,7 @@ void ModbusBackend::run() {
       modbus_close(ctx_);
       linked = false;
       connected_.store(false, std::memory_order_relaxed);
-      bump(counters_.disconnects);
+      counters_.bump(ModbusEvent::kDisconnects);
       if (!back_off()) break;
       next_poll = steady_clock::now();
       continue;
@@ -152,15 +138,15 @@ void ModbusBackend::run() {
   connected_.store(false, std::memory_order_relaxed);
 }
 
-ModbusBackend::Outcome ModbusBackend::classify_failure(std::atomic<std::uint64_t>& counter) {
+ModbusBackend::Outcome ModbusBackend::classify_failure(ModbusEvent counter) {
   const int err = errno;
   last_errno_.store(err, std::memory_order_relaxed);
-  bump(counter);
+  counters_.bump(counter);
   if (is_exception_response(err)) {
-    bump(counters_.exception_responses);
+    counters_.bump(ModbusEvent::kExceptionResponses);
     return Outcome::kDeviceRefused;
   }
-  if (err == ETIMEDOUT) bump(counters_.timeouts);
+  if (err == ETIMEDOUT) counters_.bump(ModbusEvent::kTimeouts);
   return Outcome::kLinkFailed;
 }
 
@@ -173,10 +159,10 @@ ModbusBackend::Outcome ModbusBackend::write_pending_setpoint() {
                      ? modbus_write_register(ctx_, address, words[0])
                      : modbus_write_registers(ctx_, address, static_cast<int>(words.size()),
                                               words.data());
-  const Outcome outcome = rc < 0 ? classify_failure(counters_.write_errors) : Outcome::kOk;
+  const Outcome outcome = rc < 0 ? classify_failure(ModbusEvent::kWriteErrors) : Outcome::kOk;
   // Kept for after a reconnect; a value the device refuses is dropped, not retried forever.
   if (outcome != Outcome::kLinkFailed) pending_setpoint_.reset();
-  if (outcome == Outcome::kOk) bump(counters_.writes_ok);
+  if (outcome == Outcome::kOk) counters_.bump(ModbusEvent::kWritesOk);
   return outcome;
 }
 
@@ -187,9 +173,9 @@ ModbusBackend::Outcome ModbusBackend::read_words(int address, RegisterKind kind,
                                               : modbus_read_registers(ctx_, address, n, out);
   if (rc != n) {
     if (rc >= 0) errno = EMBBADDATA;  // a short answer is a corrupt frame
-    return classify_failure(counters_.read_errors);
+    return classify_failure(ModbusEvent::kReadErrors);
   }
-  bump(counters_.reads_ok);
+  counters_.bump(ModbusEvent::kReadsOk);
   return Outcome::kOk;
 }
 
@@ -209,9 +195,9 @@ ModbusBackend::Outcome ModbusBackend::poll_once() {
   DisplacementSample sample{decoded.value, clock_.now(), ++sequence_, kSampleValid};
   if (decoded.status != CodecStatus::kOk) {
     sample.flags = kSampleCorrupted;
-    bump(counters_.decode_errors);
+    counters_.bump(ModbusEvent::kDecodeErrors);
   }
-  if (!samples_.try_push(sample)) bump(counters_.samples_dropped);
+  if (!samples_.try_push(sample)) counters_.bump(ModbusEvent::kSamplesDropped);
 
   if (!map.has_current_feedback) return written;
   const std::size_t m = word_count(map.current_feedback.type);
@@ -222,7 +208,7 @@ ModbusBackend::Outcome ModbusBackend::poll_once() {
   }
   const DecodeResult current = decode_register({words.data(), m}, map.current_feedback);
   if (current.status != CodecStatus::kOk) {
-    bump(counters_.decode_errors);
+    counters_.bump(ModbusEvent::kDecodeErrors);
     return written;
   }
   feedback_.publish({current.value, clock_.now()});

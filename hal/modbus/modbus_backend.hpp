@@ -1,15 +1,15 @@
 #pragma once
 
 #include <atomic>
-#include <condition_variable>
 #include <cstdint>
-#include <mutex>
 #include <optional>
-#include <thread>
+#include <string_view>
 
 #include "hal/clock.hpp"
 #include "hal/current_driver.hpp"
 #include "hal/displacement_source.hpp"
+#include "hal/event_counters.hpp"
+#include "hal/io_thread.hpp"
 #include "hal/latest_mailbox.hpp"
 #include "hal/modbus/modbus_config.hpp"
 #include "hal/spsc_ring.hpp"
@@ -19,20 +19,23 @@ struct _modbus;  // libmodbus's modbus_t, kept out of our headers
 
 namespace mrd::hal::modbus {
 
-// Counts since start(); a snapshot the loop or telemetry can read at any time.
-struct ModbusCounters {
-  std::uint64_t connects = 0;             // successful (re)connections
-  std::uint64_t connect_failures = 0;
-  std::uint64_t disconnects = 0;          // link dropped after an I/O failure
-  std::uint64_t reads_ok = 0;
-  std::uint64_t read_errors = 0;          // includes timeouts
-  std::uint64_t timeouts = 0;
-  std::uint64_t exception_responses = 0;  // the device answered with a Modbus exception
-  std::uint64_t decode_errors = 0;        // the words arrived but made no usable value
-  std::uint64_t writes_ok = 0;
-  std::uint64_t write_errors = 0;
-  std::uint64_t samples_dropped = 0;      // the loop did not drain the ring in time
+// What the I/O thread counts since construction.
+enum class ModbusEvent : std::uint8_t {
+  kConnects,            // successful (re)connections
+  kConnectFailures,
+  kDisconnects,         // link dropped after an I/O failure
+  kReadsOk,
+  kReadErrors,          // includes timeouts and exception responses
+  kTimeouts,
+  kExceptionResponses,  // the device answered with a Modbus exception
+  kDecodeErrors,        // the words arrived but made no usable value
+  kWritesOk,
+  kWriteErrors,
+  kSamplesDropped,      // the loop did not drain the ring in time
+  kCount
 };
+[[nodiscard]] std::string_view to_string(ModbusEvent e);
+using ModbusCounters = EventCounters<ModbusEvent>::Snapshot;
 
 // LVDT and current driver behind one Modbus device (RTU or TCP). All libmodbus I/O runs in one
 // thread that owns the only modbus_t: libmodbus blocks, and an RTU read alone takes ~1.6 ms at
@@ -60,7 +63,7 @@ class ModbusBackend final : public DisplacementSource, public CurrentDriver {
   IoStatus write_setpoint(double amps) override;
   [[nodiscard]] std::optional<CurrentReading> measured() override;
 
-  [[nodiscard]] ModbusCounters counters() const;
+  [[nodiscard]] ModbusCounters counters() const { return counters_.snapshot(); }
   [[nodiscard]] bool connected() const { return connected_.load(std::memory_order_relaxed); }
   [[nodiscard]] int last_errno() const { return last_errno_.load(std::memory_order_relaxed); }
 
@@ -71,8 +74,7 @@ class ModbusBackend final : public DisplacementSource, public CurrentDriver {
   Outcome poll_once();
   Outcome write_pending_setpoint();
   Outcome read_words(int address, RegisterKind kind, std::size_t count, std::uint16_t* out);
-  Outcome classify_failure(std::atomic<std::uint64_t>& counter);
-  bool wait_until(std::chrono::steady_clock::time_point deadline);  // false when stopping
+  Outcome classify_failure(ModbusEvent counter);
 
   ModbusConfig config_;
   const Clock& clock_;
@@ -86,16 +88,8 @@ class ModbusBackend final : public DisplacementSource, public CurrentDriver {
 
   std::atomic<bool> connected_{false};
   std::atomic<int> last_errno_{0};
-  struct AtomicCounters {
-    std::atomic<std::uint64_t> connects{0}, connect_failures{0}, disconnects{0}, reads_ok{0},
-        read_errors{0}, timeouts{0}, exception_responses{0}, decode_errors{0}, writes_ok{0},
-        write_errors{0}, samples_dropped{0};
-  } counters_;
-
-  std::mutex stop_mutex_;
-  std::condition_variable stop_cv_;
-  bool stop_requested_ = false;  // guarded by stop_mutex_
-  std::thread thread_;
+  EventCounters<ModbusEvent> counters_;
+  IoThread thread_;  // last: stopped first on destruction
 };
 
 }  // namespace mrd::hal::modbus

@@ -17,6 +17,7 @@ using mrd::hal::IoStatus;
 using mrd::hal::MonotonicClock;
 using mrd::hal::modbus::ModbusBackend;
 using mrd::hal::modbus::ModbusConfig;
+using mrd::hal::modbus::ModbusEvent;
 using mrd::test::ModbusTestServer;
 using mrd::test::wait_for;
 
@@ -96,10 +97,10 @@ TEST_F(ModbusBackendTest, ReadsTimestampedSamplesAndWritesSetpoints) {
   EXPECT_NEAR(current->value, 1.1, 1e-12);
 
   // The server stores a register before it answers, so the client's count can trail it.
-  EXPECT_TRUE(wait_for([&] { return backend.counters().writes_ok >= 2; }));
+  EXPECT_TRUE(wait_for([&] { return backend.counters()[ModbusEvent::kWritesOk] >= 2; }));
   const auto counters = backend.counters();
-  EXPECT_EQ(counters.connects, 1u);
-  EXPECT_EQ(counters.read_errors, 0u);
+  EXPECT_EQ(counters[ModbusEvent::kConnects], 1u);
+  EXPECT_EQ(counters[ModbusEvent::kReadErrors], 0u);
   backend.stop();
   EXPECT_FALSE(backend.connected());
 }
@@ -132,7 +133,7 @@ TEST_F(ModbusBackendTest, NonFiniteRegisterGivesACorruptedSampleNotACrash) {
   ASSERT_TRUE(s.has_value());
   EXPECT_FALSE(s->usable());
   EXPECT_NE(s->flags & mrd::hal::kSampleCorrupted, 0);
-  EXPECT_GE(backend.counters().decode_errors, 1u);
+  EXPECT_GE(backend.counters()[ModbusEvent::kDecodeErrors], 1u);
   EXPECT_TRUE(backend.connected());
 }
 
@@ -146,8 +147,8 @@ TEST_F(ModbusBackendTest, ReconnectsWhenTheServerGoesAwayAndComesBack) {
   ASSERT_TRUE(any_sample(backend).has_value());
 
   server.reset();  // the device goes away
-  EXPECT_TRUE(wait_for([&] { return backend.counters().disconnects >= 1; }));
-  EXPECT_TRUE(wait_for([&] { return backend.counters().connect_failures >= 2; }));
+  EXPECT_TRUE(wait_for([&] { return backend.counters()[ModbusEvent::kDisconnects] >= 1; }));
+  EXPECT_TRUE(wait_for([&] { return backend.counters()[ModbusEvent::kConnectFailures] >= 2; }));
   EXPECT_FALSE(backend.connected());
   // While it is away, setpoints are queued and the loop is told.
   EXPECT_EQ(backend.write_setpoint(0.25), IoStatus::kNotConnected);
@@ -164,8 +165,8 @@ TEST_F(ModbusBackendTest, ReconnectsWhenTheServerGoesAwayAndComesBack) {
   EXPECT_TRUE(wait_for([&] { return server->holding_register(kSetpointAddress) == 250; }));
 
   const auto counters = backend.counters();
-  EXPECT_GE(counters.connects, 2u);
-  EXPECT_GE(counters.read_errors + counters.write_errors, 1u);
+  EXPECT_GE(counters[ModbusEvent::kConnects], 2u);
+  EXPECT_GE(counters[ModbusEvent::kReadErrors] + counters[ModbusEvent::kWriteErrors], 1u);
   EXPECT_TRUE(backend.connected());
 }
 
@@ -176,12 +177,12 @@ TEST_F(ModbusBackendTest, SilentServerCountsTimeoutsAndStillStops) {
   config.response_timeout = 30ms;
   ModbusBackend backend(config, clock);
   ASSERT_TRUE(backend.start().ok);
-  EXPECT_TRUE(wait_for([&] { return backend.counters().timeouts >= 2; }));
+  EXPECT_TRUE(wait_for([&] { return backend.counters()[ModbusEvent::kTimeouts] >= 2; }));
   EXPECT_FALSE(backend.latest().has_value());
   EXPECT_EQ(backend.last_errno(), ETIMEDOUT);
   const auto counters = backend.counters();
-  EXPECT_GE(counters.disconnects, 1u);
-  EXPECT_EQ(counters.reads_ok, 0u);
+  EXPECT_GE(counters[ModbusEvent::kDisconnects], 1u);
+  EXPECT_EQ(counters[ModbusEvent::kReadsOk], 0u);
   backend.stop();  // returns within one response timeout
 }
 
@@ -192,10 +193,10 @@ TEST_F(ModbusBackendTest, ExceptionResponseIsCountedWithoutDroppingTheLink) {
   config.registers.lvdt_address = ModbusTestServer::kRegisters + 100;  // illegal data address
   ModbusBackend backend(config, clock);
   ASSERT_TRUE(backend.start().ok);
-  EXPECT_TRUE(wait_for([&] { return backend.counters().exception_responses >= 3; }));
+  EXPECT_TRUE(wait_for([&] { return backend.counters()[ModbusEvent::kExceptionResponses] >= 3; }));
   const auto counters = backend.counters();
-  EXPECT_EQ(counters.connects, 1u);
-  EXPECT_EQ(counters.disconnects, 0u);
+  EXPECT_EQ(counters[ModbusEvent::kConnects], 1u);
+  EXPECT_EQ(counters[ModbusEvent::kDisconnects], 0u);
   EXPECT_FALSE(backend.latest().has_value());
 }
 
@@ -207,7 +208,7 @@ TEST_F(ModbusBackendTest, NoServerMeansConnectFailuresWithBackOff) {
   }
   ModbusBackend backend(config_for(port), clock);
   ASSERT_TRUE(backend.start().ok);
-  EXPECT_TRUE(wait_for([&] { return backend.counters().connect_failures >= 3; }));
+  EXPECT_TRUE(wait_for([&] { return backend.counters()[ModbusEvent::kConnectFailures] >= 3; }));
   EXPECT_FALSE(backend.connected());
   EXPECT_FALSE(backend.latest().has_value());
 }
@@ -218,7 +219,7 @@ TEST_F(ModbusBackendTest, MissingSerialDeviceIsRetriedNotFatal) {
   config.rtu.device = "/dev/mrd-no-such-tty";
   ModbusBackend backend(config, clock);
   ASSERT_TRUE(backend.start().ok);
-  EXPECT_TRUE(wait_for([&] { return backend.counters().connect_failures >= 1; }));
+  EXPECT_TRUE(wait_for([&] { return backend.counters()[ModbusEvent::kConnectFailures] >= 1; }));
   EXPECT_FALSE(backend.connected());
 }
 
