@@ -12,6 +12,7 @@ enum SampleFlag : std::uint8_t {
   kSampleValid = 1u << 0,
   kSampleCorrupted = 1u << 1,    // checksum, decode or sensor-status failure; value is unusable
   kSampleSequenceGap = 1u << 2,  // one or more frames were lost before this one (value is usable)
+  kSampleSensorFault = 1u << 3,  // the sensor itself reports the value unusable
 };
 
 struct DisplacementSample {
@@ -21,7 +22,7 @@ struct DisplacementSample {
   std::uint8_t flags = 0;     // SampleFlag bits
 
   [[nodiscard]] bool usable() const {
-    return (flags & kSampleValid) != 0 && (flags & kSampleCorrupted) == 0;
+    return (flags & kSampleValid) != 0 && (flags & (kSampleCorrupted | kSampleSensorFault)) == 0;
   }
 };
 
