@@ -8,7 +8,7 @@ namespace mrd::hal::can {
 
 namespace {
 
-constexpr std::size_t kFlagByte = 2;  // current frames; the LVDT frame has its flag in byte 4
+constexpr std::size_t kFlagByte = 2;  // current frames
 constexpr std::size_t kLvdtFlagByte = 4;
 constexpr std::size_t kCounterByte = 6;
 constexpr std::size_t kChecksumByte = 7;
@@ -53,28 +53,28 @@ EncodeStatus write_le(double si, double unit, Frame& f) {
   return EncodeStatus::kOk;
 }
 
-// The command and feedback frames share one layout: int16 mA in bytes 0-1, a flag in byte 2.
-struct CurrentLayout {
-  double amps;
-  bool flag;
-  std::uint8_t counter;
-};
-
-Decoded<CurrentLayout> decode_current(std::uint32_t id, std::span<const std::uint8_t> data,
-                                      std::uint32_t expected_id, RollingCounterCheck* counter) {
+// Every frame is {scaled integer in bytes 0.., a flag bit, the counter}; only the integer's
+// width, its unit and the flag's byte differ. Out is LvdtFrame, CurrentCommandFrame or
+// CurrentFeedbackFrame, all {double, bool, counter}.
+template <typename Int, typename Out>
+Decoded<Out> decode_payload(std::uint32_t id, std::span<const std::uint8_t> data,
+                            std::uint32_t expected_id, RollingCounterCheck* counter, double unit,
+                            std::size_t flag_byte) {
   const DecodeStatus status = open_frame(id, data, expected_id, counter);
   if (!carries_values(status)) return {status, {}};
   return {status,
-          {read_le<std::int16_t>(data) * kAmpsPerCount, (data[kFlagByte] & 1) != 0,
+          {read_le<Int>(data) * unit, (data[flag_byte] & 1) != 0,
            static_cast<std::uint8_t>(data[kCounterByte] & 0x0F)}};
 }
 
-Encoded encode_current(std::uint32_t id, const CurrentLayout& c) {
+template <typename Int>
+Encoded encode_payload(std::uint32_t id, double value, bool flag, std::uint8_t counter,
+                       double unit, std::size_t flag_byte) {
   Encoded out;
   out.frame.id = id;
-  out.status = write_le<std::int16_t>(c.amps, kAmpsPerCount, out.frame);
-  out.frame.data[kFlagByte] = c.flag ? 1 : 0;
-  seal(out.frame, c.counter);
+  out.status = write_le<Int>(value, unit, out.frame);
+  out.frame.data[flag_byte] = flag ? 1 : 0;
+  seal(out.frame, counter);
   return out;
 }
 
@@ -116,42 +116,37 @@ DecodeStatus RollingCounterCheck::accept(std::uint8_t counter) {
 
 Decoded<LvdtFrame> decode_lvdt(std::uint32_t id, std::span<const std::uint8_t> data,
                                std::uint32_t expected_id, RollingCounterCheck* counter) {
-  const DecodeStatus status = open_frame(id, data, expected_id, counter);
-  if (!carries_values(status)) return {status, {}};
-  return {status,
-          {read_le<std::int32_t>(data) * kMetresPerCount, (data[kLvdtFlagByte] & 1) != 0,
-           static_cast<std::uint8_t>(data[kCounterByte] & 0x0F)}};
+  return decode_payload<std::int32_t, LvdtFrame>(id, data, expected_id, counter, kMetresPerCount,
+                                                 kLvdtFlagByte);
 }
 
 Decoded<CurrentCommandFrame> decode_command(std::uint32_t id, std::span<const std::uint8_t> data,
                                             std::uint32_t expected_id,
                                             RollingCounterCheck* counter) {
-  const auto d = decode_current(id, data, expected_id, counter);
-  return {d.status, {d.value.amps, d.value.flag, d.value.counter}};
+  return decode_payload<std::int16_t, CurrentCommandFrame>(id, data, expected_id, counter,
+                                                           kAmpsPerCount, kFlagByte);
 }
 
 Decoded<CurrentFeedbackFrame> decode_feedback(std::uint32_t id, std::span<const std::uint8_t> data,
                                               std::uint32_t expected_id,
                                               RollingCounterCheck* counter) {
-  const auto d = decode_current(id, data, expected_id, counter);
-  return {d.status, {d.value.amps, d.value.flag, d.value.counter}};
+  return decode_payload<std::int16_t, CurrentFeedbackFrame>(id, data, expected_id, counter,
+                                                            kAmpsPerCount, kFlagByte);
 }
 
 Encoded encode_lvdt(std::uint32_t id, const LvdtFrame& f) {
-  Encoded out;
-  out.frame.id = id;
-  out.status = write_le<std::int32_t>(f.displacement, kMetresPerCount, out.frame);
-  out.frame.data[kLvdtFlagByte] = f.sensor_fault ? 1 : 0;
-  seal(out.frame, f.counter);
-  return out;
+  return encode_payload<std::int32_t>(id, f.displacement, f.sensor_fault, f.counter,
+                                      kMetresPerCount, kLvdtFlagByte);
 }
 
 Encoded encode_command(std::uint32_t id, const CurrentCommandFrame& f) {
-  return encode_current(id, {f.setpoint, f.enable, f.counter});
+  return encode_payload<std::int16_t>(id, f.setpoint, f.enable, f.counter, kAmpsPerCount,
+                                      kFlagByte);
 }
 
 Encoded encode_feedback(std::uint32_t id, const CurrentFeedbackFrame& f) {
-  return encode_current(id, {f.measured, f.driver_fault, f.counter});
+  return encode_payload<std::int16_t>(id, f.measured, f.driver_fault, f.counter, kAmpsPerCount,
+                                      kFlagByte);
 }
 
 }  // namespace mrd::hal::can
