@@ -177,9 +177,8 @@ void SocketCanBackend::on_frame(const can_frame& frame) {
     on_feedback(data, id);
   } else {
     counters_.bump(CanEvent::kUnexpectedFrames);
-    return;
   }
-  // Any frame from the bus proves our controller is back on it (see BusOffPolicy).
+  // Any frame from the bus, ours or not, proves our controller is back on it (BusOffPolicy).
   bus_off_.on_good_frame(now);
   tx_allowed_from_.store(bus_off_.tx_allowed_from().count(), std::memory_order_relaxed);
 }
