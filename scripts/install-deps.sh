@@ -4,8 +4,8 @@ set -euo pipefail
 export DEBIAN_FRONTEND=noninteractive
 packages=(
   build-essential cmake ninja-build pkg-config
-  libeigen3-dev libmodbus-dev libgpiod-dev libtomlplusplus-dev libcli11-dev
-  libpagmo-dev libboost-dev
+  libeigen3-dev libboost-dev libmodbus-dev libgpiod-dev libtomlplusplus-dev libcli11-dev
+  libpagmo-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox
 )

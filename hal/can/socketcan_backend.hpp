@@ -1,0 +1,104 @@
+#pragma once
+
+#include <linux/can.h>
+
+#include <atomic>
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+#include "hal/can/bus_off_policy.hpp"
+#include "hal/can/can_codec.hpp"
+#include "hal/can/socketcan_config.hpp"
+#include "hal/clock.hpp"
+#include "hal/current_driver.hpp"
+#include "hal/displacement_source.hpp"
+#include "hal/event_counters.hpp"
+#include "hal/io_thread.hpp"
+#include "hal/latest_mailbox.hpp"
+#include "hal/spsc_ring.hpp"
+#include "hal/status.hpp"
+
+namespace mrd::hal::can {
+
+enum class CanEvent : std::uint8_t {
+  kLvdtFrames,           // good LVDT frames (including those after a gap)
+  kFeedbackFrames,       // good current-feedback frames
+  kWrongDlc,
+  kBadChecksum,
+  kRepeatedCounter,
+  kSequenceGaps,
+  kUnexpectedFrames,     // ids the filter should have kept out
+  kErrorFrames,
+  kBusOff,
+  kRestarted,
+  kControllerProblems,   // error-warning, error-passive or overflow reports
+  kFramesSent,
+  kTxErrors,             // send() failed (queue full, interface down)
+  kTxInhibited,          // setpoints held back by the bus-off policy
+  kSamplesDropped,       // the loop did not drain the ring in time
+  kCount
+};
+[[nodiscard]] std::string_view to_string(CanEvent e);
+using CanCounters = EventCounters<CanEvent>::Snapshot;
+
+// LVDT and current driver on raw SocketCAN, frames as in hal/can/mrd.dbc. A receive thread
+// blocks in recv() with SO_RCVTIMEO, decodes our ids and the error frames, and hands samples
+// to the loop through the SPSC ring. Transmission happens on the caller's thread: one
+// non-blocking send() per setpoint, no thread hop. Bus-off handling: see BusOffPolicy.
+class SocketCanBackend final : public DisplacementSource, public CurrentDriver {
+ public:
+  SocketCanBackend(SocketCanConfig config, const Clock& clock);
+  ~SocketCanBackend() override;
+  SocketCanBackend(const SocketCanBackend&) = delete;
+  SocketCanBackend& operator=(const SocketCanBackend&) = delete;
+
+  // Opens and binds the socket and starts the receive thread; on failure says why (no CAN in
+  // the kernel, no such interface, ...) and leaves the back end inert.
+  [[nodiscard]] StartResult start();
+  void stop();
+
+  [[nodiscard]] std::optional<DisplacementSample> latest() override;
+  // Sends one Coil_CurrentCommand frame now. kNotConnected before start(), kTxInhibited during
+  // bus-off and its hold-off, kInvalidArgument when it does not fit, kIoError if send() fails.
+  IoStatus write_setpoint(double amps) override;
+  [[nodiscard]] std::optional<CurrentReading> measured() override;
+
+  // The DriverEnable bit carried by later command frames.
+  void set_command_enable(bool enabled) { enable_.store(enabled, std::memory_order_relaxed); }
+  // The driver's fault bit from its newest feedback frame; nullopt before the first one.
+  [[nodiscard]] std::optional<bool> feedback_driver_fault() const;
+
+  [[nodiscard]] CanCounters counters() const { return counters_.snapshot(); }
+  [[nodiscard]] bool tx_allowed() const;
+
+ private:
+  void run();
+  void on_frame(const can_frame& frame);
+  void on_lvdt(std::span<const std::uint8_t> data, std::uint32_t id);
+  void on_feedback(std::span<const std::uint8_t> data, std::uint32_t id);
+  bool count_rejection(DecodeStatus status);  // true when the frame is unusable
+
+  SocketCanConfig config_;
+  const Clock& clock_;
+  int fd_ = -1;
+
+  // Receive thread only.
+  BusOffPolicy bus_off_;
+  RollingCounterCheck lvdt_counter_;
+  RollingCounterCheck feedback_counter_;
+  std::uint32_t sequence_ = 0;
+
+  // Loop thread only.
+  std::uint8_t tx_counter_ = 0;
+
+  SpscRing<DisplacementSample, 64> samples_;
+  LatestMailbox<CurrentReading> feedback_;
+  std::atomic<int> feedback_fault_{-1};  // -1 unknown, 0 ok, 1 fault
+  std::atomic<bool> enable_{false};
+  std::atomic<Timestamp::rep> tx_allowed_from_{Timestamp::min().count()};
+  EventCounters<CanEvent> counters_;
+  IoThread thread_;  // last: stopped first on destruction
+};
+
+}  // namespace mrd::hal::can

@@ -1,0 +1,27 @@
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <string>
+
+#include "hal/can/can_codec.hpp"
+#include "hal/config_check.hpp"
+
+namespace mrd::hal::can {
+
+struct SocketCanConfig {
+  std::string interface = "can0";  // "vcan0" in the hardware-in-the-loop tests
+  bool extended_ids = false;       // 29-bit ids instead of 11-bit
+  std::uint32_t lvdt_id = kDefaultLvdtId;
+  std::uint32_t command_id = kDefaultCommandId;
+  bool use_feedback = true;  // the driver sends Coil_CurrentFeedback
+  std::uint32_t feedback_id = kDefaultFeedbackId;
+  // SO_RCVTIMEO: the receive thread's longest block, so stop() returns within it.
+  std::chrono::milliseconds receive_timeout{50};
+  // Listen-only time after the controller is back from bus-off (see BusOffPolicy).
+  std::chrono::milliseconds bus_off_hold_off{500};
+
+  [[nodiscard]] ConfigReport validate() const;  // field paths relative to the can table
+};
+
+}  // namespace mrd::hal::can

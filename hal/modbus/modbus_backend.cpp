@@ -1,0 +1,218 @@
+#include "hal/modbus/modbus_backend.hpp"
+
+#include <modbus/modbus.h>
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <string>
+
+namespace mrd::hal::modbus {
+
+namespace {
+
+using std::chrono::steady_clock;
+
+void split(std::chrono::microseconds t, std::uint32_t& sec, std::uint32_t& usec) {
+  sec = static_cast<std::uint32_t>(t.count() / 1'000'000);
+  usec = static_cast<std::uint32_t>(t.count() % 1'000'000);
+}
+
+bool is_exception_response(int err) { return err >= EMBXILFUN && err <= EMBXGTAR; }
+
+std::string modbus_error(const char* what) {
+  return std::string(what) + ": " + modbus_strerror(errno);
+}
+
+}  // namespace
+
+std::string_view to_string(ModbusEvent e) {
+  switch (e) {
+    case ModbusEvent::kConnects: return "connects";
+    case ModbusEvent::kConnectFailures: return "connect_failures";
+    case ModbusEvent::kDisconnects: return "disconnects";
+    case ModbusEvent::kReadsOk: return "reads_ok";
+    case ModbusEvent::kReadErrors: return "read_errors";
+    case ModbusEvent::kTimeouts: return "timeouts";
+    case ModbusEvent::kExceptionResponses: return "exception_responses";
+    case ModbusEvent::kDecodeErrors: return "decode_errors";
+    case ModbusEvent::kWritesOk: return "writes_ok";
+    case ModbusEvent::kWriteErrors: return "write_errors";
+    case ModbusEvent::kSamplesDropped: return "samples_dropped";
+    case ModbusEvent::kCount: break;
+  }
+  return "unknown";
+}
+
+ModbusBackend::ModbusBackend(ModbusConfig config, const Clock& clock)
+    : config_(std::move(config)), clock_(clock) {}
+
+ModbusBackend::~ModbusBackend() {
+  stop();
+  if (ctx_ != nullptr) modbus_free(ctx_);
+}
+
+StartResult ModbusBackend::start() {
+  if (thread_.running()) return StartResult::failure("modbus: already started");
+  if (const auto report = config_.validate(); !report.ok()) {
+    return StartResult::failure("modbus config:\n" + report.to_string());
+  }
+  if (ctx_ == nullptr) {
+    if (config_.transport == Transport::kTcp) {
+      const std::string service = std::to_string(config_.tcp.port);
+      ctx_ = modbus_new_tcp_pi(config_.tcp.host.c_str(), service.c_str());
+    } else {
+      const auto& rtu = config_.rtu;
+      ctx_ = modbus_new_rtu(rtu.device.c_str(), rtu.baud, rtu.parity, rtu.data_bits,
+                            rtu.stop_bits);
+    }
+    if (ctx_ == nullptr) return StartResult::failure(modbus_error("modbus: cannot create context"));
+  }
+  std::uint32_t sec = 0;
+  std::uint32_t usec = 0;
+  split(config_.response_timeout, sec, usec);
+  if (modbus_set_slave(ctx_, config_.slave_id) != 0 ||
+      modbus_set_response_timeout(ctx_, sec, usec) != 0) {
+    return StartResult::failure(modbus_error("modbus: cannot configure context"));
+  }
+  split(config_.byte_timeout, sec, usec);
+  if (modbus_set_byte_timeout(ctx_, sec, usec) != 0) {
+    return StartResult::failure(modbus_error("modbus: cannot set byte timeout"));
+  }
+  thread_.start("mrd-modbus", [this] { run(); });
+  return StartResult::success();
+}
+
+void ModbusBackend::stop() { thread_.stop(); }
+
+std::optional<DisplacementSample> ModbusBackend::latest() { return samples_.pop_latest(); }
+
+IoStatus ModbusBackend::write_setpoint(double amps) {
+  const EncodeResult encoded = encode_register(amps, config_.registers.setpoint);
+  if (encoded.status != CodecStatus::kOk) return IoStatus::kInvalidArgument;
+  setpoints_.publish(encoded);
+  return connected() ? IoStatus::kOk : IoStatus::kNotConnected;
+}
+
+std::optional<CurrentReading> ModbusBackend::measured() { return feedback_.take(); }
+
+void ModbusBackend::run() {
+  auto backoff = config_.reconnect_min;
+  bool linked = false;
+  auto next_poll = steady_clock::now();
+  const auto back_off = [&] {
+    const bool go_on = thread_.wait_for(backoff);
+    backoff = std::min(backoff * 2, config_.reconnect_max);
+    return go_on;
+  };
+
+  while (thread_.wait_until(next_poll)) {
+    if (!linked) {
+      if (modbus_connect(ctx_) != 0) {
+        last_errno_.store(errno, std::memory_order_relaxed);
+        counters_.bump(ModbusEvent::kConnectFailures);
+        if (!back_off()) break;
+        next_poll = steady_clock::now();
+        continue;
+      }
+      linked = true;
+      connected_.store(true, std::memory_order_relaxed);
+      counters_.bump(ModbusEvent::kConnects);
+    }
+
+    const Outcome outcome = poll_once();
+    if (outcome == Outcome::kLinkFailed) {
+      modbus_close(ctx_);
+      linked = false;
+      connected_.store(false, std::memory_order_relaxed);
+      counters_.bump(ModbusEvent::kDisconnects);
+      if (!back_off()) break;
+      next_poll = steady_clock::now();
+      continue;
+    }
+    if (outcome == Outcome::kOk) backoff = config_.reconnect_min;
+    // Fixed rate without catch-up bursts: after an overrun, the next poll starts now.
+    next_poll = std::max(next_poll + config_.poll_period, steady_clock::now());
+  }
+
+  if (linked) modbus_close(ctx_);
+  connected_.store(false, std::memory_order_relaxed);
+}
+
+ModbusBackend::Outcome ModbusBackend::classify_failure(ModbusEvent counter) {
+  const int err = errno;
+  last_errno_.store(err, std::memory_order_relaxed);
+  counters_.bump(counter);
+  if (is_exception_response(err)) {
+    counters_.bump(ModbusEvent::kExceptionResponses);
+    return Outcome::kDeviceRefused;
+  }
+  if (err == ETIMEDOUT) counters_.bump(ModbusEvent::kTimeouts);
+  return Outcome::kLinkFailed;
+}
+
+ModbusBackend::Outcome ModbusBackend::write_pending_setpoint() {
+  if (auto newest = setpoints_.take()) pending_setpoint_ = newest;
+  if (!pending_setpoint_) return Outcome::kOk;
+  const auto words = pending_setpoint_->view();
+  const int address = config_.registers.setpoint_address;
+  const int rc = words.size() == 1
+                     ? modbus_write_register(ctx_, address, words[0])
+                     : modbus_write_registers(ctx_, address, static_cast<int>(words.size()),
+                                              words.data());
+  const Outcome outcome = rc < 0 ? classify_failure(ModbusEvent::kWriteErrors) : Outcome::kOk;
+  // Kept for after a reconnect; a value the device refuses is dropped, not retried forever.
+  if (outcome != Outcome::kLinkFailed) pending_setpoint_.reset();
+  if (outcome == Outcome::kOk) counters_.bump(ModbusEvent::kWritesOk);
+  return outcome;
+}
+
+ModbusBackend::Outcome ModbusBackend::read_words(int address, RegisterKind kind,
+                                                 std::size_t count, std::uint16_t* out) {
+  const int n = static_cast<int>(count);
+  const int rc = kind == RegisterKind::kInput ? modbus_read_input_registers(ctx_, address, n, out)
+                                              : modbus_read_registers(ctx_, address, n, out);
+  if (rc != n) {
+    if (rc >= 0) errno = EMBBADDATA;  // a short answer is a corrupt frame
+    return classify_failure(ModbusEvent::kReadErrors);
+  }
+  counters_.bump(ModbusEvent::kReadsOk);
+  return Outcome::kOk;
+}
+
+ModbusBackend::Outcome ModbusBackend::poll_once() {
+  const RegisterMap& map = config_.registers;
+  // The command goes first: its latency matters more than the sample's.
+  const Outcome written = write_pending_setpoint();
+  if (written == Outcome::kLinkFailed) return written;
+
+  std::array<std::uint16_t, 2> words{};
+  const std::size_t n = word_count(map.lvdt.type);
+  if (const Outcome o = read_words(map.lvdt_address, map.lvdt_kind, n, words.data());
+      o != Outcome::kOk) {
+    return o;
+  }
+  const DecodeResult decoded = decode_register({words.data(), n}, map.lvdt);
+  DisplacementSample sample{decoded.value, clock_.now(), ++sequence_, kSampleValid};
+  if (decoded.status != CodecStatus::kOk) {
+    sample.flags = kSampleCorrupted;
+    counters_.bump(ModbusEvent::kDecodeErrors);
+  }
+  if (!samples_.try_push(sample)) counters_.bump(ModbusEvent::kSamplesDropped);
+
+  if (!map.has_current_feedback) return written;
+  const std::size_t m = word_count(map.current_feedback.type);
+  if (const Outcome o = read_words(map.current_feedback_address, map.current_feedback_kind, m,
+                                   words.data());
+      o != Outcome::kOk) {
+    return o;
+  }
+  const DecodeResult current = decode_register({words.data(), m}, map.current_feedback);
+  if (current.status != CodecStatus::kOk) {
+    counters_.bump(ModbusEvent::kDecodeErrors);
+    return written;
+  }
+  feedback_.publish({current.value, clock_.now()});
+  return written;
+}
+
+}  // namespace mrd::hal::modbus

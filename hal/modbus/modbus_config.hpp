@@ -1,0 +1,66 @@
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <string>
+
+#include "hal/config_check.hpp"
+#include "hal/modbus/register_codec.hpp"
+
+namespace mrd::hal::modbus {
+
+enum class Transport : std::uint8_t { kTcp, kRtu };
+enum class RegisterKind : std::uint8_t { kInput, kHolding };  // function codes 0x04 / 0x03
+
+struct TcpConfig {
+  std::string host = "127.0.0.1";
+  int port = 502;
+};
+
+struct RtuConfig {
+  std::string device = "/dev/ttyUSB0";
+  int baud = 115200;
+  char parity = 'N';  // 'N', 'E' or 'O'
+  int data_bits = 8;  // 5..8
+  int stop_bits = 1;  // 1 or 2
+};
+
+// Where the values live on the device. Addresses are 0-based protocol addresses.
+struct RegisterMap {
+  int lvdt_address = 0;
+  RegisterKind lvdt_kind = RegisterKind::kInput;
+  RegisterFormat lvdt{RegisterType::kInt32, WordOrder::kHighFirst, ByteOrder::kNormal, 1e-6, 0.0};
+
+  int setpoint_address = 0;  // holding register(s), written with 0x06 (one word) or 0x10 (two)
+  RegisterFormat setpoint{RegisterType::kInt16, WordOrder::kHighFirst, ByteOrder::kNormal, 1e-3,
+                          0.0};
+
+  bool has_current_feedback = false;  // the driver reports its measured current
+  int current_feedback_address = 0;
+  RegisterKind current_feedback_kind = RegisterKind::kInput;
+  RegisterFormat current_feedback{RegisterType::kInt16, WordOrder::kHighFirst, ByteOrder::kNormal,
+                                  1e-3, 0.0};
+
+  [[nodiscard]] ConfigReport validate() const;
+};
+
+struct ModbusConfig {
+  Transport transport = Transport::kTcp;
+  TcpConfig tcp;
+  RtuConfig rtu;
+  int slave_id = 1;
+
+  // libmodbus waits 500 ms by default; a 1 kHz loop needs to know within a few periods.
+  std::chrono::microseconds response_timeout{20'000};
+  std::chrono::microseconds byte_timeout{5'000};  // RTU inter-character gap; 0 disables
+  std::chrono::microseconds poll_period{1'000};
+  // Reconnect back-off: doubles from min to max after each failed attempt, resets on success.
+  std::chrono::milliseconds reconnect_min{10};
+  std::chrono::milliseconds reconnect_max{1'000};
+
+  RegisterMap registers;
+
+  [[nodiscard]] ConfigReport validate() const;  // field paths relative to the modbus table
+};
+
+}  // namespace mrd::hal::modbus

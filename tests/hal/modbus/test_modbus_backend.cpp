@@ -1,0 +1,241 @@
+#include "hal/modbus/modbus_backend.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <optional>
+
+#include "tests/hal/modbus/modbus_test_server.hpp"
+#include "tests/hal/test_wait.hpp"
+
+namespace {
+
+using namespace std::chrono_literals;
+using mrd::hal::DisplacementSample;
+using mrd::hal::IoStatus;
+using mrd::hal::MonotonicClock;
+using mrd::hal::modbus::ModbusBackend;
+using mrd::hal::modbus::ModbusConfig;
+using mrd::hal::modbus::ModbusEvent;
+using mrd::test::ModbusTestServer;
+using mrd::test::wait_for;
+
+constexpr int kLvdtAddress = 10;
+constexpr int kSetpointAddress = 20;
+constexpr int kFeedbackAddress = 30;
+
+ModbusConfig config_for(int port) {
+  ModbusConfig c;
+  c.tcp.port = port;
+  c.response_timeout = 100ms;
+  c.poll_period = 1ms;
+  c.reconnect_min = 5ms;
+  c.reconnect_max = 40ms;
+  c.registers.lvdt_address = kLvdtAddress;  // int32, high word first, 1 um per count
+  c.registers.setpoint_address = kSetpointAddress;  // int16, 1 mA per count
+  return c;
+}
+
+// Drains the back end until a sample satisfying `pred` arrives (bounded).
+template <typename Pred>
+std::optional<DisplacementSample> sample_where(ModbusBackend& backend, Pred pred) {
+  std::optional<DisplacementSample> found;
+  wait_for([&] {
+    if (auto s = backend.latest(); s && pred(*s)) found = s;
+    return found.has_value();
+  });
+  return found;
+}
+
+std::optional<DisplacementSample> any_sample(ModbusBackend& backend) {
+  return sample_where(backend, [](const DisplacementSample&) { return true; });
+}
+
+class ModbusBackendTest : public ::testing::Test {
+ protected:
+  MonotonicClock clock;
+};
+
+TEST_F(ModbusBackendTest, ReadsTimestampedSamplesAndWritesSetpoints) {
+  ModbusTestServer server;
+  ASSERT_TRUE(server.listening());
+  server.set_input_registers(kLvdtAddress, {0x0000, 12345});
+  auto config = config_for(server.port());
+  config.registers.has_current_feedback = true;
+  config.registers.current_feedback_address = kFeedbackAddress;
+  server.set_input_registers(kFeedbackAddress, {1100});
+
+  ModbusBackend backend(config, clock);
+  const auto before = clock.now();
+  ASSERT_TRUE(backend.start().ok);
+
+  const auto first = any_sample(backend);
+  ASSERT_TRUE(first.has_value());
+  EXPECT_NEAR(first->value, 0.012345, 1e-12);
+  EXPECT_TRUE(first->usable());
+  EXPECT_GE(first->timestamp, before);
+  EXPECT_TRUE(backend.connected());
+
+  // A later sample carries a later sequence number and the register's new value.
+  server.set_input_registers(kLvdtAddress, {0xFFFF, 0xFFFF});  // -1 um
+  const auto second = sample_where(backend, [](const auto& s) { return s.value < 0.0; });
+  ASSERT_TRUE(second.has_value());
+  EXPECT_NEAR(second->value, -1e-6, 1e-15);
+  EXPECT_GT(second->sequence, first->sequence);
+  EXPECT_GE(second->timestamp, first->timestamp);
+
+  EXPECT_EQ(backend.write_setpoint(1.234), IoStatus::kOk);
+  EXPECT_TRUE(wait_for([&] { return server.holding_register(kSetpointAddress) == 1234; }));
+  EXPECT_EQ(backend.write_setpoint(-0.5), IoStatus::kOk);  // int16 register: signed
+  EXPECT_TRUE(wait_for([&] {
+    return server.holding_register(kSetpointAddress) == static_cast<std::uint16_t>(-500);
+  }));
+
+  std::optional<mrd::hal::CurrentReading> current;
+  EXPECT_TRUE(wait_for([&] { return (current = backend.measured()).has_value(); }));
+  EXPECT_NEAR(current->value, 1.1, 1e-12);
+
+  // The server stores a register before it answers, so the client's count can trail it.
+  EXPECT_TRUE(wait_for([&] { return backend.counters()[ModbusEvent::kWritesOk] >= 2; }));
+  const auto counters = backend.counters();
+  EXPECT_EQ(counters[ModbusEvent::kConnects], 1u);
+  EXPECT_EQ(counters[ModbusEvent::kReadErrors], 0u);
+  backend.stop();
+  EXPECT_FALSE(backend.connected());
+}
+
+TEST_F(ModbusBackendTest, ReadsWordSwappedFloatFromHoldingRegisters) {
+  ModbusTestServer server;
+  ASSERT_TRUE(server.listening());
+  server.set_holding_registers(kLvdtAddress, {0x0000, 0x3FC0});  // 1.5f, low word first
+  auto config = config_for(server.port());
+  config.registers.lvdt_kind = mrd::hal::modbus::RegisterKind::kHolding;
+  config.registers.lvdt = {mrd::hal::modbus::RegisterType::kFloat32,
+                           mrd::hal::modbus::WordOrder::kLowFirst,
+                           mrd::hal::modbus::ByteOrder::kNormal, 1e-3, 0.0};  // mm -> m
+  ModbusBackend backend(config, clock);
+  ASSERT_TRUE(backend.start().ok);
+  const auto s = any_sample(backend);
+  ASSERT_TRUE(s.has_value());
+  EXPECT_DOUBLE_EQ(s->value, 1.5e-3);
+}
+
+TEST_F(ModbusBackendTest, NonFiniteRegisterGivesACorruptedSampleNotACrash) {
+  ModbusTestServer server;
+  ASSERT_TRUE(server.listening());
+  server.set_input_registers(kLvdtAddress, {0x7FC0, 0x0000});  // NaN
+  auto config = config_for(server.port());
+  config.registers.lvdt.type = mrd::hal::modbus::RegisterType::kFloat32;
+  ModbusBackend backend(config, clock);
+  ASSERT_TRUE(backend.start().ok);
+  const auto s = any_sample(backend);
+  ASSERT_TRUE(s.has_value());
+  EXPECT_FALSE(s->usable());
+  EXPECT_NE(s->flags & mrd::hal::kSampleCorrupted, 0);
+  EXPECT_GE(backend.counters()[ModbusEvent::kDecodeErrors], 1u);
+  EXPECT_TRUE(backend.connected());
+}
+
+TEST_F(ModbusBackendTest, ReconnectsWhenTheServerGoesAwayAndComesBack) {
+  auto server = std::make_unique<ModbusTestServer>();
+  ASSERT_TRUE(server->listening());
+  const int port = server->port();
+  server->set_input_registers(kLvdtAddress, {0, 100});
+  ModbusBackend backend(config_for(port), clock);
+  ASSERT_TRUE(backend.start().ok);
+  ASSERT_TRUE(any_sample(backend).has_value());
+
+  server.reset();  // the device goes away
+  EXPECT_TRUE(wait_for([&] { return backend.counters()[ModbusEvent::kDisconnects] >= 1; }));
+  EXPECT_TRUE(wait_for([&] { return backend.counters()[ModbusEvent::kConnectFailures] >= 2; }));
+  EXPECT_FALSE(backend.connected());
+  // While it is away, setpoints are queued and the loop is told.
+  EXPECT_EQ(backend.write_setpoint(0.25), IoStatus::kNotConnected);
+  (void)backend.latest();  // drop what arrived before the outage
+  EXPECT_FALSE(backend.latest().has_value());
+
+  server = std::make_unique<ModbusTestServer>(ModbusTestServer::Mode::kReply, port);
+  ASSERT_TRUE(server->listening());
+  server->set_input_registers(kLvdtAddress, {0, 200});
+  const auto s = sample_where(backend, [](const auto& x) { return x.value > 150e-6; });
+  ASSERT_TRUE(s.has_value());
+  EXPECT_NEAR(s->value, 200e-6, 1e-12);
+  // The setpoint queued during the outage lands after reconnecting.
+  EXPECT_TRUE(wait_for([&] { return server->holding_register(kSetpointAddress) == 250; }));
+
+  const auto counters = backend.counters();
+  EXPECT_GE(counters[ModbusEvent::kConnects], 2u);
+  EXPECT_GE(counters[ModbusEvent::kReadErrors] + counters[ModbusEvent::kWriteErrors], 1u);
+  EXPECT_TRUE(backend.connected());
+}
+
+TEST_F(ModbusBackendTest, SilentServerCountsTimeoutsAndStillStops) {
+  ModbusTestServer server(ModbusTestServer::Mode::kSilent);
+  ASSERT_TRUE(server.listening());
+  auto config = config_for(server.port());
+  config.response_timeout = 30ms;
+  ModbusBackend backend(config, clock);
+  ASSERT_TRUE(backend.start().ok);
+  EXPECT_TRUE(wait_for([&] { return backend.counters()[ModbusEvent::kTimeouts] >= 2; }));
+  EXPECT_FALSE(backend.latest().has_value());
+  EXPECT_EQ(backend.last_errno(), ETIMEDOUT);
+  const auto counters = backend.counters();
+  EXPECT_GE(counters[ModbusEvent::kDisconnects], 1u);
+  EXPECT_EQ(counters[ModbusEvent::kReadsOk], 0u);
+  backend.stop();  // returns within one response timeout
+}
+
+TEST_F(ModbusBackendTest, ExceptionResponseIsCountedWithoutDroppingTheLink) {
+  ModbusTestServer server;
+  ASSERT_TRUE(server.listening());
+  auto config = config_for(server.port());
+  config.registers.lvdt_address = ModbusTestServer::kRegisters + 100;  // illegal data address
+  ModbusBackend backend(config, clock);
+  ASSERT_TRUE(backend.start().ok);
+  EXPECT_TRUE(wait_for([&] { return backend.counters()[ModbusEvent::kExceptionResponses] >= 3; }));
+  const auto counters = backend.counters();
+  EXPECT_EQ(counters[ModbusEvent::kConnects], 1u);
+  EXPECT_EQ(counters[ModbusEvent::kDisconnects], 0u);
+  EXPECT_FALSE(backend.latest().has_value());
+}
+
+TEST_F(ModbusBackendTest, NoServerMeansConnectFailuresWithBackOff) {
+  int port = 0;
+  {
+    ModbusTestServer probe;  // find a port nobody listens on once it closes
+    port = probe.port();
+  }
+  ModbusBackend backend(config_for(port), clock);
+  ASSERT_TRUE(backend.start().ok);
+  EXPECT_TRUE(wait_for([&] { return backend.counters()[ModbusEvent::kConnectFailures] >= 3; }));
+  EXPECT_FALSE(backend.connected());
+  EXPECT_FALSE(backend.latest().has_value());
+}
+
+TEST_F(ModbusBackendTest, MissingSerialDeviceIsRetriedNotFatal) {
+  ModbusConfig config = config_for(502);
+  config.transport = mrd::hal::modbus::Transport::kRtu;
+  config.rtu.device = "/dev/mrd-no-such-tty";
+  ModbusBackend backend(config, clock);
+  ASSERT_TRUE(backend.start().ok);
+  EXPECT_TRUE(wait_for([&] { return backend.counters()[ModbusEvent::kConnectFailures] >= 1; }));
+  EXPECT_FALSE(backend.connected());
+}
+
+TEST_F(ModbusBackendTest, BadConfigAndBadSetpointsAreRefusedClearly) {
+  ModbusConfig config = config_for(0);  // port 0 is invalid for a client
+  config.registers.setpoint.scale = 0.0;
+  ModbusBackend bad(config, clock);
+  const auto result = bad.start();
+  EXPECT_FALSE(result.ok);
+  EXPECT_NE(result.error.find("tcp.port"), std::string::npos) << result.error;
+  EXPECT_NE(result.error.find("registers.setpoint.scale"), std::string::npos) << result.error;
+
+  ModbusBackend backend(config_for(1), clock);  // never started: write path still answers
+  EXPECT_EQ(backend.write_setpoint(std::nan("")), IoStatus::kInvalidArgument);
+  EXPECT_EQ(backend.write_setpoint(40.0), IoStatus::kInvalidArgument);  // > 32.767 A in int16 mA
+  EXPECT_EQ(backend.write_setpoint(1.0), IoStatus::kNotConnected);
+}
+
+}  // namespace
