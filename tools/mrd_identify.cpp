@@ -163,6 +163,8 @@ int main(int argc, char** argv) {
   app.add_option("--velocity-limit", ips.velocity_limit, "improved-pso: |v| limit, fraction of the range")
       ->capture_default_str();
   app.add_option("--F", ips.F, "improved-pso: DE scaling factor, Eq. 18")->capture_default_str();
+  app.add_option("--F-spread", ips.F_spread, "improved-pso: F drawn from [F, F + spread] per trial")
+      ->capture_default_str();
   app.add_option("--CR", ips.CR, "improved-pso: DE crossover probability, Eq. 19")->capture_default_str();
   app.add_option("--stall", ips.stall_iterations, "improved-pso: iterations without gain before Cauchy")
       ->capture_default_str();
@@ -223,7 +225,10 @@ int main(int argc, char** argv) {
     }
     if (compare) {
       const auto rows = measured_fit_study(curve, study);
-      const std::string table = fit_table_markdown(rows, objective.rms_B());
+      char summary[160];
+      std::snprintf(summary, sizeof summary, "%zu loops, %zu points, rms B %.4g T; %d seeds each.\n\n",
+                    curve.loops.size(), objective.points(), objective.rms_B(), study.seeds);
+      const std::string table = summary + fit_table_markdown(rows, objective.rms_B());
       std::fputs(table.c_str(), stdout);
       if (!out_path.empty() && !write_file(out_path, table)) return 1;
       return 0;

@@ -123,9 +123,11 @@ OptimisationResult run_improved_pso(BatchObjective& objective, const Bounds& bou
       Point moved = swarm.x[i];
       swarm::move_particle(moved, swarm.v[i], bounds);
       const auto donors = swarm::pick_donors(n, i, random);
+      const double F =
+          settings.F_spread > 0.0 ? settings.F + settings.F_spread * random.uniform() : settings.F;
       const Point mutant = swarm::de_mutant(swarm.personal_best[donors.p1],
                                             swarm.personal_best[donors.p2],
-                                            swarm.personal_best[donors.p3], settings.F);
+                                            swarm.personal_best[donors.p3], F);
       trials[i] = bounds.clamp(swarm::de_crossover(mutant, moved, settings.CR, random));
     }
     objective.evaluate(trials, trial_fitness, &swarm.fitness);  // Eq. 20 compares with x_i

@@ -23,8 +23,9 @@ struct ImprovedPsoSettings {
   double c1 = 2.0;     // Section 4.1
   double c2 = 2.0;
   double velocity_limit = 0.1;
-  double F = 0.5;      // Eq. 18 scaling factor
-  double CR = 0.9;     // Eq. 19 crossover probability
+  double F = 0.4;         // Eq. 18 scaling factor
+  double F_spread = 0.5;  // > 0: each trial draws F uniformly from [F, F + F_spread] (dither)
+  double CR = 0.95;       // Eq. 19 crossover probability
   // Stall detector: the global best improved by less than stall_tolerance (relative) for
   // stall_iterations iterations in a row. Then cauchy_trials points are drawn by Eq. 22.
   int stall_iterations = 5;

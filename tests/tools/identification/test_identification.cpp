@@ -177,3 +177,23 @@ TEST(Identification, FitOfMeasuredFerriteBeatsTheAuthorsPublishedFit) {
 }
 
 }  // namespace
+
+#include "tools/identification/identify_report.hpp"
+
+namespace {
+
+TEST(IdentifyReport, JsonHasTheDocumentedKeys) {
+  const BHCurve curve = synthetic_loop(kSteel, 5000.0, 200);
+  const BHObjective objective(curve);
+  IdentifyOptions options = paper_protocol(Algorithm::kPso);
+  options.budget.evaluations = 120;
+  options.polish = true;
+  const std::string json = identify_json(identify(objective, curve, options));
+  for (const char* key : {"\"algo\": \"pso\"", "\"params\": {\"Ms\": ", "\"a\": ", "\"alpha\": ",
+                          "\"k\": ", "\"c\": ", "\"rmse_T\": ", "\"evaluations\": 120",
+                          "\"wall_s\": ", "\"polish\": {\"method\": \"levenberg-marquardt\""}) {
+    EXPECT_NE(json.find(key), std::string::npos) << key;
+  }
+}
+
+}  // namespace
