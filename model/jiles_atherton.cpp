@@ -37,12 +37,16 @@ double JilesAtherton::apply_field(double H) {
   return B();
 }
 
-JilesAtherton::Slope JilesAtherton::slope(double H, const Vec2& m, double delta) const {
-  const double He = H + p_.alpha * m[0];  // Eq. 4
+// Inlined into each stage: as a call it returned its result through memory and kept the
+// compiler from interleaving one stage's tail with the next stage's head.
+[[gnu::always_inline]] inline JilesAtherton::Slope JilesAtherton::slope(double H, double M,
+                                                                        double M_irr,
+                                                                        double delta) const {
+  const double He = H + p_.alpha * M;  // Eq. 4
   const LangevinValue L = langevin(He * inv_a_);
   const double Man = p_.Ms * L.value;              // Eq. 3
   const double dMan_dHe = Ms_over_a_ * L.derivative;
-  const double dM = Man - m[1];
+  const double dM = Man - M_irr;
 
   bool guarded = false;
   // Eq. 10, irreversible term. When delta and (Man - M_irr) disagree the domain walls would
@@ -66,7 +70,7 @@ JilesAtherton::Slope JilesAtherton::slope(double H, const Vec2& m, double delta)
   const double inv = 1.0 / (denominator * coupling);
   const double chi_irr = pinning * coupling * inv;
   const double dM_dH = (one_minus_c_ * pinning + p_.c * dMan_dHe * denominator) * inv;
-  return {Vec2(dM_dH, chi_irr), Man, guarded};
+  return {dM_dH, chi_irr, Man, guarded};
 }
 
 template <Integrator kMethod>
@@ -77,23 +81,29 @@ void JilesAtherton::integrate(double H_target) {
                                                 static_cast<double>(settings_.max_substeps)));
   const double h = span / steps;
 
-  Vec2 m(state_.M, state_.M_irr);
+  double M = state_.M;
+  double M_irr = state_.M_irr;
   double H = state_.H;
   for (int i = 0; i < steps; ++i) {
     bool guarded = false;
     double Man_end = 0.0;
     if constexpr (kMethod == Integrator::kRk4) {
-      const Slope k1 = slope(H, m, delta);
-      const Slope k2 = slope(H + 0.5 * h, m + 0.5 * h * k1.dm_dH, delta);
-      const Slope k3 = slope(H + 0.5 * h, m + 0.5 * h * k2.dm_dH, delta);
-      const Slope k4 = slope(H + h, m + h * k3.dm_dH, delta);
-      m += (h / 6.0) * (k1.dm_dH + 2.0 * k2.dm_dH + 2.0 * k3.dm_dH + k4.dm_dH);
+      const double half = 0.5 * h;
+      const Slope k1 = slope(H, M, M_irr, delta);
+      const Slope k2 = slope(H + half, M + half * k1.dM_dH, M_irr + half * k1.dM_irr_dH, delta);
+      const Slope k3 = slope(H + half, M + half * k2.dM_dH, M_irr + half * k2.dM_irr_dH, delta);
+      const Slope k4 = slope(H + h, M + h * k3.dM_dH, M_irr + h * k3.dM_irr_dH, delta);
+      const double sixth = h / 6.0;
+      M += sixth * (k1.dM_dH + 2.0 * k2.dM_dH + 2.0 * k3.dM_dH + k4.dM_dH);
+      M_irr += sixth * (k1.dM_irr_dH + 2.0 * k2.dM_irr_dH + 2.0 * k3.dM_irr_dH + k4.dM_irr_dH);
       guarded = k1.guarded || k2.guarded || k3.guarded || k4.guarded;
       Man_end = k4.Man;
     } else {
-      const Slope k1 = slope(H, m, delta);
-      const Slope k2 = slope(H + h, m + h * k1.dm_dH, delta);
-      m += (0.5 * h) * (k1.dm_dH + k2.dm_dH);
+      const Slope k1 = slope(H, M, M_irr, delta);
+      const Slope k2 = slope(H + h, M + h * k1.dM_dH, M_irr + h * k1.dM_irr_dH, delta);
+      const double half = 0.5 * h;
+      M += half * (k1.dM_dH + k2.dM_dH);
+      M_irr += half * (k1.dM_irr_dH + k2.dM_irr_dH);
       guarded = k1.guarded || k2.guarded;
       Man_end = k2.Man;
     }
@@ -101,17 +111,19 @@ void JilesAtherton::integrate(double H_target) {
     // The exact solution relaxes M_irr towards Man and never passes it. A sub-step can
     // overshoot when chi_irr is huge (near runaway, or when max_substeps stretched the step).
     // The avalanche then ends on the anhysteretic curve: M_irr = Man, so M = Man (Eq. 1-2).
-    if (delta * (m[1] - Man_end) > 0.0 && delta * (m[1] - state_.M_irr) > 0.0) {
-      m = Vec2(Man_end, Man_end);
+    if (delta * (M_irr - Man_end) > 0.0 && delta * (M_irr - state_.M_irr) > 0.0) {
+      M = M_irr = Man_end;
     }
     // |Man| < Ms (Eq. 3), so no exact solution leaves [-Ms, Ms]; a guarded step might.
-    m = m.cwiseMax(-p_.Ms).cwiseMin(p_.Ms);
+    M = std::min(std::max(M, -p_.Ms), p_.Ms);
+    M_irr = std::min(std::max(M_irr, -p_.Ms), p_.Ms);
     H = (i + 1 == steps) ? H_target : H + h;
-    state_ = {H, m[0], m[1]};
-    if (!std::isfinite(m[0]) || !std::isfinite(m[1])) {
+    state_ = {H, M, M_irr};
+    if (!std::isfinite(M) || !std::isfinite(M_irr)) {
       ++recoveries_;
       settle_on_anhysteretic();
-      m = Vec2(state_.M, state_.M_irr);
+      M = state_.M;
+      M_irr = state_.M_irr;
     }
   }
 }

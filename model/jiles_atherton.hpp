@@ -1,6 +1,5 @@
 #pragma once
 
-#include <Eigen/Core>
 #include <cstdint>
 
 #include "model/jiles_atherton_params.hpp"
@@ -70,14 +69,15 @@ class JilesAtherton {
   [[nodiscard]] const JilesAthertonSettings& settings() const { return settings_; }
 
  private:
-  using Vec2 = Eigen::Vector2d;  // [M, M_irr]
-
+  // One stage of Eq. 10: d[M, M_irr]/dH at (H, M, M_irr). Plain scalars, not a 2-vector:
+  // the stages are a serial chain, and scalars let the compiler schedule each one freely.
   struct Slope {
-    Vec2 dm_dH;
-    double Man;  // anhysteretic magnetisation at this stage [A/m]
+    double dM_dH;
+    double dM_irr_dH;  // chi_irr
+    double Man;        // anhysteretic magnetisation at this stage [A/m]
     bool guarded;
   };
-  [[nodiscard]] Slope slope(double H, const Vec2& m, double delta) const;
+  [[nodiscard]] Slope slope(double H, double M, double M_irr, double delta) const;
   template <Integrator kMethod>
   void integrate(double H_target);
   void settle_on_anhysteretic();
