@@ -68,27 +68,21 @@ using mrd::model::langevin_tabulated;
 // An independent reference in long double: the Maclaurin series L(x) = sum 2^2n B_2n x^(2n-1)
 // / (2n)! below |x| = 1/4 (terms shrink by (x/pi)^2 < 0.007; 11 terms reach 1e-24), and the
 // closed forms above it, where cancellation costs at most two of the 19 digits.
+// 2^2n B_2n / (2n)! for n = 1..11, from B_2 = 1/6, B_4 = -1/30, ..., B_22 = 854513/138.
+constexpr long double kSeries[] = {
+    1.0L / 3,          -1.0L / 45,          2.0L / 945,          -1.0L / 4725,
+    2.0L / 93555,      -1382.0L / 638512875, 4.0L / 18243225,    -3617.0L / 162820783125,
+    87734.0L / 38979295480125, -349222.0L / 1531329465290625,
+    1310724.0L / 57210374837081625};
+
 long double series_value(long double x) {
-  // 2^2n B_2n / (2n)! for n = 1..11, from B_2 = 1/6, B_4 = -1/30, ..., B_22 = 854513/138.
-  static constexpr long double kA[] = {
-      1.0L / 3,          -1.0L / 45,          2.0L / 945,          -1.0L / 4725,
-      2.0L / 93555,      -1382.0L / 638512875, 4.0L / 18243225,    -3617.0L / 162820783125,
-      87734.0L / 38979295480125, -349222.0L / 1531329465290625,
-      1310724.0L / 57210374837081625};
   long double sum = 0.0L;
-  const long double x2 = x * x;
-  for (int n = 10; n >= 0; --n) sum = sum * x2 + kA[n];
+  for (int n = 10; n >= 0; --n) sum = sum * x * x + kSeries[n];
   return x * sum;
 }
 long double series_derivative(long double x) {
-  static constexpr long double kA[] = {
-      1.0L / 3,          -1.0L / 45,          2.0L / 945,          -1.0L / 4725,
-      2.0L / 93555,      -1382.0L / 638512875, 4.0L / 18243225,    -3617.0L / 162820783125,
-      87734.0L / 38979295480125, -349222.0L / 1531329465290625,
-      1310724.0L / 57210374837081625};
   long double sum = 0.0L;
-  const long double x2 = x * x;
-  for (int n = 10; n >= 0; --n) sum = sum * x2 + (2 * n + 1) * kA[n];
+  for (int n = 10; n >= 0; --n) sum = sum * x * x + (2 * n + 1) * kSeries[n];
   return sum;
 }
 long double accurate_value(long double x) {
