@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
@@ -93,8 +94,10 @@ inline NearestInterval nearest_interval(double ax) {
   constexpr double kRounder = 0x1.8p50;
   static_assert(kLangevinTableStep == 0x1p-2, "kRounder places the last bit at the step");
   const double rounded = ax + kRounder;
-  return {static_cast<std::size_t>(std::bit_cast<std::uint64_t>(rounded) & 0x7f),
-          rounded - kRounder};
+  // The min only matters if someone switched the FPU from rounding to nearest: the index then
+  // still lands inside the table.
+  const auto index = static_cast<std::size_t>(std::bit_cast<std::uint64_t>(rounded) & 0x7f);
+  return {std::min(index, kLangevinTable.intervals.size() - 1), rounded - kRounder};
 }
 
 }  // namespace detail
