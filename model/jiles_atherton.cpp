@@ -14,6 +14,7 @@ JilesAtherton::JilesAtherton(const JilesAthertonParams& params, const MagneticCi
       circuit_(circuit),
       settings_(settings),
       inv_a_(1.0 / params.a),
+      alpha_over_a_(params.alpha / params.a),
       Ms_over_a_(params.Ms / params.a),
       one_minus_c_(1.0 - params.c),
       alpha_c_(params.alpha * params.c),
@@ -26,74 +27,115 @@ double JilesAtherton::apply_current(double current) {
   return apply_field(circuit_.field_from_current(current));  // Eq. 9
 }
 
+namespace {
+
+struct ExactLangevin {
+  LangevinValue operator()(double x) const { return langevin(x); }
+};
+
+}  // namespace
+
 double JilesAtherton::apply_field(double H) {
   if (H != state_.H && std::isfinite(H)) {
+    ExactLangevin exact;
+    const bool tabulated = settings_.langevin == LangevinEvaluation::kTabulated;
     if (settings_.integrator == Integrator::kRk4) {
-      integrate<Integrator::kRk4>(H);
+      tabulated ? integrate<Integrator::kRk4>(H, langevin_cursor_)
+                : integrate<Integrator::kRk4>(H, exact);
     } else {
-      integrate<Integrator::kHeun>(H);
+      tabulated ? integrate<Integrator::kHeun>(H, langevin_cursor_)
+                : integrate<Integrator::kHeun>(H, exact);
     }
   }
   return B();
 }
 
-JilesAtherton::Slope JilesAtherton::slope(double H, const Vec2& m, double delta) const {
-  const double He = H + p_.alpha * m[0];  // Eq. 4
-  const LangevinValue L = langevin(He * inv_a_);
-  const double Man = p_.Ms * L.value;              // Eq. 3
+// Inlined into each stage: as a call it returned its result through memory and kept the
+// compiler from interleaving one stage's tail with the next stage's head.
+template <typename Langevin>
+[[gnu::always_inline]] inline JilesAtherton::Slope JilesAtherton::slope(Langevin& langevin,
+                                                                        double x, double M_irr,
+                                                                        double delta) const {
+  const LangevinValue L = langevin(x);
+  const double Man = p_.Ms * L.value;  // Eq. 3
   const double dMan_dHe = Ms_over_a_ * L.derivative;
-  const double dM = Man - m[1];
 
   bool guarded = false;
   // Eq. 10, irreversible term. When delta and (Man - M_irr) disagree the domain walls would
-  // move against the field: that branch is non-physical and contributes nothing.
-  // k delta - alpha (Man - M_irr) = delta (k - alpha |Man - M_irr|). It reaches zero when
+  // move against the field: that branch is non-physical and contributes nothing, so the
+  // pinning term is max(delta (Man - M_irr), 0). delta (Man - M_irr) is formed as
+  // (delta Ms) L - delta M_irr: with delta = +-1 both products are exact.
+  const double drive = (delta * p_.Ms) * L.value - delta * M_irr;
+  const double pinning = std::max(drive, 0.0);
+  // k delta - alpha (Man - M_irr) = delta (k - alpha pinning). It reaches zero when
   // alpha |Man - M_irr| >= k (runaway); it is clamped to k * floor and the event counted.
-  const double pinning = delta * dM > 0.0 ? std::fabs(dM) : 0.0;
-  double denominator = p_.k - p_.alpha * pinning;
+  // k - alpha pinning is formed from L, not from pinning: the chain from L to the division is
+  // then one multiply-subtract, the rest is computed while the Langevin polynomials run.
+  double denominator =
+      drive > 0.0 ? (p_.k + (p_.alpha * delta) * M_irr) - (p_.alpha * delta * p_.Ms) * L.value
+                  : p_.k;
   if (denominator < k_floor_) {
     denominator = k_floor_;
     guarded = pinning > 0.0;
   }
   // Reversible coupling 1 - alpha c Man' folds when alpha c Ms/(3a) >= 1; same guard.
-  double coupling = 1.0 - alpha_c_ * dMan_dHe;
+  double coupling = 1.0 - (alpha_c_ * Ms_over_a_) * L.derivative;
   if (coupling < settings_.denominator_floor) {
     coupling = settings_.denominator_floor;
     guarded = true;
   }
   // chi_irr = pinning / denominator and dM/dH = ((1-c) chi_irr + c Man') / coupling,
   // sharing one division.
-  const double inv = 1.0 / (denominator * coupling);
-  const double chi_irr = pinning * coupling * inv;
-  const double dM_dH = (one_minus_c_ * pinning + p_.c * dMan_dHe * denominator) * inv;
-  return {Vec2(dM_dH, chi_irr), Man, guarded};
+  return {one_minus_c_ * pinning + p_.c * dMan_dHe * denominator, pinning * coupling,
+          1.0 / (denominator * coupling), Man, guarded};
 }
 
-template <Integrator kMethod>
-void JilesAtherton::integrate(double H_target) {
+template <Integrator kMethod, typename Langevin>
+void JilesAtherton::integrate(double H_target, Langevin& langevin) {
   const double span = H_target - state_.H;
   const double delta = span > 0.0 ? 1.0 : -1.0;
-  const int steps = static_cast<int>(std::clamp(std::ceil(std::fabs(span) / max_field_step_), 1.0,
-                                                static_cast<double>(settings_.max_substeps)));
-  const double h = span / steps;
+  // One sub-step is the real-time case (a control period moves H by far less than
+  // min(a, k)); it skips the ceil and the two divisions of the general count.
+  int steps = 1;
+  double h = span;
+  if (std::fabs(span) > max_field_step_) {
+    steps = static_cast<int>(std::clamp(std::ceil(std::fabs(span) / max_field_step_), 1.0,
+                                        static_cast<double>(settings_.max_substeps)));
+    h = span / steps;
+  }
 
-  Vec2 m(state_.M, state_.M_irr);
+  double M = state_.M;
+  double M_irr = state_.M_irr;
   double H = state_.H;
   for (int i = 0; i < steps; ++i) {
     bool guarded = false;
     double Man_end = 0.0;
+    // A stage at field H_s, `step` along slope k from the sub-step's start. Its x = He/a =
+    // H_s/a + (alpha/a) M (Eq. 4): the H_s part and the part from the starting M are known
+    // before the stages run, and only the increment waits for the previous stage's division.
+    const double x_M = alpha_over_a_ * M;
+    const auto stage = [&](double H_s, const Slope& k, double step) {
+      return slope(langevin, H_s * inv_a_ + x_M + ((alpha_over_a_ * step) * k.dM_num) * k.inv,
+                   M_irr + (step * k.chi_num) * k.inv, delta);
+    };
+    const Slope k1 = slope(langevin, H * inv_a_ + x_M, M_irr, delta);
     if constexpr (kMethod == Integrator::kRk4) {
-      const Slope k1 = slope(H, m, delta);
-      const Slope k2 = slope(H + 0.5 * h, m + 0.5 * h * k1.dm_dH, delta);
-      const Slope k3 = slope(H + 0.5 * h, m + 0.5 * h * k2.dm_dH, delta);
-      const Slope k4 = slope(H + h, m + h * k3.dm_dH, delta);
-      m += (h / 6.0) * (k1.dm_dH + 2.0 * k2.dm_dH + 2.0 * k3.dm_dH + k4.dm_dH);
+      const double half = 0.5 * h;
+      const Slope k2 = stage(H + half, k1, half);
+      const Slope k3 = stage(H + half, k2, half);
+      const Slope k4 = stage(H + h, k3, h);
+      const double sixth = h / 6.0;
+      M = (M + sixth * (k1.dM_dH() + 2.0 * k2.dM_dH() + 2.0 * k3.dM_dH())) +
+          (sixth * k4.dM_num) * k4.inv;
+      M_irr = (M_irr + sixth * (k1.chi_irr() + 2.0 * k2.chi_irr() + 2.0 * k3.chi_irr())) +
+              (sixth * k4.chi_num) * k4.inv;
       guarded = k1.guarded || k2.guarded || k3.guarded || k4.guarded;
       Man_end = k4.Man;
     } else {
-      const Slope k1 = slope(H, m, delta);
-      const Slope k2 = slope(H + h, m + h * k1.dm_dH, delta);
-      m += (0.5 * h) * (k1.dm_dH + k2.dm_dH);
+      const Slope k2 = stage(H + h, k1, h);
+      const double half = 0.5 * h;
+      M = (M + half * k1.dM_dH()) + (half * k2.dM_num) * k2.inv;
+      M_irr = (M_irr + half * k1.chi_irr()) + (half * k2.chi_num) * k2.inv;
       guarded = k1.guarded || k2.guarded;
       Man_end = k2.Man;
     }
@@ -101,17 +143,19 @@ void JilesAtherton::integrate(double H_target) {
     // The exact solution relaxes M_irr towards Man and never passes it. A sub-step can
     // overshoot when chi_irr is huge (near runaway, or when max_substeps stretched the step).
     // The avalanche then ends on the anhysteretic curve: M_irr = Man, so M = Man (Eq. 1-2).
-    if (delta * (m[1] - Man_end) > 0.0 && delta * (m[1] - state_.M_irr) > 0.0) {
-      m = Vec2(Man_end, Man_end);
+    if (delta * (M_irr - Man_end) > 0.0 && delta * (M_irr - state_.M_irr) > 0.0) {
+      M = M_irr = Man_end;
     }
     // |Man| < Ms (Eq. 3), so no exact solution leaves [-Ms, Ms]; a guarded step might.
-    m = m.cwiseMax(-p_.Ms).cwiseMin(p_.Ms);
+    M = std::min(std::max(M, -p_.Ms), p_.Ms);
+    M_irr = std::min(std::max(M_irr, -p_.Ms), p_.Ms);
     H = (i + 1 == steps) ? H_target : H + h;
-    state_ = {H, m[0], m[1]};
-    if (!std::isfinite(m[0]) || !std::isfinite(m[1])) {
+    state_ = {H, M, M_irr};
+    if (!std::isfinite(M) || !std::isfinite(M_irr)) {
       ++recoveries_;
       settle_on_anhysteretic();
-      m = Vec2(state_.M, state_.M_irr);
+      M = state_.M;
+      M_irr = state_.M_irr;
     }
   }
 }
@@ -132,7 +176,11 @@ double JilesAtherton::anhysteretic_magnetisation(double H) const {
   double hi = p_.Ms;
   for (int i = 0; i < 64 && hi - lo > 1e-12 * p_.Ms; ++i) {
     const double mid = 0.5 * (lo + hi);
-    const double g = mid - p_.Ms * langevin((H + p_.alpha * mid) * inv_a_).value;
+    const double x = (H + p_.alpha * mid) * inv_a_;
+    const double L = settings_.langevin == LangevinEvaluation::kTabulated
+                         ? langevin_tabulated(x).value
+                         : langevin(x).value;
+    const double g = mid - p_.Ms * L;
     (g > 0.0 ? hi : lo) = mid;
   }
   return 0.5 * (lo + hi);

@@ -1,15 +1,25 @@
 #pragma once
 
-#include <Eigen/Core>
 #include <cstdint>
 
 #include "model/jiles_atherton_params.hpp"
+#include "model/langevin.hpp"
 
 namespace mrd::model {
 
 enum class Integrator {
   kHeun,  // 2nd order; cheaper, kept for comparison in docs/MODEL.md
   kRk4,   // classical 4th-order Runge-Kutta; the default
+};
+
+// How the Langevin function of Eq. 3 is evaluated (model/langevin.hpp, docs/MODEL.md).
+enum class LangevinEvaluation {
+  // Piecewise polynomials: no exp and no division. Error below 1e-13 in L and 2e-13 in L',
+  // under 1e-13 T in B. The real-time default.
+  kTabulated,
+  // The closed form, one exp and one division. For identification and reference runs, which
+  // should not depend on a table.
+  kExact,
 };
 
 struct JilesAthertonSettings {
@@ -21,6 +31,7 @@ struct JilesAthertonSettings {
   // Denominator guard, as a fraction of k (Eq. 10) or of 1 (the reversible coupling).
   double denominator_floor = 1e-2;
   Integrator integrator = Integrator::kRk4;
+  LangevinEvaluation langevin = LangevinEvaluation::kTabulated;
 };
 
 // Where the material is on its B-H plane. H is the field the state was integrated to.
@@ -70,16 +81,24 @@ class JilesAtherton {
   [[nodiscard]] const JilesAthertonSettings& settings() const { return settings_; }
 
  private:
-  using Vec2 = Eigen::Vector2d;  // [M, M_irr]
-
+  // One stage of Eq. 10 at x = He/a (Eq. 4) and M_irr. The slopes are dM/dH = dM_num * inv and
+  // chi_irr = chi_num * inv. They stay apart so that the integrator can scale the numerators
+  // while the division runs: between the division and the next stage's x is one multiply-add.
+  // Plain scalars, not a 2-vector: the stages are a serial chain, and scalars let the compiler
+  // schedule each one freely.
   struct Slope {
-    Vec2 dm_dH;
-    double Man;  // anhysteretic magnetisation at this stage [A/m]
+    double dM_num;
+    double chi_num;
+    double inv;   // 1 / (denominator * coupling)
+    double Man;   // anhysteretic magnetisation at this stage [A/m]
     bool guarded;
+    [[nodiscard]] double dM_dH() const { return dM_num * inv; }
+    [[nodiscard]] double chi_irr() const { return chi_num * inv; }
   };
-  [[nodiscard]] Slope slope(double H, const Vec2& m, double delta) const;
-  template <Integrator kMethod>
-  void integrate(double H_target);
+  template <typename Langevin>
+  [[nodiscard]] Slope slope(Langevin& langevin, double x, double M_irr, double delta) const;
+  template <Integrator kMethod, typename Langevin>
+  void integrate(double H_target, Langevin& langevin);
   void settle_on_anhysteretic();
 
   JilesAthertonParams p_;
@@ -87,6 +106,7 @@ class JilesAtherton {
   JilesAthertonSettings settings_;
   // Cached products of the parameters, so the per-step path only multiplies.
   double inv_a_;
+  double alpha_over_a_;
   double Ms_over_a_;
   double one_minus_c_;
   double alpha_c_;
@@ -94,6 +114,8 @@ class JilesAtherton {
   double max_field_step_;
 
   MagneticState state_;
+  // Where the last tabulated Langevin evaluation was: only a hint, checked on every use.
+  LangevinTableCursor langevin_cursor_;
   std::uint64_t guard_events_ = 0;
   std::uint64_t recoveries_ = 0;
 };

@@ -1,7 +1,13 @@
 #include "model/mr_fluid.hpp"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
+
+#include "model/compile_time_fit.hpp"
 
 namespace mrd::model {
 
@@ -23,8 +29,66 @@ YieldStress::YieldStress(const MrFluid& fluid)
                   std::pow(fluid.particle_saturation, 0.8)),
       offset_(1083.2 * fluid.volume_fraction - 287.03) {}
 
+namespace {
+
+constexpr double kEq13Exponent = 0.5811;
+constexpr int kPowerCoefficients = 8;  // degree 7
+constexpr int kMinBinaryExponent = -32;
+constexpr int kMaxBinaryExponent = 31;
+
+struct PowerTable {
+  // m^p on [1 + j/16, 1 + (j + 1)/16], as monomials in t = m - (1 + (2j + 1)/32).
+  struct alignas(64) Interval {
+    std::array<double, kPowerCoefficients> coefficients;
+  };
+  std::array<Interval, 16> mantissa;
+  std::array<double, kMaxBinaryExponent - kMinBinaryExponent + 1> scale;  // 2^(p e)
+};
+
+constexpr PowerTable make_power_table() {
+  using compile_time::Real;
+  constexpr Real p = kEq13Exponent;  // the double std::pow would get, exactly
+  PowerTable table{};
+  for (std::size_t j = 0; j < table.mantissa.size(); ++j) {
+    table.mantissa[j].coefficients = compile_time::chebyshev_fit<kPowerCoefficients>(
+        [p](Real m) { return compile_time::exp(p * compile_time::log(m)); },
+        1.0L + (2.0L * static_cast<Real>(j) + 1.0L) / 32.0L, 1.0L / 32.0L);
+  }
+  for (int e = kMinBinaryExponent; e <= kMaxBinaryExponent; ++e) {
+    table.scale[static_cast<std::size_t>(e - kMinBinaryExponent)] =
+        static_cast<double>(compile_time::exp(p * e * compile_time::kLn2));
+  }
+  return table;
+}
+
+constinit const PowerTable kPowerTable = make_power_table();
+
+}  // namespace
+
+double eq13_field_power(double abs_B) {
+  if (!(abs_B >= 0x1p-32 && abs_B < 0x1p32)) return std::pow(abs_B, kEq13Exponent);
+  // A positive normal double is 2^e m: the exponent field holds e + 1023, the mantissa field
+  // m - 1, and its top 4 bits pick the interval j. Setting the exponent field to that of 1
+  // gives m; keeping only the top 4 bits and adding 2^-5 gives the interval's centre.
+  constexpr std::uint64_t kOne = 0x3ff0000000000000;
+  constexpr std::uint64_t kMantissa = 0x000fffffffffffff;
+  constexpr std::uint64_t kTop4 = 0x000f000000000000;
+  constexpr std::uint64_t kHalfInterval = 0x0000800000000000;  // 2^-5 in [1, 2)
+  const auto bits = std::bit_cast<std::uint64_t>(abs_B);
+  const double m = std::bit_cast<double>((bits & kMantissa) | kOne);
+  const double centre = std::bit_cast<double>((bits & kTop4) | kOne | kHalfInterval);
+  const double t = m - centre;  // exact, |t| <= 1/32
+  const auto& c = kPowerTable.mantissa[(bits & kTop4) >> 48].coefficients;
+  const double t2 = t * t;
+  const double t4 = t2 * t2;
+  const double m_power = ((c[0] + c[1] * t) + (c[2] + c[3] * t) * t2) +
+                         ((c[4] + c[5] * t) + (c[6] + c[7] * t) * t2) * t4;
+  const auto e = static_cast<int>(bits >> 52) - 1023;
+  return m_power * kPowerTable.scale[static_cast<std::size_t>(e - kMinBinaryExponent)];
+}
+
 double YieldStress::operator()(double B) const {
-  return std::max(0.0, field_gain_ * std::pow(std::fabs(B), 0.5811) + offset_);  // Eq. 13
+  return std::max(0.0, field_gain_ * eq13_field_power(std::fabs(B)) + offset_);  // Eq. 13
 }
 
 }  // namespace mrd::model

@@ -44,20 +44,27 @@ std::vector<LoopScanRow> scan_loops(const model::JilesAthertonParams& params,
 
 namespace mrd::tools {
 
+double max_B_difference(const model::JilesAthertonParams& params, double H_max, int n,
+                        const model::JilesAthertonSettings& a,
+                        const model::JilesAthertonSettings& b) {
+  model::JilesAtherton core_a(params, model::MagneticCircuit{1.0, 1.0}, a);
+  model::JilesAtherton core_b(params, model::MagneticCircuit{1.0, 1.0}, b);
+  double difference = 0.0;
+  for (int i = 1; i <= 2 * n; ++i) {
+    const double H = H_max * std::sin(2.0 * std::numbers::pi * i / n);
+    difference = std::max(difference, std::fabs(core_a.apply_field(H) - core_b.apply_field(H)));
+  }
+  return difference;
+}
+
 double integrator_error(const model::JilesAthertonParams& params, double H_max, int n,
                         const model::JilesAthertonSettings& settings, double refinement) {
   model::JilesAthertonSettings fine = settings;
   fine.integrator = model::Integrator::kRk4;
+  fine.langevin = model::LangevinEvaluation::kExact;
   fine.max_field_step_fraction /= refinement;
   fine.max_substeps = 1 << 22;
-  model::JilesAtherton coarse_core(params, model::MagneticCircuit{1.0, 1.0}, settings);
-  model::JilesAtherton fine_core(params, model::MagneticCircuit{1.0, 1.0}, fine);
-  double error = 0.0;
-  for (int i = 1; i <= 2 * n; ++i) {
-    const double H = H_max * std::sin(2.0 * std::numbers::pi * i / n);
-    error = std::max(error, std::fabs(coarse_core.apply_field(H) - fine_core.apply_field(H)));
-  }
-  return error;
+  return max_B_difference(params, H_max, n, settings, fine);
 }
 
 }  // namespace mrd::tools

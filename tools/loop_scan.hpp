@@ -31,8 +31,13 @@ std::vector<LoopScanRow> scan_loops(const model::JilesAthertonParams& params,
 
 namespace mrd::tools {
 
-// Max |B - B_ref| [T] over two cycles of H = Hmax sin(2 pi i / n), where the reference uses
-// 1/refinement of the sub-step size with RK4: the integrator error figure of docs/MODEL.md.
+// Max |B_a - B_b| [T] over two cycles of H = Hmax sin(2 pi i / n), from the demagnetised state.
+double max_B_difference(const model::JilesAthertonParams& params, double H_max, int n,
+                        const model::JilesAthertonSettings& a,
+                        const model::JilesAthertonSettings& b);
+
+// max_B_difference against a reference that uses RK4 with 1/refinement of the sub-step size
+// and the exact Langevin function: the integrator error figure of docs/MODEL.md.
 double integrator_error(const model::JilesAthertonParams& params, double H_max, int n,
                         const model::JilesAthertonSettings& settings, double refinement = 100.0);
 

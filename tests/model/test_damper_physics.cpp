@@ -1,6 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 
 #include "model/bingham_damper.hpp"
 #include "model/mr_fluid.hpp"
@@ -25,6 +28,31 @@ TEST(YieldStressEq13, IsClampedAtZeroWhereTheFitGoesNegative) {
   const YieldStress thin(MrFluid{2.25, 0.20, 1.5e-6, 2.1});  // 1083.2*0.2 - 287.03 < 0
   EXPECT_EQ(thin(0.0), 0.0);
   EXPECT_GT(thin(0.1), 0.0);
+}
+
+// The tabulated |B|^0.5811 against long double pow, relative, over 2^-40..2^40 T: the table's
+// range (2^-32..2^32) and the std::pow fallback on both sides, on a log grid that does not
+// repeat. The reference exponent is the double 0.5811 (0.5811L differs by 1e-17, which moves
+// B^p by 1e-15 at 2^-32 T).
+TEST(YieldStressEq13, TabulatedPowerMatchesStdPow) {
+  const auto exponent = static_cast<long double>(0.5811);
+  double max_relative_error = 0.0;
+  for (int i = 0; i <= 400'000; ++i) {
+    const double B = std::exp2(-40.0 + 80.0 * i / 400'000.0 + 1e-9 * (i % 7));
+    const long double reference = std::pow(static_cast<long double>(B), exponent);
+    const double error = static_cast<double>(
+        std::fabs((mrd::model::eq13_field_power(B) - reference) / reference));
+    max_relative_error = std::max(max_relative_error, error);
+  }
+  EXPECT_LT(max_relative_error, 1e-15);
+  std::printf("tabulated |B|^0.5811: max relative error %.2g\n", max_relative_error);
+  EXPECT_EQ(mrd::model::eq13_field_power(0.0), 0.0);
+  EXPECT_EQ(mrd::model::eq13_field_power(1.0), 1.0);
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(mrd::model::eq13_field_power(inf), inf);
+  EXPECT_TRUE(std::isnan(mrd::model::eq13_field_power(std::nan(""))));
+  const double denormal = std::numeric_limits<double>::denorm_min();
+  EXPECT_EQ(mrd::model::eq13_field_power(denormal), std::pow(denormal, 0.5811));
 }
 
 // Geometry: Ap = 5.89e-3 m^2, L = 0.06 m, hd = 1.5 mm, D = 0.1 m, eta = 2.25 Pa s.

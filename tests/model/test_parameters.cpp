@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <string>
+
 #include "model/current_schedule.hpp"
 #include "model/damper_model.hpp"
 

@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
 namespace {
 
 using mrd::tools::run_table4;
@@ -27,6 +31,25 @@ TEST(Table4Run, BipolarDriverRemovesNearlyAllTrackingError) {
   options.controller.limits.min_current = -1.5;
   const auto on = run_table4(options);
   EXPECT_LT(on.B_tracking.rms, 0.25 * off.B_tracking.rms);  // what is left is the slew limit
+}
+
+// The real-time default evaluates the Langevin function from a table (docs/MODEL.md). Over a
+// whole compensated Table 4 run, plant and controller, it must change B by far less than the
+// integrator's 5e-7 T.
+TEST(Table4Run, TabulatedLangevinLeavesTheRunUnchanged) {
+  Table4RunOptions options;
+  const auto tabulated = run_table4(options);
+  options.plant.integration.langevin = mrd::model::LangevinEvaluation::kExact;
+  options.controller.damper.integration.langevin = mrd::model::LangevinEvaluation::kExact;
+  const auto exact = run_table4(options);
+  ASSERT_EQ(tabulated.trace.size(), exact.trace.size());
+  double max_B_difference = 0.0;
+  for (std::size_t i = 0; i < exact.trace.size(); ++i) {
+    max_B_difference =
+        std::max(max_B_difference, std::fabs(tabulated.trace[i].B - exact.trace[i].B));
+  }
+  EXPECT_LT(max_B_difference, 1e-11);  // [T]
+  std::printf("Table 4 run, tabulated vs exact Langevin: max |dB| = %.2g T\n", max_B_difference);
 }
 
 TEST(Table4Run, ObserverForceErrorIsSmallAgainstThePlant) {
