@@ -16,8 +16,9 @@ const char* CsvTelemetryWriter::header() {
          "enable\n";
 }
 
-int CsvTelemetryWriter::format(const TelemetryRecord& r, char* buf, std::size_t size) {
-  const double t = std::chrono::duration<double>(r.time).count();
+int CsvTelemetryWriter::format(const TelemetryRecord& r, hal::Timestamp start, char* buf,
+                               std::size_t size) {
+  const double t = std::chrono::duration<double>(r.time - start).count();
   const auto sample = to_string(static_cast<SampleCheck>(r.sample));
   const auto state = to_string(static_cast<SupervisorState>(r.state));
   const auto trigger = to_string(static_cast<Trigger>(r.trigger));
@@ -47,7 +48,8 @@ hal::StartResult CsvTelemetryWriter::start(const std::string& path) {
 void CsvTelemetryWriter::drain_once() {
   char line[512];
   const std::size_t n = queue_.drain([&](const TelemetryRecord& r) {
-    const int len = format(r, line, sizeof line);
+    if (!start_) start_ = r.time;
+    const int len = format(r, *start_, line, sizeof line);
     if (len > 0) std::fwrite(line, 1, static_cast<std::size_t>(len), file_);
   });
   if (n > 0) {

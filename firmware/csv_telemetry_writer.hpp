@@ -3,9 +3,11 @@
 #include <atomic>
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include "firmware/telemetry_queue.hpp"
+#include "hal/clock.hpp"
 #include "hal/io_thread.hpp"
 #include "hal/status.hpp"
 
@@ -28,8 +30,8 @@ class CsvTelemetryWriter {
 
   [[nodiscard]] std::uint64_t written() const { return written_.load(std::memory_order_relaxed); }
   static const char* header();
-  // One CSV line (with '\n') into buf; returns the length. Public for tests.
-  static int format(const TelemetryRecord& r, char* buf, std::size_t size);
+  // One CSV line (with '\n') into buf, time counted from `start`; returns the length.
+  static int format(const TelemetryRecord& r, hal::Timestamp start, char* buf, std::size_t size);
 
  private:
   void drain_once();
@@ -37,6 +39,7 @@ class CsvTelemetryWriter {
   TelemetryQueue& queue_;
   double flush_period_s_;
   std::FILE* file_ = nullptr;
+  std::optional<hal::Timestamp> start_;  // the first record's time: the CSV's t = 0
   std::atomic<std::uint64_t> written_{0};
   hal::IoThread thread_;
 };

@@ -60,6 +60,14 @@ TEST(ConfigDefault, StatesEveryKeyTheLoaderKnows) {
   EXPECT_GT(c.keys.size(), 100u);
 }
 
+TEST(ConfigDefault, EveryKeyIsDocumentedInFirmwareMd) {
+  const std::string doc = read(MRD_SOURCE_DIR "/docs/FIRMWARE.md");
+  const LoadedConfig c = mrd::firmware::load_default_config();
+  for (const auto& key : c.keys) {
+    EXPECT_NE(doc.find("`" + key + "`"), std::string::npos) << key << " is not in docs/FIRMWARE.md";
+  }
+}
+
 TEST(ConfigDefault, StatedValuesEqualTheCompiledDefaults) {
   // An empty file takes every default from the structs; the default file states them.
   const LoadedConfig empty = load_config_text("", "empty.toml");
