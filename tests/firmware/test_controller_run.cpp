@@ -13,9 +13,12 @@
 
 namespace {
 
-std::string run(mrd::firmware::ControllerConfig config, double seconds) {
+// Runs the controller and returns what it printed.
+std::string run(const mrd::firmware::ControllerConfig& config, double seconds,
+                bool stop_at_once = false) {
   std::FILE* out = std::tmpfile();
   mrd::firmware::ControllerSignals signals;
+  signals.stop.store(stop_at_once);  // as if SIGTERM arrived before the first cycle
   mrd::firmware::RunOptions options;
   options.duration_s = seconds;
   EXPECT_EQ(mrd::firmware::run_controller(config, options, signals, out), 0);
@@ -56,16 +59,7 @@ TEST(ControllerRun, DefaultConfigRunsTheSimulatedRigAndStopsInSafeWithTelemetryA
 TEST(ControllerRun, StopSignalFlagEndsTheRunWithTheFailSafeCycle) {
   auto config = mrd::firmware::load_default_config().config;
   config.realtime.priority = 0;
-  std::FILE* out = std::tmpfile();
-  mrd::firmware::ControllerSignals signals;
-  signals.stop.store(true);  // as if SIGTERM arrived at once
-  mrd::firmware::RunOptions options;  // no duration: runs until the flag
-  EXPECT_EQ(mrd::firmware::run_controller(config, options, signals, out), 0);
-  std::rewind(out);
-  std::string text;
-  char buf[4096];
-  while (std::fgets(buf, sizeof buf, out) != nullptr) text += buf;
-  std::fclose(out);
+  const std::string text = run(config, 0.0, true);  // no duration: runs until the flag
   EXPECT_NE(text.find("INIT -> SAFE (shutdown): 1"), std::string::npos) << text;
   EXPECT_NE(text.find("enable off"), std::string::npos) << text;
 }
