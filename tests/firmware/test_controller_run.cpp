@@ -41,7 +41,8 @@ TEST(ControllerRun, DefaultConfigRunsTheSimulatedRigAndStopsInSafeWithTelemetryA
   const std::string text = run(config, 0.5);
 
   EXPECT_NE(text.find("simulated rig"), std::string::npos) << text;
-  EXPECT_NE(text.find("INIT -> RUN (good_periods): 1"), std::string::npos) << text;
+  // Whether and when INIT -> RUN happens depends on the machine's load (overruns reset the
+  // count of good periods); the supervisor's timing is tested deterministically elsewhere.
   EXPECT_NE(text.find("-> SAFE (shutdown): 1"), std::string::npos) << text;
   EXPECT_NE(text.find("final setpoint 0.000 A (fail-safe 0.000 A), enable off"), std::string::npos) << text;
   EXPECT_NE(text.find("cycles 500,"), std::string::npos) << text;
@@ -59,6 +60,7 @@ TEST(ControllerRun, DefaultConfigRunsTheSimulatedRigAndStopsInSafeWithTelemetryA
 TEST(ControllerRun, StopSignalFlagEndsTheRunWithTheFailSafeCycle) {
   auto config = mrd::firmware::load_default_config().config;
   config.realtime.priority = 0;
+  config.safety.overrun_limit = 1000000;  // as above: SAFE only by the stop
   const std::string text = run(config, 0.0, true);  // no duration: runs until the flag
   EXPECT_NE(text.find("INIT -> SAFE (shutdown): 1"), std::string::npos) << text;
   EXPECT_NE(text.find("enable off"), std::string::npos) << text;

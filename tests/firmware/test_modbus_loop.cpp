@@ -22,7 +22,9 @@ TEST(ModbusLoop, ConfiguredFromTomlTheLoopReadsTheLvdtWritesTheSetpointAndEndsAt
 
   const auto loaded = mrd::firmware::load_config_text(
       "[backends]\nlvdt = \"modbus\"\ndriver = \"modbus\"\n[modbus.tcp]\nport = " +
-          std::to_string(server.port()) + "\n[safety]\nrecovery_periods = 20\noverrun_limit = 1000000\n",
+          std::to_string(server.port()) + "\n[safety]\nrecovery_periods = 20\n"
+          // This test is about the bus, not about timing on a loaded machine.
+          "overrun_limit = 1000000\nstale_periods = 100\nwrite_failure_periods = 100\n",
       "modbus.toml");
   ASSERT_TRUE(loaded.ok()) << loaded.report();
 
@@ -43,9 +45,9 @@ TEST(ModbusLoop, ConfiguredFromTomlTheLoopReadsTheLvdtWritesTheSetpointAndEndsAt
         loop.step(release);
         if (loop.state() == mrd::firmware::SupervisorState::kRun && ++run_cycles >= 200) stop = true;
       },
-      stop, 5000, stats);
+      stop, 20000, stats);
 
-  EXPECT_GE(run_cycles, 200u) << "never ran 200 cycles in RUN within 5 s";
+  EXPECT_GE(run_cycles, 200u) << "never ran 200 cycles in RUN within 20 s";
   EXPECT_DOUBLE_EQ(loop.last().displacement, 0.015);
   EXPECT_EQ(loop.last().scheduled_current, 0.4);
   // The compensated command of the last cycle reaches the device's holding register, in mA.
