@@ -38,6 +38,13 @@ class ControlLaw {
   ControlOutput step(double displacement, double coil_current);
   ControlOutput step(double displacement, double velocity, double coil_current);
 
+  // While the supervisor drives the coil itself (INIT, SAFE), restarts the slew limiters from
+  // the current it drives, so the command continues from there when control resumes.
+  void hold(double current) {
+    compensator_.reset(current);
+    uncompensated_.reset(current);
+  }
+
   [[nodiscard]] const model::Observer& observer() const { return observer_; }
 
  private:

@@ -1,0 +1,69 @@
+#pragma once
+
+#include <cstdint>
+
+#include "firmware/control_law.hpp"
+#include "firmware/hal_devices.hpp"
+#include "firmware/sample_check.hpp"
+#include "firmware/supervisor.hpp"
+#include "firmware/telemetry_queue.hpp"
+#include "firmware/telemetry_record.hpp"
+#include "hal/clock.hpp"
+#include "hal/status.hpp"
+
+namespace mrd::firmware {
+
+// One control cycle, in the order of issue 3:
+//   1. take the newest sample;            5. let the supervisor decide;
+//   2. check freshness and range;         6. write the current setpoint and the lines;
+//   3. apply the Table 4 schedule;        7. push a telemetry record into the lock-free ring.
+//   4. run the observer and compensator;
+// step(now) is the whole cycle. `now` is the cycle's release time: the real-time runner passes
+// its deadline, tests pass a ManualClock's time. Periods skipped between two calls are the
+// overruns the supervisor judges. No heap, no locks, no exceptions, no blocking I/O.
+class ControlLoop {
+ public:
+  // The period is the control law's sample period. `telemetry` may be null (no telemetry).
+  ControlLoop(const ControlLawConfig& law, const SupervisorConfig& safety, HalDevices devices,
+              TelemetryQueue* telemetry = nullptr, int telemetry_decimation = 1);
+
+  const TelemetryRecord& step(hal::Timestamp now);
+  // The next cycle goes to SAFE (fail-safe current, enable as configured) and stays there.
+  void request_shutdown() { supervisor_.request_shutdown(); }
+
+  [[nodiscard]] const Supervisor& supervisor() const { return supervisor_; }
+  [[nodiscard]] SupervisorState state() const { return supervisor_.state(); }
+  [[nodiscard]] const TelemetryRecord& last() const { return record_; }
+  [[nodiscard]] std::uint64_t cycles() const { return cycles_; }
+  [[nodiscard]] std::uint64_t overruns() const { return overruns_; }
+  [[nodiscard]] std::uint64_t failed_setpoint_writes() const { return failed_setpoint_writes_; }
+  [[nodiscard]] std::uint64_t failed_line_writes() const { return failed_line_writes_; }
+  [[nodiscard]] hal::Timestamp period() const { return period_; }
+
+ private:
+  std::uint32_t skipped_periods(hal::Timestamp now) const;
+  void write_outputs(const SupervisorDecision& d, double setpoint);
+
+  ControlLaw law_;
+  Supervisor supervisor_;
+  SampleChecker checker_;
+  HalDevices hal_;
+  TelemetryQueue* telemetry_;
+  std::uint64_t decimation_;
+  hal::Timestamp period_;
+  double fail_safe_current_;
+  double current_tolerance_;
+
+  TelemetryRecord record_;
+  std::uint64_t cycles_ = 0;
+  std::uint64_t overruns_ = 0;
+  std::uint64_t failed_setpoint_writes_ = 0;
+  std::uint64_t failed_line_writes_ = 0;
+  hal::Timestamp last_release_{};
+  double last_setpoint_ = 0.0;  // the last setpoint the driver accepted [A]
+  bool write_failed_ = false;   // the previous period's write, judged this period
+  bool enable_ = false;
+  bool enable_written_ = false;
+};
+
+}  // namespace mrd::firmware

@@ -1,0 +1,127 @@
+#include "firmware/controller.hpp"
+
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <thread>
+
+#include "firmware/control_loop.hpp"
+#include "firmware/csv_telemetry_writer.hpp"
+#include "firmware/hal_set.hpp"
+#include "firmware/loop_report.hpp"
+#include "firmware/rt_runner.hpp"
+#include "firmware/rt_setup.hpp"
+#include "firmware/simulated_rig.hpp"
+
+namespace mrd::firmware {
+
+namespace {
+
+void print_stats(std::FILE* out, const LoopStatistics& stats, const ControlLoop& loop,
+                 const HalSet& hal, bool histograms) {
+  std::string text = "--- mrd-controller statistics ---\n" + format_loop_statistics(stats);
+  if (histograms) {
+    text += format_histogram("wake-up latency", stats.wake_latency);
+    text += format_histogram("execution time", stats.execution);
+  }
+  text += "supervisor: " + std::string(to_string(loop.state())) + ", transitions:\n";
+  text += format_transitions(loop.supervisor().transitions());
+  text += hal.counters();
+  std::fputs(text.c_str(), out);
+  std::fflush(out);
+}
+
+}  // namespace
+
+int run_controller(const ControllerConfig& config, const RunOptions& options,
+                   ControllerSignals& signals, std::FILE* out, const sigset_t* unblock) {
+  RtSetupResult rt;
+  lock_memory(config.realtime, rt);
+
+  const hal::MonotonicClock clock;
+  HalSet hal(config, clock);
+  if (const auto started = hal.start(); !started.ok) {
+    std::fprintf(stderr, "mrd-controller: cannot start the back ends:\n%s", started.error.c_str());
+    return 1;
+  }
+
+  std::unique_ptr<TelemetryQueue> queue;
+  std::unique_ptr<CsvTelemetryWriter> writer;
+  if (config.telemetry.enabled()) {
+    queue = std::make_unique<TelemetryQueue>(static_cast<std::size_t>(config.telemetry.ring_size));
+    writer = std::make_unique<CsvTelemetryWriter>(*queue, config.telemetry.flush_period);
+    if (const auto started = writer->start(config.telemetry.path); !started.ok) {
+      std::fprintf(stderr, "mrd-controller: %s\n", started.error.c_str());
+      return 1;
+    }
+  }
+
+  ControlLoop loop(config.law, config.safety, hal.devices(), queue.get(), config.telemetry.decimation);
+  std::optional<SimulatedRig> rig;
+  if (config.backends.lvdt == DeviceBackend::kMock) rig.emplace(config.simulation, config.law.damper, *hal.mock());
+  hal::mock::MockHal* mock = hal.mock();
+
+  const auto cycle = [&](hal::Timestamp release) {
+    if (rig) {
+      rig->advance(release);
+    } else if (mock != nullptr) {
+      mock->clock.set(release);
+    }
+    loop.step(release);
+  };
+
+  std::fprintf(out, "mrd-controller: %.0f Hz, lvdt=%s driver=%s lines=%s%s%s\n", config.rate,
+               to_string(config.backends.lvdt).data(), to_string(config.backends.driver).data(),
+               to_string(config.backends.lines).data(), rig ? ", simulated rig" : "",
+               config.telemetry.enabled() ? (", telemetry " + config.telemetry.path).c_str() : "");
+
+  LoopStatistics stats;
+  std::atomic<bool> stop{false};
+  std::atomic<bool> setup_done{false};
+  std::atomic<bool> finished{false};
+  const RealTimeRunner runner(config.period());
+  const auto max_cycles = static_cast<std::uint64_t>(options.duration_s * config.rate + 0.5);
+
+  std::thread rt_thread([&] {
+    make_current_thread_realtime(config.realtime, rt);
+    setup_done.store(true);
+    RealTimeRunner r = runner;
+    const hal::Timestamp next = r.run(cycle, stop, max_cycles, stats);
+    // Stop: one more cycle, in SAFE, so the driver holds the fail-safe current before exit.
+    loop.request_shutdown();
+    cycle(std::max(next, clock.now()));
+    finished.store(true);
+  });
+
+  if (unblock != nullptr) pthread_sigmask(SIG_UNBLOCK, unblock, nullptr);
+  while (!setup_done.load()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  std::fprintf(out, "real-time: memory %s, scheduling %s, cpu %s\n",
+               rt.memory_locked ? "locked" : "NOT locked",
+               rt.fifo ? ("SCHED_FIFO " + std::to_string(config.realtime.priority)).c_str()
+                       : "SCHED_OTHER",
+               rt.pinned ? std::to_string(config.realtime.cpu).c_str() : "any");
+  for (const auto& w : rt.warnings) std::fprintf(stderr, "mrd-controller: warning: %s\n", w.c_str());
+  std::fflush(out);
+
+  while (!finished.load()) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    if (signals.stop.load()) stop.store(true);
+    if (signals.print_stats.exchange(false)) print_stats(out, stats, loop, hal, options.bench);
+  }
+  rt_thread.join();
+  if (writer) writer->stop();
+  hal.stop();
+
+  print_stats(out, stats, loop, hal, options.bench);
+  std::fprintf(out, "final setpoint %.3f A (fail-safe %.3f A), enable %s\n", loop.last().setpoint,
+               config.safety.fail_safe_current, loop.last().enable ? "on" : "off");
+  if (queue) {
+    std::fprintf(out, "telemetry: %llu records offered, %llu written, %llu dropped -> %s\n",
+                 static_cast<unsigned long long>(queue->offered()),
+                 static_cast<unsigned long long>(writer->written()),
+                 static_cast<unsigned long long>(queue->dropped()), config.telemetry.path.c_str());
+  }
+  return 0;
+}
+
+}  // namespace mrd::firmware

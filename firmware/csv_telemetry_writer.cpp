@@ -1,0 +1,70 @@
+#include "firmware/csv_telemetry_writer.hpp"
+
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+
+#include "firmware/sample_check.hpp"
+#include "firmware/supervisor.hpp"
+
+namespace mrd::firmware {
+
+const char* CsvTelemetryWriter::header() {
+  return "cycle,time_s,displacement_mm,sample,measured_current_A,scheduled_current_A,"
+         "law_current_A,setpoint_A,target_B_T,B_T,velocity_mm_s,force_kN,state,trigger,overruns,"
+         "enable\n";
+}
+
+int CsvTelemetryWriter::format(const TelemetryRecord& r, hal::Timestamp start, char* buf,
+                               std::size_t size) {
+  const double t = std::chrono::duration<double>(r.time - start).count();
+  const auto sample = to_string(static_cast<SampleCheck>(r.sample));
+  const auto state = to_string(static_cast<SupervisorState>(r.state));
+  const auto trigger = to_string(static_cast<Trigger>(r.trigger));
+  return std::snprintf(buf, size, "%llu,%.6f,%.4f,%.*s,%.5g,%.4g,%.5g,%.5g,%.5g,%.5g,%.5g,%.5g,%.*s,%.*s,%u,%d\n",
+                       static_cast<unsigned long long>(r.cycle), t, r.displacement * 1e3,
+                       static_cast<int>(sample.size()), sample.data(), r.measured_current,
+                       r.scheduled_current, r.law_current, r.setpoint, r.target_B, r.B,
+                       r.velocity * 1e3, r.force * 1e-3, static_cast<int>(state.size()),
+                       state.data(), static_cast<int>(trigger.size()), trigger.data(), r.overruns,
+                       r.enable ? 1 : 0);
+}
+
+hal::StartResult CsvTelemetryWriter::start(const std::string& path) {
+  file_ = std::fopen(path.c_str(), "w");
+  if (file_ == nullptr) {
+    return hal::StartResult::failure("cannot open telemetry file " + path + ": " + std::strerror(errno));
+  }
+  std::fputs(header(), file_);
+  const auto pause = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+      std::chrono::duration<double>(flush_period_s_));
+  thread_.start("mrd-telemetry", [this, pause] {
+    while (thread_.wait_for(pause)) drain_once();
+  });
+  return hal::StartResult::success();
+}
+
+void CsvTelemetryWriter::drain_once() {
+  char line[512];
+  const std::size_t n = queue_.drain([&](const TelemetryRecord& r) {
+    if (!start_) start_ = r.time;
+    const int len = format(r, *start_, line, sizeof line);
+    if (len > 0) std::fwrite(line, 1, static_cast<std::size_t>(len), file_);
+  });
+  if (n > 0) {
+    std::fflush(file_);
+    written_.fetch_add(n, std::memory_order_relaxed);
+  }
+}
+
+void CsvTelemetryWriter::stop() {
+  thread_.stop();
+  if (file_ != nullptr) {
+    drain_once();  // the loop has stopped: whatever is left is the tail of the run
+    std::fclose(file_);
+    file_ = nullptr;
+  }
+}
+
+}  // namespace mrd::firmware

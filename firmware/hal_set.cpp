@@ -1,0 +1,101 @@
+#include "firmware/hal_set.hpp"
+
+namespace mrd::firmware {
+
+// With a CAN driver the command frame carries DriverEnable and the feedback frame DriverFault:
+// the lines back end is mirrored into and combined with them.
+class HalSet::CanEnableLines final : public hal::DigitalLines {
+ public:
+  CanEnableLines(hal::DigitalLines& lines, hal::can::SocketCanBackend& can) : lines_(lines), can_(can) {}
+  hal::IoStatus set_enable(bool enabled) override {
+    can_.set_command_enable(enabled);
+    return lines_.set_enable(enabled);
+  }
+  std::optional<bool> driver_fault() override {
+    const std::optional<bool> line = lines_.driver_fault();
+    if (line && !*line && can_.feedback_driver_fault().value_or(false)) return true;
+    return line;
+  }
+
+ protected:
+  hal::IoStatus write_heartbeat(bool high) override { return lines_.set_heartbeat(high); }
+
+ private:
+  hal::DigitalLines& lines_;
+  hal::can::SocketCanBackend& can_;
+};
+
+namespace {
+
+template <typename Device>
+Device* choose(DeviceBackend which, Device* mock, Device* modbus, Device* can) {
+  switch (which) {
+    case DeviceBackend::kMock: return mock;
+    case DeviceBackend::kModbus: return modbus;
+    case DeviceBackend::kCan: return can;
+  }
+  return nullptr;
+}
+
+template <typename Event, typename Snapshot>
+void append_counters(std::string& out, std::string_view name, const Snapshot& counters) {
+  out += name;
+  out += ':';
+  for (std::size_t i = 0; i < static_cast<std::size_t>(Event::kCount); ++i) {
+    const auto e = static_cast<Event>(i);
+    out += ' ';
+    out += to_string(e);
+    out += '=';
+    out += std::to_string(counters[e]);
+  }
+  out += '\n';
+}
+
+}  // namespace
+
+HalSet::HalSet(const ControllerConfig& config, const hal::Clock& clock) {
+  const auto& b = config.backends;
+  if (b.any_mock()) mock_ = std::make_unique<hal::mock::MockHal>();
+  if (b.uses(DeviceBackend::kModbus)) {
+    modbus_ = std::make_unique<hal::modbus::ModbusBackend>(config.modbus, clock);
+  }
+  if (b.uses(DeviceBackend::kCan)) can_ = std::make_unique<hal::can::SocketCanBackend>(config.can, clock);
+  if (b.lines == LinesBackend::kGpio) gpio_ = std::make_unique<hal::gpio::GpiodLines>(config.gpio);
+
+  lvdt_ = choose<hal::DisplacementSource>(b.lvdt, mock_ ? &mock_->lvdt : nullptr, modbus_.get(),
+                                          can_.get());
+  driver_ = choose<hal::CurrentDriver>(b.driver, mock_ ? &mock_->driver : nullptr, modbus_.get(),
+                                       can_.get());
+  lines_ = gpio_ ? static_cast<hal::DigitalLines*>(gpio_.get()) : &mock_->lines;
+  if (b.driver == DeviceBackend::kCan) {
+    can_enable_ = std::make_unique<CanEnableLines>(*lines_, *can_);
+    lines_ = can_enable_.get();
+  }
+}
+
+HalSet::~HalSet() { stop(); }
+
+hal::StartResult HalSet::start() {
+  std::string errors;
+  const auto collect = [&errors](std::string_view who, const hal::StartResult& r) {
+    if (!r.ok) errors += std::string(who) + ": " + r.error + (r.error.ends_with('\n') ? "" : "\n");
+  };
+  if (modbus_) collect("modbus", modbus_->start());
+  if (can_) collect("can", can_->start());
+  if (gpio_) collect("gpio", gpio_->start());
+  return errors.empty() ? hal::StartResult::success() : hal::StartResult::failure(errors);
+}
+
+void HalSet::stop() {
+  if (modbus_) modbus_->stop();
+  if (can_) can_->stop();
+}
+
+std::string HalSet::counters() const {
+  std::string out;
+  if (modbus_) append_counters<hal::modbus::ModbusEvent>(out, "modbus", modbus_->counters());
+  if (can_) append_counters<hal::can::CanEvent>(out, "can", can_->counters());
+  return out;
+}
+
+}  // namespace mrd::firmware

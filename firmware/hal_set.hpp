@@ -1,0 +1,49 @@
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "firmware/controller_config.hpp"
+#include "firmware/hal_devices.hpp"
+#include "hal/can/socketcan_backend.hpp"
+#include "hal/clock.hpp"
+#include "hal/gpio/gpiod_lines.hpp"
+#include "hal/mock/mock_hal.hpp"
+#include "hal/modbus/modbus_backend.hpp"
+#include "hal/status.hpp"
+
+namespace mrd::firmware {
+
+// The back ends the config selects, built and owned in one place. A device on the mock picks
+// the MockHal, whose manual clock the caller sets each cycle; the bus back ends timestamp on
+// `clock`, which must be the loop's clock (CLOCK_MONOTONIC in the controller).
+class HalSet {
+ public:
+  HalSet(const ControllerConfig& config, const hal::Clock& clock);
+  ~HalSet();
+  HalSet(const HalSet&) = delete;
+  HalSet& operator=(const HalSet&) = delete;
+
+  // Starts the bus back ends and the GPIO lines; the error names each one that failed.
+  [[nodiscard]] hal::StartResult start();
+  void stop();
+
+  [[nodiscard]] HalDevices devices() { return {*lvdt_, *driver_, *lines_}; }
+  [[nodiscard]] hal::mock::MockHal* mock() { return mock_.get(); }
+  // One line per bus back end with its counters, for the statistics printout.
+  [[nodiscard]] std::string counters() const;
+
+ private:
+  class CanEnableLines;
+
+  std::unique_ptr<hal::mock::MockHal> mock_;
+  std::unique_ptr<hal::modbus::ModbusBackend> modbus_;
+  std::unique_ptr<hal::can::SocketCanBackend> can_;
+  std::unique_ptr<hal::gpio::GpiodLines> gpio_;
+  std::unique_ptr<hal::DigitalLines> can_enable_;
+  hal::DisplacementSource* lvdt_ = nullptr;
+  hal::CurrentDriver* driver_ = nullptr;
+  hal::DigitalLines* lines_ = nullptr;
+};
+
+}  // namespace mrd::firmware

@@ -1,0 +1,20 @@
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "hal/config_check.hpp"
+
+namespace mrd::firmware {
+
+struct TelemetryConfig {
+  std::string path;          // CSV file; empty: no telemetry
+  int decimation = 1;        // one record every N cycles
+  int ring_size = 8192;      // records the ring holds between two writer passes
+  double flush_period = 0.05;  // [s] how often the writer drains the ring
+
+  [[nodiscard]] bool enabled() const { return !path.empty(); }
+  [[nodiscard]] hal::ConfigReport validate() const;  // field paths relative to [telemetry]
+};
+
+}  // namespace mrd::firmware
