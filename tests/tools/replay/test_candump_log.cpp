@@ -1,10 +1,11 @@
+#include "tools/replay/candump_log.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 
-#include "tools/csv.hpp"
-#include "tools/replay/candump_log.hpp"
+#include "tests/tools/replay/input_error_of.hpp"
 #include "tools/replay/run_reader.hpp"
 #include "tools/replay/simulated_run.hpp"
 
@@ -12,7 +13,6 @@ namespace {
 
 namespace can = mrd::hal::can;
 using mrd::tools::candump_line;
-using mrd::tools::InputError;
 using mrd::tools::parse_candump;
 using mrd::tools::RunReadOptions;
 
@@ -45,12 +45,8 @@ class LogWriter {
 };
 
 std::string error_of(const std::string& text, const RunReadOptions& options = {}) {
-  try {
-    (void)parse_candump(text, "bus.log", options);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return mrd::tools::testing::input_error_of(
+      [&] { (void)parse_candump(text, "bus.log", options); });
 }
 
 TEST(CandumpLog, LineFormatIsCandumps) {

@@ -1,18 +1,18 @@
+#include "tools/replay/replay.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 
 #include "firmware/config_loader.hpp"
-#include "tools/csv.hpp"
-#include "tools/replay/replay.hpp"
+#include "tests/tools/replay/input_error_of.hpp"
 #include "tools/replay/run_csv.hpp"
 #include "tools/replay/simulated_run.hpp"
 
 namespace {
 
 using mrd::tools::force_error;
-using mrd::tools::InputError;
 using mrd::tools::RecordedRun;
 using mrd::tools::replay;
 using mrd::tools::ReplayOptions;
@@ -25,12 +25,7 @@ ReplayOptions default_options() {
 }
 
 std::string error_of(const RecordedRun& run, const ReplayOptions& options) {
-  try {
-    (void)replay(run, options);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return mrd::tools::testing::input_error_of([&] { (void)replay(run, options); });
 }
 
 TEST(ForceError, DefinitionsOnAHandExample) {

@@ -1,24 +1,19 @@
+#include "tools/replay/run_columns.hpp"
+
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "tools/csv.hpp"
-#include "tools/replay/run_columns.hpp"
+#include "tests/tools/replay/input_error_of.hpp"
 
 namespace {
 
 using mrd::tools::column_unit;
-using mrd::tools::InputError;
 using mrd::tools::parse_column_mapping;
 using mrd::tools::RunQuantity;
 
 std::string mapping_error(const std::string& text) {
-  try {
-    (void)parse_column_mapping(text);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return mrd::tools::testing::input_error_of([&] { (void)parse_column_mapping(text); });
 }
 
 TEST(RunColumns, UnitNamesConvertToSI) {

@@ -1,15 +1,15 @@
+#include "tools/replay/run_csv.hpp"
+
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "tools/csv.hpp"
-#include "tools/replay/run_csv.hpp"
+#include "tests/tools/replay/input_error_of.hpp"
 #include "tools/replay/run_reader.hpp"
 
 namespace {
 
 using mrd::tools::CoilSignal;
-using mrd::tools::InputError;
 using mrd::tools::parse_column_mapping;
 using mrd::tools::parse_run_csv;
 using mrd::tools::RunReadOptions;
@@ -17,12 +17,7 @@ using mrd::tools::RunReadOptions;
 // The error message, or "" when the text parses.
 std::string error_of(const std::string& text, const RunReadOptions& options = {},
                      const std::string& name = "run.csv") {
-  try {
-    (void)parse_run_csv(text, name, options);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return mrd::tools::testing::input_error_of([&] { (void)parse_run_csv(text, name, options); });
 }
 
 RunReadOptions mapped(const char* columns) {
