@@ -1,5 +1,6 @@
 #include "tools/replay/run_csv.hpp"
 
+#include <cmath>
 #include <cstdio>
 
 #include "tools/csv.hpp"
@@ -132,8 +133,9 @@ class RunCsvParser {
     if (!time && !options_.sample_rate) {
       throw fail("", "no time column: expected time_s or time_ms (or give --sample-rate)");
     }
-    if (options_.sample_rate && !(*options_.sample_rate > 0.0)) {
-      throw fail("", "--sample-rate must be > 0");
+    if (options_.sample_rate &&
+        !(*options_.sample_rate > 0.0 && std::isfinite(*options_.sample_rate))) {
+      throw fail("", "--sample-rate must be a finite number > 0");
     }
     if (!find(RunQuantity::kDisplacement)) {
       throw fail(

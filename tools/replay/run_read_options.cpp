@@ -1,5 +1,6 @@
 #include "tools/replay/run_read_options.hpp"
 
+#include <cmath>
 #include <cstdio>
 
 #include "tools/csv.hpp"
@@ -39,6 +40,7 @@ std::optional<ConstantCurrent> constant_current(const RunReadOptions& options,
     return ConstantCurrent{*amps, text};
   }
   if (options.current) {
+    if (!std::isfinite(*options.current)) throw InputError("--current must be a finite number");
     std::snprintf(text, sizeof text, "--current %.6g A", *options.current);
     return ConstantCurrent{*options.current, text};
   }

@@ -1,10 +1,10 @@
-#include "tools/replay/run_csv.hpp"
-
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <string>
 
 #include "tests/tools/replay/input_error_of.hpp"
+#include "tools/replay/run_csv.hpp"
 #include "tools/replay/run_reader.hpp"
 
 namespace {
@@ -195,6 +195,12 @@ TEST(RunCsvErrors, OptionsThatContradictTheFile) {
   rate.sample_rate = 100.0;
   EXPECT_EQ(error_of(kGood, rate),
             "run.csv:1: column 'time_s': --sample-rate is for files without a time column");
+  rate.sample_rate = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(error_of("displacement_mm,current_A\n1,0\n2,0\n", rate),
+            "run.csv:1: --sample-rate must be a finite number > 0");
+  current.current = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(error_of("time_s,displacement_mm\n0,1\n1,1\n", current),
+            "--current must be a finite number");
   RunReadOptions from_name;
   from_name.current_from_name = true;
   EXPECT_EQ(error_of("time_s,displacement_mm\n0,1\n1,1\n", from_name),
