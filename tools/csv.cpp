@@ -2,6 +2,8 @@
 
 #include <charconv>
 #include <cmath>
+#include <fstream>
+#include <sstream>
 
 namespace mrd::tools {
 
@@ -14,6 +16,29 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 }  // namespace
+
+LineReader::LineReader(std::string_view text) : rest_(text) {
+  if (rest_.starts_with("\xEF\xBB\xBF")) rest_.remove_prefix(3);
+}
+
+std::optional<std::string_view> LineReader::next() {
+  while (!rest_.empty()) {
+    const std::size_t end = rest_.find('\n');
+    const std::string_view line = rest_.substr(0, end);
+    rest_.remove_prefix(end == std::string_view::npos ? rest_.size() : end + 1);
+    ++line_number_;
+    if (!trim(line).empty()) return line;
+  }
+  return std::nullopt;
+}
+
+std::string read_text_file(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw InputError(path + ": cannot open the file");
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
 
 std::vector<std::string_view> split_csv_line(std::string_view line, bool whitespace_separated) {
   std::vector<std::string_view> fields;
@@ -36,6 +61,13 @@ std::vector<std::string_view> split_csv_line(std::string_view line, bool whitesp
   }
   if (fields.size() > 1 && fields.back().empty()) fields.pop_back();
   return fields;
+}
+
+std::string_view unquote(std::string_view field) {
+  if (field.size() >= 2 && field.front() == '"' && field.back() == '"') {
+    field = field.substr(1, field.size() - 2);
+  }
+  return field;
 }
 
 std::optional<double> parse_finite(std::string_view field) {

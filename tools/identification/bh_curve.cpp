@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <sstream>
 
@@ -186,11 +185,7 @@ BHCurve parse_bh_curve(const std::string& text, const std::string& name,
 }
 
 BHCurve read_bh_curve(const std::string& path, const BHCurveOptions& options) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw InputError(path + ": cannot open the file");
-  std::ostringstream text;
-  text << file.rdbuf();
-  return parse_bh_curve(text.str(), path, options);
+  return parse_bh_curve(read_text_file(path), path, options);
 }
 
 }  // namespace mrd::tools

@@ -1,10 +1,10 @@
 #pragma once
 
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "model/jiles_atherton_params.hpp"
+#include "tools/csv.hpp"  // InputError
 
 namespace mrd::tools {
 
@@ -21,12 +21,6 @@ struct BHCurve {
   [[nodiscard]] std::size_t points() const;
   [[nodiscard]] double max_abs_H() const;
   [[nodiscard]] double rms_B() const;  // scale for relative errors and penalties
-};
-
-// A malformed file. what() names the file, the line and the column.
-class InputError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
 };
 
 struct BHCurveOptions {

@@ -1,0 +1,149 @@
+#include "tools/replay/replay.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "firmware/config_loader.hpp"
+#include "tests/tools/replay/input_error_of.hpp"
+#include "tools/replay/run_csv.hpp"
+#include "tools/replay/simulated_run.hpp"
+
+namespace {
+
+using mrd::tools::force_error;
+using mrd::tools::RecordedRun;
+using mrd::tools::replay;
+using mrd::tools::ReplayOptions;
+using mrd::tools::simulate_run;
+
+ReplayOptions default_options() {
+  ReplayOptions o;
+  o.law = mrd::firmware::load_default_config().config.law;
+  return o;
+}
+
+std::string error_of(const RecordedRun& run, const ReplayOptions& options) {
+  return mrd::tools::testing::input_error_of([&] { (void)replay(run, options); });
+}
+
+TEST(ForceError, DefinitionsOnAHandExample) {
+  const std::vector<double> measured{0.0, 10.0, 20.0};
+  const std::vector<double> predicted{1.0, 10.0, 17.0};  // residuals -1, 0, 3
+  const auto e = force_error(measured, predicted);
+  EXPECT_EQ(e.samples, 3u);
+  EXPECT_DOUBLE_EQ(e.rms, std::sqrt(10.0 / 3.0));
+  EXPECT_DOUBLE_EQ(e.max, 3.0);
+  EXPECT_DOUBLE_EQ(e.mean, 2.0 / 3.0);
+  EXPECT_DOUBLE_EQ(e.measured_range, 20.0);
+  EXPECT_DOUBLE_EQ(e.nrmse, std::sqrt(10.0 / 3.0) / 20.0);
+  EXPECT_TRUE(std::isnan(force_error(std::vector{5.0, 5.0}, std::vector{4.0, 6.0}).nrmse));
+}
+
+// The rig's plant runs the same physics as the observer, so a replay with the same model and
+// the plant's velocity must reproduce its force: whatever error the replay itself adds shows.
+TEST(Replay, SimulatedRunFromTheSameModelGivesZeroForceError) {
+  auto options = default_options();
+  const RecordedRun run = simulate_run(options.law.damper);
+  options.use_recorded_velocity = true;
+  const auto result = replay(run, options);
+  ASSERT_TRUE(result.force);
+  EXPECT_GT(result.force->measured_range, 1e4);  // a 50 kN class damper through minor loops
+  EXPECT_LT(result.force->rms, 1e-9 * result.force->measured_range);
+  EXPECT_LT(result.force->max, 1e-9 * result.force->measured_range);
+  for (std::size_t i = 0; i < run.size(); ++i) ASSERT_NEAR(result.trace.B[i], run.B[i], 1e-12);
+}
+
+TEST(Replay, AnotherModelGivesAnErrorTheTestWouldSee) {
+  auto options = default_options();
+  const RecordedRun run = simulate_run(options.law.damper);
+  options.use_recorded_velocity = true;
+  options.law.damper.fluid.viscosity *= 1.1;
+  const auto result = replay(run, options);
+  EXPECT_GT(result.force->nrmse, 1e-3);
+}
+
+TEST(Replay, SimulatedRunThroughTheOwnCsvFormatStillMatches) {
+  auto options = default_options();
+  const RecordedRun simulated = simulate_run(options.law.damper);
+  const RecordedRun run =
+      mrd::tools::parse_run_csv(mrd::tools::format_run_csv(simulated), "sim.csv");
+  options.use_recorded_velocity = true;
+  const auto result = replay(run, options);
+  EXPECT_LT(result.force->nrmse, 1e-8);
+}
+
+// Without the velocity the observer filters the LVDT as the controller does; the filter's
+// error at reversals (docs/MODEL.md) is what remains.
+TEST(Replay, ControllersVelocityFilterAddsOnlyItsOwnError) {
+  const auto options = default_options();
+  const auto result = replay(simulate_run(options.law.damper), options);
+  EXPECT_LT(result.force->nrmse, 0.02);
+  EXPECT_GT(result.force->nrmse, 1e-6);  // it is a filter, not the truth
+}
+
+TEST(Replay, IsDeterministic) {
+  const auto options = default_options();
+  mrd::tools::SimulatedRunOptions noisy;
+  noisy.lvdt_noise = 20e-6;
+  const RecordedRun run = simulate_run(options.law.damper, noisy);
+  const auto a = replay(run, options);
+  const auto b = replay(run, options);
+  EXPECT_EQ(a.trace.predicted_force, b.trace.predicted_force);
+  EXPECT_EQ(a.trace.command_current, b.trace.command_current);
+  EXPECT_EQ(a.trace.velocity, b.trace.velocity);
+  EXPECT_EQ(a.force->rms, b.force->rms);
+}
+
+TEST(Replay, CommandIsTheControllersOwnClosedLoopWithinItsLimits) {
+  const auto options = default_options();
+  const RecordedRun run = simulate_run(options.law.damper);
+  const auto result = replay(run, options);
+  const auto& limits = options.law.limits;
+  double highest = 0.0;
+  for (std::size_t i = 0; i < run.size(); ++i) {
+    const double c = result.trace.command_current[i];
+    ASSERT_GE(c, limits.min_current);
+    ASSERT_LE(c, limits.max_current);
+    if (i > 0) {
+      ASSERT_LE(std::fabs(c - result.trace.command_current[i - 1]),
+                limits.slew_rate / run.sample_rate + 1e-12);
+    }
+    highest = std::max(highest, c);
+  }
+  // +-20 mm reaches Table 4's 0.4 A level (10..20 mm); the compensator asks for more than that.
+  EXPECT_GE(highest, 0.4);
+  EXPECT_DOUBLE_EQ(result.sample_period, 1e-3);
+}
+
+TEST(Replay, CommandVoltageTimesTheDriverGainIsTheCurrent) {
+  auto options = default_options();
+  const RecordedRun run = simulate_run(options.law.damper);
+  RecordedRun voltage = run;
+  voltage.coil_signal = mrd::tools::CoilSignal::kCommandVoltage;
+  for (double& v : voltage.coil) v /= 0.5;
+  EXPECT_EQ(error_of(voltage, options),
+            "simulated: the run logged the driver's command voltage, not the coil current: give "
+            "the driver gain (--amps-per-volt)");
+  options.amps_per_volt = 0.5;
+  EXPECT_EQ(replay(voltage, options).trace.predicted_force,
+            replay(run, options).trace.predicted_force);
+}
+
+TEST(Replay, RunsItCannotReplay) {
+  auto options = default_options();
+  RecordedRun run = simulate_run(options.law.damper);
+  run.velocity.clear();
+  options.use_recorded_velocity = true;
+  EXPECT_EQ(error_of(run, options),
+            "simulated: --recorded-velocity, but the run has no velocity column");
+  run.force.clear();
+  options.use_recorded_velocity = false;
+  EXPECT_FALSE(replay(run, options).force);  // a candump run: prediction and command only
+  run.time.resize(1);
+  EXPECT_EQ(error_of(run, options),
+            "simulated: cannot replay: the run needs at least 2 samples at a known rate");
+}
+
+}  // namespace

@@ -1,0 +1,102 @@
+#include "tools/replay/replay.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "tools/csv.hpp"
+
+namespace mrd::tools {
+
+ForceError force_error(std::span<const double> measured, std::span<const double> predicted) {
+  ForceError e;
+  e.samples = std::min(measured.size(), predicted.size());
+  if (e.samples == 0) return e;
+  double sum = 0.0, sum_sq = 0.0;
+  double lo = measured[0], hi = measured[0];
+  for (std::size_t i = 0; i < e.samples; ++i) {
+    const double r = measured[i] - predicted[i];
+    sum += r;
+    sum_sq += r * r;
+    e.max = std::max(e.max, std::fabs(r));
+    lo = std::min(lo, measured[i]);
+    hi = std::max(hi, measured[i]);
+  }
+  const auto n = static_cast<double>(e.samples);
+  e.rms = std::sqrt(sum_sq / n);
+  e.mean = sum / n;
+  e.measured_range = hi - lo;
+  e.nrmse =
+      e.measured_range > 0.0 ? e.rms / e.measured_range : std::numeric_limits<double>::quiet_NaN();
+  return e;
+}
+
+namespace {
+
+firmware::ControlLawConfig law_for(const RecordedRun& run, const ReplayOptions& options) {
+  if (!(run.sample_rate > 0.0) || run.size() < 2) {
+    throw InputError(run.name +
+                     ": cannot replay: the run needs at least 2 samples at a known rate");
+  }
+  if (run.coil_signal == CoilSignal::kCommandVoltage && !options.amps_per_volt) {
+    throw InputError(run.name +
+                     ": the run logged the driver's command voltage, not the coil current: "
+                     "give the driver gain (--amps-per-volt)");
+  }
+  if (options.amps_per_volt && !std::isfinite(*options.amps_per_volt)) {
+    throw InputError("--amps-per-volt must be a finite number");
+  }
+  if (options.use_recorded_velocity && !run.has_velocity()) {
+    throw InputError(run.name + ": --recorded-velocity, but the run has no velocity column");
+  }
+  firmware::ControlLawConfig law = options.law;
+  law.observer.sample_period = 1.0 / run.sample_rate;
+  const auto report = firmware::validate(law);
+  if (!report.ok())
+    throw InputError(run.name + ": cannot replay with this config:\n" + report.to_string());
+  return law;
+}
+
+}  // namespace
+
+ReplayResult replay(const RecordedRun& run, const ReplayOptions& options) {
+  const firmware::ControlLawConfig config = law_for(run, options);
+  const double gain = run.coil_signal == CoilSignal::kCommandVoltage ? *options.amps_per_volt : 1.0;
+  // The force: the firmware's observer driven by the current the run recorded.
+  model::Observer observer(config.damper, config.observer);
+  // The command: the whole control law in its own closed loop on the run's displacement, the
+  // driver delivering each command as the mock driver does (ControlLoop feeds the law the
+  // current that flowed, which is then its last command).
+  firmware::ControlLaw law(config);
+  double flowing = 0.0;
+
+  ReplayResult result;
+  result.sample_period = config.observer.sample_period;
+  result.sampling = summarize_sampling(run.time);
+  ReplayTrace& t = result.trace;
+  for (auto* v : {&t.coil_current, &t.velocity, &t.B, &t.predicted_force, &t.scheduled_current,
+                  &t.command_current}) {
+    v->resize(run.size());
+  }
+  for (std::size_t i = 0; i < run.size(); ++i) {
+    const double x = run.displacement[i];
+    const double current = run.coil[i] * gain;
+    const model::ObserverEstimate estimate = options.use_recorded_velocity
+                                                 ? observer.step(x, run.velocity[i], current)
+                                                 : observer.step(x, current);
+    const firmware::ControlOutput out = options.use_recorded_velocity
+                                            ? law.step(x, run.velocity[i], flowing)
+                                            : law.step(x, flowing);
+    flowing = out.command_current;
+    t.coil_current[i] = current;
+    t.velocity[i] = estimate.velocity;
+    t.B[i] = estimate.B;
+    t.predicted_force[i] = estimate.force;
+    t.scheduled_current[i] = out.scheduled_current;
+    t.command_current[i] = out.command_current;
+  }
+  if (run.has_force()) result.force = force_error(run.force, t.predicted_force);
+  return result;
+}
+
+}  // namespace mrd::tools
