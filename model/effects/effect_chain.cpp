@@ -17,12 +17,8 @@ PredictedMotion EffectChain::motion(double displacement, double velocity, double
 }
 
 double EffectChain::coil_current(double command) {
-  last_command_ = command;
-  return config_.coil_lag.enabled ? coil_lag_.step(command) : command;
-}
-
-double EffectChain::coil_current() const {
-  return config_.coil_lag.enabled ? coil_lag_.current() : last_command_;
+  coil_current_ = config_.coil_lag.enabled ? coil_lag_.step(command) : command;
+  return coil_current_;
 }
 
 double EffectChain::yield_factor() const {
@@ -57,7 +53,7 @@ double EffectChain::temperature() const {
 }
 
 void EffectChain::reset() {
-  last_command_ = 0.0;
+  coil_current_ = 0.0;
   coil_lag_.reset();
   preyield_.reset();
   thermal_.reset();

@@ -32,7 +32,9 @@ class EffectChain {
   [[nodiscard]] double gas_force(double displacement) const;
   void dissipate(double power);
 
-  [[nodiscard]] double coil_current() const;  // the present coil current after the lag [A]
+  // The current that flowed in the last step [A], after the lag; the steps above only run,
+  // and so this is only kept, while active().
+  [[nodiscard]] double coil_current() const { return coil_current_; }
   // The fluid temperature [degC]: the lumped or measured one, or the ambient when the effect
   // is off.
   [[nodiscard]] double temperature() const;
@@ -44,7 +46,7 @@ class EffectChain {
  private:
   EffectSet config_;
   bool active_;
-  double last_command_ = 0.0;
+  double coil_current_ = 0.0;
   CoilLag coil_lag_;
   PreyieldHysteresis preyield_;
   GasSpring gas_;
