@@ -71,6 +71,27 @@ void BM_ObserverStep(benchmark::State& state) {
 }
 BENCHMARK(BM_ObserverStep);
 
+// The same step with every optional effect on (docs/MODEL.md, "Optional effects"): what the
+// improved model costs. BM_ObserverStep, with them all off, must not move.
+void BM_ObserverStepAllEffects(benchmark::State& state) {
+  mrd::model::DamperModel m;
+  m.effects.coil_lag.enabled = true;
+  m.effects.preyield_hysteresis.enabled = true;
+  m.effects.gas_spring = {true, 1500.0, 3e4};
+  m.effects.thermal_drift.enabled = true;
+  m.effects.sensor_delay = {true, 2e-3};
+  m.effects.stroke_end_air.enabled = true;
+  mrd::model::Observer observer{m};
+  const auto& current = sine_current();
+  const auto& x = sine_displacement();
+  int i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(observer.step(x[i], current[i]));
+    i = (i + 1) % kSamplesPerCycle;
+  }
+}
+BENCHMARK(BM_ObserverStepAllEffects);
+
 void BM_CompensatorStep(benchmark::State& state) {
   const mrd::model::DamperModel m;
   mrd::model::JilesAtherton core(m.jiles_atherton, m.circuit, m.integration);
