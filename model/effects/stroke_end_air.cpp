@@ -20,6 +20,7 @@ void StrokeEndAir::reset() {
   started_ = false;
   direction_ = 0;
   armed_ = false;
+  reversals_ = 0;
   factor_ = 1.0;
 }
 
@@ -37,12 +38,13 @@ double StrokeEndAir::step(double x) {
     }
     return factor_;
   }
-  const double ahead = (x - extreme_) * direction_;  // > 0: still moving away
-  if (ahead >= 0.0) {
+  const double pullback = (extreme_ - x) * direction_;  // > 0: come back from the extreme
+  if (pullback <= 0.0) {
     extreme_ = x;
-  } else if (-ahead > reversal_travel_) {
+  } else if (pullback > reversal_travel_) {
     reversal_ = extreme_;
     armed_ = std::fabs(reversal_) > threshold_;
+    ++reversals_;
     direction_ = -direction_;
     extreme_ = x;
   }

@@ -25,8 +25,11 @@ ParameterReport validate(const StrokeEndAirParams& params);
 // Reversals are found on the displacement, not on the sign of a velocity estimate: a noisy
 // velocity near zero would flip many times and re-arm the collapse each time. A reversal is
 // confirmed once the piston has come back `reversal_travel` from its extreme (above the LVDT
-// noise); s is then counted from the extreme itself. No heap, no exceptions; a non-finite x is
-// ignored.
+// noise); s is then counted from the extreme itself, so f steps from 1 to about 1 - depth at
+// the confirmation. (A collapse ramped in over that travel, continuous in x, was tried: on a
+// noisy LVDT the running extreme sits a noise excursion above x near every extreme, so the
+// ramp fires early and the observer's error grew by a third.) No heap, no exceptions; a
+// non-finite x is ignored.
 class StrokeEndAir {
  public:
   explicit StrokeEndAir(const StrokeEndAirParams& params);
@@ -35,6 +38,7 @@ class StrokeEndAir {
   double step(double displacement);
   [[nodiscard]] double factor() const { return factor_; }
   [[nodiscard]] bool armed() const { return armed_; }  // the last reversal was beyond the threshold
+  [[nodiscard]] long reversals() const { return reversals_; }  // confirmed since the start
   void reset();
 
  private:
@@ -47,6 +51,7 @@ class StrokeEndAir {
   double extreme_ = 0.0;      // furthest point in the present direction [m]
   double reversal_ = 0.0;     // where the last reversal was [m]
   bool armed_ = false;
+  long reversals_ = 0;
   double factor_ = 1.0;
 };
 

@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
   mrd::tools::RunColumns columns;
   bool no_velocity = false;
   bool show_effects = false;
+  bool report_residual = false;
   app.add_option("--out", out, "the CSV to write");
   app.add_option("--profile", profile,
                  "table4 (sine, Table 4 currents), paper-sines (0.05-1 Hz, Table 4 currents), sine "
@@ -67,6 +68,9 @@ int main(int argc, char** argv) {
   app.add_flag("--with-temperature", columns.temperature, "add the temperature_C column");
   app.add_flag("--no-velocity", no_velocity, "leave out the velocity_mm_s column");
   app.add_option("--manifest", manifest, "also write what the run carries, as JSON");
+  app.add_flag("--residual", report_residual,
+               "also print the RMS error of the class's base model replayed on the written run, and of "
+               "the model with the effects the run carries (the best a residual analysis can reach)");
   app.add_flag("--list-effects", show_effects, "print the effects' sizes per damper class and exit");
   CLI11_PARSE(app, argc, argv);
 
@@ -117,6 +121,11 @@ int main(int argc, char** argv) {
               std::string(to_string(run.options.profile)).c_str(), run.options.damper.name.c_str(),
               run.samples.size(), run.options.rate, run.options.duration,
               static_cast<unsigned long long>(run.options.seed), carried.empty() ? " none" : carried.c_str());
+  if (report_residual) {
+    std::printf("base model residual: %.4g N RMS; with the carried effects: %.4g N RMS (load-cell noise %.4g N)\n",
+                mrd::tools::model_residual(run), mrd::tools::model_residual(run, run.effects),
+                run.options.force_noise);
+  }
   std::printf("wrote %s\n", out.c_str());
   return 0;
 }

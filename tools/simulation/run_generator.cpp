@@ -5,6 +5,7 @@
 #include <variant>
 
 #include "model/current_schedule.hpp"
+#include "model/observer.hpp"
 #include "sim/current_profile.hpp"
 #include "sim/damper_plant.hpp"
 #include "sim/displacement_profile.hpp"
@@ -143,6 +144,18 @@ SimulatedRun simulate_run(const RunOptions& options) {
   for (const auto& request : o.effects) apply_effect(o.damper, request, dissipated, run.effects);
   run.samples = run_plant(o, run.effects);
   return run;
+}
+
+double model_residual(const SimulatedRun& run, const model::EffectSet& effects) {
+  model::DamperModel damper = run.options.damper.model;
+  damper.effects = effects;
+  model::Observer observer(damper, {1.0 / run.options.rate});
+  double sum = 0.0;
+  for (const auto& s : run.samples) {
+    const double e = observer.step(s.displacement, s.velocity, s.current).force - s.force;
+    sum += e * e;
+  }
+  return run.samples.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(run.samples.size()));
 }
 
 }  // namespace mrd::tools

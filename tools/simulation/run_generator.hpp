@@ -69,4 +69,9 @@ struct SimulatedRun {
 // current follows the schedule on the LVDT reading, one period late, as a controller would.
 SimulatedRun simulate_run(const RunOptions& options);
 
+// RMS [N] of the damper class's model with `effects` (default: none, the base model) replayed on
+// the run's own columns (LVDT displacement, velocity, current) against its force column. With
+// no effects it is where a residual analysis starts; on a clean run it is the load cell's noise.
+double model_residual(const SimulatedRun& run, const model::EffectSet& effects = {});
+
 }  // namespace mrd::tools
