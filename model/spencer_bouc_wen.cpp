@@ -59,26 +59,22 @@ void SpencerBoucWen::reset(double displacement) {
   primed_ = true;
 }
 
-SpencerBoucWen::Rates SpencerBoucWen::rates(const SpencerBoucWenState& s, double x, double xdot,
-                                            double voltage) const {
+std::pair<double, double> SpencerBoucWen::ydot_c1(const SpencerBoucWenState& s, double x, double xdot) const {
   const double alpha = p_.alpha_a + p_.alpha_b * s.u;
   const double c0 = p_.c0a + p_.c0b * s.u;
   const double c1 = p_.c1a + p_.c1b * s.u;
-  const double ydot = (alpha * s.z + c0 * xdot + p_.k0 * (x - s.y)) / (c0 + c1);
+  return {(alpha * s.z + c0 * xdot + p_.k0 * (x - s.y)) / (c0 + c1), c1};
+}
+
+SpencerBoucWen::Rates SpencerBoucWen::rates(const SpencerBoucWenState& s, double x, double xdot,
+                                            double voltage) const {
+  const double ydot = ydot_c1(s, x, xdot).first;
   const double rel = xdot - ydot;
   const double abs_z = std::fabs(s.z);
   const double z_n = p_.n == 2.0 ? abs_z * abs_z : std::pow(abs_z, p_.n);
   // gamma |rel| z |z|^(n-1) = gamma |rel| sign(z) |z|^n
   const double zdot = -p_.gamma * std::fabs(rel) * (s.z >= 0.0 ? z_n : -z_n) - p_.beta * rel * z_n + p_.A * rel;
   return {ydot, zdot, -p_.eta * (s.u - voltage)};
-}
-
-double SpencerBoucWen::force(const SpencerBoucWenState& s, double x, double xdot) const {
-  const double alpha = p_.alpha_a + p_.alpha_b * s.u;
-  const double c0 = p_.c0a + p_.c0b * s.u;
-  const double c1 = p_.c1a + p_.c1b * s.u;
-  const double ydot = (alpha * s.z + c0 * xdot + p_.k0 * (x - s.y)) / (c0 + c1);
-  return c1 * ydot + p_.k1 * (x - p_.x0);
 }
 
 double SpencerBoucWen::step(double x, double xdot, double voltage) {
@@ -116,7 +112,8 @@ double SpencerBoucWen::step(double x, double xdot, double voltage) {
     s.u += h / 6.0 * (k1.u + 2.0 * k2.u + 2.0 * k3.u + k4.u);
   }
   if (std::isfinite(s.y) && std::isfinite(s.z) && std::isfinite(s.u)) state_ = s;
-  return force(state_, x, xdot);
+  const auto [ydot_end, c1] = ydot_c1(state_, x, xdot);
+  return c1 * ydot_end + p_.k1 * (x - p_.x0);
 }
 
 }  // namespace mrd::model

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <utility>
+
 #include "model/parameter_check.hpp"
 
 namespace mrd::model {
@@ -69,7 +71,8 @@ class SpencerBoucWen {
     double u;
   };
   [[nodiscard]] Rates rates(const SpencerBoucWenState& s, double x, double xdot, double voltage) const;
-  [[nodiscard]] double force(const SpencerBoucWenState& s, double x, double xdot) const;
+  // y' and c1 at the state (alpha, c0 and c1 follow the filtered voltage u).
+  [[nodiscard]] std::pair<double, double> ydot_c1(const SpencerBoucWenState& s, double x, double xdot) const;
 
   SpencerBoucWenParams p_;
   double period_;
