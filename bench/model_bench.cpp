@@ -59,8 +59,8 @@ void BM_JilesAthertonStepHeun(benchmark::State& state) {
 }
 BENCHMARK(BM_JilesAthertonStepHeun);
 
-void BM_ObserverStep(benchmark::State& state) {
-  mrd::model::Observer observer{mrd::model::DamperModel{}};
+void run_observer_steps(benchmark::State& state, const mrd::model::DamperModel& model) {
+  mrd::model::Observer observer{model};
   const auto& current = sine_current();
   const auto& x = sine_displacement();
   int i = 0;
@@ -69,7 +69,23 @@ void BM_ObserverStep(benchmark::State& state) {
     i = (i + 1) % kSamplesPerCycle;
   }
 }
+
+void BM_ObserverStep(benchmark::State& state) { run_observer_steps(state, mrd::model::DamperModel{}); }
 BENCHMARK(BM_ObserverStep);
+
+// The same step with every optional effect on (docs/MODEL.md, "Optional effects"): what the
+// improved model costs. BM_ObserverStep, with them all off, must not move.
+void BM_ObserverStepAllEffects(benchmark::State& state) {
+  mrd::model::DamperModel m;
+  m.effects.coil_lag.enabled = true;
+  m.effects.preyield_hysteresis.enabled = true;
+  m.effects.gas_spring = {true, 1500.0, 3e4};
+  m.effects.thermal_drift.enabled = true;
+  m.effects.sensor_delay = {true, 2e-3};
+  m.effects.stroke_end_air.enabled = true;
+  run_observer_steps(state, m);
+}
+BENCHMARK(BM_ObserverStepAllEffects);
 
 void BM_CompensatorStep(benchmark::State& state) {
   const mrd::model::DamperModel m;

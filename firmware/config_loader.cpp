@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "firmware/default_config_text.hpp"  // generated from etc/mrd/mrd.toml
+#include "firmware/effects_config.hpp"
 #include "firmware/toml_reader.hpp"
 
 namespace mrd::firmware {
@@ -143,6 +144,7 @@ void read_damper(TomlReader& in, model::DamperModel& d) {
   in.get("damper.geometry.gap", d.geometry.gap);
   in.get("damper.geometry.piston_diameter", d.geometry.piston_diameter);
   in.get("damper.geometry.sign_velocity_scale", d.geometry.sign_velocity_scale);
+  read_effects(in, d.effects);
 }
 
 void read_law(TomlReader& in, ControlLawConfig& law) {

@@ -58,7 +58,9 @@ int run_controller(const ControllerConfig& config, const RunOptions& options,
 
   ControlLoop loop(config.law, config.safety, hal.devices(), queue.get(), config.telemetry.decimation);
   std::optional<SimulatedRig> rig;
-  if (config.backends.lvdt == DeviceBackend::kMock) rig.emplace(config.simulation, config.law.damper, *hal.mock());
+  if (config.backends.lvdt == DeviceBackend::kMock) {
+    rig.emplace(config.simulation, config.law.damper, 1.0 / config.rate, *hal.mock());
+  }
   hal::mock::MockHal* mock = hal.mock();
 
   const auto cycle = [&](hal::Timestamp release) {

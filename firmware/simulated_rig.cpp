@@ -5,9 +5,9 @@
 namespace mrd::firmware {
 
 SimulatedRig::SimulatedRig(const SimulationConfig& config, const model::DamperModel& truth,
-                           hal::mock::MockHal& hal)
+                           double sample_period, hal::mock::MockHal& hal)
     : profile_{config.amplitude, config.frequency},
-      plant_(truth, config.lvdt_noise, config.seed),
+      plant_(truth, sim::PlantSettings{sample_period, config.lvdt_noise, 0.0, config.seed}),
       hal_(hal) {}
 
 void SimulatedRig::advance(hal::Timestamp now) {

@@ -17,7 +17,8 @@ namespace mrd::firmware {
 // to the mock LVDT. In process, allocation-free per cycle.
 class SimulatedRig {
  public:
-  SimulatedRig(const SimulationConfig& config, const model::DamperModel& truth,
+  // `truth` with its optional effects; `sample_period` is the loop's [s].
+  SimulatedRig(const SimulationConfig& config, const model::DamperModel& truth, double sample_period,
                hal::mock::MockHal& hal);
 
   void advance(hal::Timestamp now);

@@ -24,6 +24,8 @@ BinghamDamper::BinghamDamper(const DamperGeometry& g, double viscosity)
                            (std::numbers::pi * g.piston_diameter * g.gap * g.gap * g.gap)),
       inv_sign_velocity_(1.0 / g.sign_velocity_scale) {}
 
+double BinghamDamper::sign_term(double velocity) const { return std::tanh(velocity * inv_sign_velocity_); }
+
 double BinghamDamper::force(double velocity, double yield_stress) const {
   // Eq. 12 with the regularised sgn of Eq. 11.
   return yield_gain_ * yield_stress * std::tanh(velocity * inv_sign_velocity_) +

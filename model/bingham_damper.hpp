@@ -29,6 +29,8 @@ class BinghamDamper {
   // Damper force [N] from velocity [m/s] and yield stress [Pa].
   [[nodiscard]] double force(double velocity, double yield_stress) const;
   [[nodiscard]] double yield_force(double yield_stress) const { return yield_gain_ * yield_stress; }
+  // The regularised sgn(v) of Eq. 11, tanh(v / v_s).
+  [[nodiscard]] double sign_term(double velocity) const;
   [[nodiscard]] double viscous_coefficient() const { return viscous_coefficient_; }  // c0 [N s/m]
 
  private:

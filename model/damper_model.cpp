@@ -19,6 +19,7 @@ ParameterReport validate(const DamperModel& model) {
   report.merge(validate(model.integration), "integration");
   report.merge(validate(model.fluid), "fluid");
   report.merge(validate(model.geometry), "geometry");
+  report.merge(validate(model.effects), "effects");
   return report;
 }
 

@@ -6,13 +6,22 @@ Observer::Observer(const DamperModel& model, const ObserverSettings& settings)
     : magnetics_(model.jiles_atherton, model.circuit, model.integration),
       yield_stress_(model.fluid),
       damper_(model.geometry, model.fluid.viscosity),
-      velocity_filter_(settings.sample_period, settings.velocity_cutoff_frequency) {}
+      velocity_filter_(settings.sample_period, settings.velocity_cutoff_frequency),
+      effects_(model.effects, settings.sample_period) {}
 
 ObserverEstimate Observer::step(double displacement, double coil_current) {
-  return step(displacement, velocity_filter_.update(displacement), coil_current);
+  const double velocity = velocity_filter_.update(displacement);
+  if (effects_.active()) [[unlikely]] {
+    return step_with_effects(displacement, velocity, coil_current, true);
+  }
+  return step(displacement, velocity, coil_current);
 }
 
-ObserverEstimate Observer::step(double /*displacement*/, double velocity, double coil_current) {
+ObserverEstimate Observer::step(double displacement, double velocity, double coil_current) {
+  // One well-predicted branch: with every effect off this is the base model unchanged.
+  if (effects_.active()) [[unlikely]] {
+    return step_with_effects(displacement, velocity, coil_current, false);
+  }
   estimate_.B = magnetics_.apply_current(coil_current);
   estimate_.yield_stress = yield_stress_(estimate_.B);
   estimate_.velocity = velocity;
@@ -20,9 +29,29 @@ ObserverEstimate Observer::step(double /*displacement*/, double velocity, double
   return estimate_;
 }
 
+ObserverEstimate Observer::step_with_effects(double displacement, double velocity,
+                                             double coil_current, bool filtered) {
+  double acceleration = 0.0;
+  if (effects_.config().sensor_delay.enabled) {
+    // The prediction needs the acceleration, which only the tracker on the displacement has.
+    if (!filtered) velocity_filter_.update(displacement);
+    acceleration = velocity_filter_.acceleration();
+  }
+  const PredictedMotion now = effects_.motion(displacement, velocity, acceleration);
+  estimate_.B = magnetics_.apply_current(effects_.coil_current(coil_current));
+  estimate_.yield_stress = yield_stress_(estimate_.B) * effects_.yield_factor();
+  estimate_.velocity = now.velocity;
+  const double fluid = effects_.fluid_force(damper_, estimate_.yield_stress, now.velocity) *
+                       effects_.stroke_factor(now.displacement);
+  estimate_.force = fluid + effects_.gas_force(now.displacement);
+  effects_.dissipate(fluid * now.velocity);
+  return estimate_;
+}
+
 void Observer::reset() {
   magnetics_.demagnetise();
   velocity_filter_.reset();
+  effects_.reset();
   estimate_ = {};
 }
 

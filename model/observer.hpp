@@ -2,6 +2,7 @@
 
 #include "model/bingham_damper.hpp"
 #include "model/damper_model.hpp"
+#include "model/effects/effect_chain.hpp"
 #include "model/jiles_atherton.hpp"
 #include "model/mr_fluid.hpp"
 #include "model/velocity_filter.hpp"
@@ -15,13 +16,15 @@ struct ObserverSettings {
 
 struct ObserverEstimate {
   double B = 0.0;             // gap induction [T]
-  double yield_stress = 0.0;  // [Pa]
-  double velocity = 0.0;      // measured or filtered [m/s]
+  double yield_stress = 0.0;  // [Pa], after the thermal factor when thermal_drift is on
+  double velocity = 0.0;      // measured or filtered [m/s], predicted when sensor_delay is on
   double force = 0.0;         // predicted damper force [N]
 };
 
 // The J-A + Bingham observer of Fig. 5: coil current -> B (Eq. 1-10) -> tau_y (Eq. 13)
 // -> force with the piston velocity (Eq. 11-12). One step per control period; no heap.
+// The model's optional effects (DamperModel::effects) run inside the step in the order
+// EffectChain documents; with all of them off the step is the base model, bit for bit.
 class Observer {
  public:
   Observer(const DamperModel& model, const ObserverSettings& settings = {});
@@ -31,17 +34,27 @@ class Observer {
   // With a velocity sensor.
   ObserverEstimate step(double displacement, double velocity, double coil_current);
 
+  // A measured fluid temperature [degC] for thermal_drift (NaN: back to its lumped model).
+  void set_measured_temperature(double celsius) { effects_.set_measured_temperature(celsius); }
+
   [[nodiscard]] const JilesAtherton& magnetics() const { return magnetics_; }
   [[nodiscard]] const ObserverEstimate& estimate() const { return estimate_; }
   [[nodiscard]] const BinghamDamper& damper() const { return damper_; }
   [[nodiscard]] const YieldStress& yield_stress() const { return yield_stress_; }
+  [[nodiscard]] const EffectChain& effects() const { return effects_; }
   void reset();
 
  private:
+  // The step with at least one effect on. `filtered` says whether the velocity filter has
+  // already seen this displacement (the displacement-only path).
+  ObserverEstimate step_with_effects(double displacement, double velocity, double coil_current,
+                                     bool filtered);
+
   JilesAtherton magnetics_;
   YieldStress yield_stress_;
   BinghamDamper damper_;
   VelocityFilter velocity_filter_;
+  EffectChain effects_;
   ObserverEstimate estimate_;
 };
 

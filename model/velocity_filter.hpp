@@ -15,6 +15,7 @@ class VelocityFilter {
 
   double update(double displacement);  // returns velocity [m/s]
   [[nodiscard]] double velocity() const { return velocity_; }
+  [[nodiscard]] double acceleration() const { return acceleration_; }  // [m/s^2]
   void reset() { primed_ = false; position_ = velocity_ = acceleration_ = 0.0; }
 
  private:

@@ -2,13 +2,42 @@
 
 namespace mrd::sim {
 
+namespace {
+// The physics without the sensor: sensor_delay is the LVDT's, applied to its reading.
+model::DamperModel physics_of(model::DamperModel truth) {
+  truth.effects.sensor_delay.enabled = false;
+  return truth;
+}
+}  // namespace
+
+DamperPlant::DamperPlant(const model::DamperModel& truth, const PlantSettings& settings)
+    : physics_(physics_of(truth), model::ObserverSettings{settings.sample_period}),
+      delayed_(truth.effects.sensor_delay.enabled),
+      lvdt_delay_(truth.effects.sensor_delay, settings.sample_period),
+      velocity_delay_(truth.effects.sensor_delay, settings.sample_period),
+      rng_(settings.seed),
+      noise_(0.0, settings.lvdt_noise_rms),
+      force_rng_(settings.seed ^ 0x9e3779b97f4a7c15ULL),
+      force_noise_(0.0, settings.force_noise_rms) {}
+
 DamperPlant::DamperPlant(const model::DamperModel& truth, double lvdt_noise_rms, unsigned seed)
-    : physics_(truth), rng_(seed), noise_(0.0, lvdt_noise_rms) {}
+    : DamperPlant(truth, PlantSettings{1e-3, lvdt_noise_rms, 0.0, seed}) {}
 
 PlantReading DamperPlant::step(double displacement, double velocity, double coil_current) {
   const model::ObserverEstimate truth = physics_.step(displacement, velocity, coil_current);
   const double noise = noise_.stddev() > 0.0 ? noise_(rng_) : 0.0;
-  return {displacement, displacement + noise, truth.B, truth.force};
+  const double force_noise = force_noise_.stddev() > 0.0 ? force_noise_(force_rng_) : 0.0;
+  const double sensed = delayed_ ? lvdt_delay_.step(displacement) : displacement;
+  PlantReading r;
+  r.true_displacement = displacement;
+  r.lvdt_displacement = sensed + noise;
+  r.B = truth.B;
+  r.force = truth.force;
+  r.measured_force = truth.force + force_noise;
+  r.sensor_velocity = delayed_ ? velocity_delay_.step(velocity) : velocity;
+  r.coil_current = physics_.effects().active() ? physics_.effects().coil_current() : coil_current;
+  r.temperature = physics_.effects().temperature();
+  return r;
 }
 
 }  // namespace mrd::sim

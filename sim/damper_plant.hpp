@@ -3,29 +3,56 @@
 #include <random>
 
 #include "model/damper_model.hpp"
+#include "model/effects/sensor_delay.hpp"
 #include "model/observer.hpp"
 
 namespace mrd::sim {
 
 struct PlantReading {
   double true_displacement = 0.0;  // [m]
-  double lvdt_displacement = 0.0;  // what the sensor reports [m]
+  double lvdt_displacement = 0.0;  // what the sensor reports (late when sensor_delay is on) [m]
   double B = 0.0;                  // [T]
-  double force = 0.0;              // [N]
+  double force = 0.0;              // true force [N]
+  // What the rig measures besides the LVDT:
+  double measured_force = 0.0;     // force + load-cell noise [N]
+  double sensor_velocity = 0.0;    // the true velocity through the same delay as the LVDT [m/s]
+  double coil_current = 0.0;       // the current that flows, after coil_lag [A]
+  double temperature = 0.0;        // fluid temperature [degC] (ambient without thermal_drift)
 };
 
-// The simulated damper: true J-A + Bingham physics driven by the true velocity, and an LVDT
-// with white noise. The plant knows its velocity exactly; the controller does not.
+struct PlantSettings {
+  double sample_period = 1e-3;   // [s]
+  double lvdt_noise_rms = 0.0;   // [m]
+  double force_noise_rms = 0.0;  // load cell [N]
+  unsigned seed = 1;
+};
+
+// The simulated damper: true J-A + Bingham physics driven by the true velocity, with the
+// optional effects of `truth.effects` (each switched on and sized there), an LVDT with white
+// noise and a load cell with white noise. The plant knows its velocity exactly; the controller
+// does not. sensor_delay acts on the LVDT (a delay line), not inside the physics; every other
+// effect acts inside the physics exactly as the observer models it (model::EffectChain).
+// Allocation-free per step.
 class DamperPlant {
  public:
+  DamperPlant(const model::DamperModel& truth, const PlantSettings& settings);
+  // The firmware's simulated rig: 1 kHz, no load-cell noise.
   DamperPlant(const model::DamperModel& truth, double lvdt_noise_rms, unsigned seed);
 
+  // `coil_current` is the commanded current held over this period.
   PlantReading step(double displacement, double velocity, double coil_current);
+
+  [[nodiscard]] const model::Observer& physics() const { return physics_; }
 
  private:
   model::Observer physics_;
+  bool delayed_;
+  model::SensorDelay lvdt_delay_;
+  model::SensorDelay velocity_delay_;
   std::mt19937_64 rng_;
   std::normal_distribution<double> noise_;
+  std::mt19937_64 force_rng_;  // its own stream, so the LVDT noise does not depend on it
+  std::normal_distribution<double> force_noise_;
 };
 
 }  // namespace mrd::sim

@@ -1,7 +1,9 @@
 #include "sim/displacement_profile.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <random>
 
 namespace mrd::sim {
 
@@ -12,6 +14,60 @@ double SineProfile::displacement(double t) const {
 double SineProfile::velocity(double t) const {
   const double w = 2.0 * std::numbers::pi * frequency;
   return amplitude * w * std::cos(w * t);
+}
+
+SineSequenceProfile::SineSequenceProfile(double amplitude, std::vector<double> frequencies, int cycles_each)
+    : amplitude_(amplitude), frequencies_(std::move(frequencies)), duration_(0.0) {
+  for (const double f : frequencies_) {
+    starts_.push_back(duration_);
+    duration_ += cycles_each / f;
+  }
+}
+
+SineProfile SineSequenceProfile::segment(double t, double& local) const {
+  std::size_t i = 0;
+  while (i + 1 < starts_.size() && t >= starts_[i + 1]) ++i;
+  local = t - starts_[i];
+  return {amplitude_, frequencies_[i]};
+}
+
+double SineSequenceProfile::displacement(double t) const {
+  double local = 0.0;
+  return segment(t, local).displacement(local);
+}
+
+double SineSequenceProfile::velocity(double t) const {
+  double local = 0.0;
+  return segment(t, local).velocity(local);
+}
+
+RandomProfile::RandomProfile(double peak, double low, double high, double duration, double sample_period,
+                             std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> frequency(low, high);
+  std::uniform_real_distribution<double> phase(0.0, 2.0 * std::numbers::pi);
+  for (int i = 0; i < kComponents; ++i) {
+    const double f = frequency(rng);
+    components_.push_back({2.0 * std::numbers::pi * f, phase(rng)});
+  }
+  double largest = 0.0;
+  const auto samples = static_cast<long>(std::ceil(duration / sample_period));
+  for (long k = 0; k <= samples; ++k) {
+    largest = std::max(largest, std::fabs(displacement(static_cast<double>(k) * sample_period)));
+  }
+  scale_ = largest > 0.0 ? peak / largest : 0.0;
+}
+
+double RandomProfile::displacement(double t) const {
+  double x = 0.0;
+  for (const auto& c : components_) x += std::sin(c.omega * t + c.phase);
+  return scale_ * x;
+}
+
+double RandomProfile::velocity(double t) const {
+  double v = 0.0;
+  for (const auto& c : components_) v += c.omega * std::cos(c.omega * t + c.phase);
+  return scale_ * v;
 }
 
 }  // namespace mrd::sim

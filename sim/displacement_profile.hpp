@@ -1,5 +1,8 @@
 #pragma once
 
+#include <cstdint>
+#include <vector>
+
 namespace mrd::sim {
 
 // The paper's rig motion: x = A sin(2 pi f t), the LVDT reading in metres.
@@ -9,6 +12,48 @@ struct SineProfile {
 
   [[nodiscard]] double displacement(double t) const;
   [[nodiscard]] double velocity(double t) const;
+};
+
+// The paper's sine tests one after the other: whole cycles at each frequency in turn, every
+// segment starting at x = 0 moving up, so motion and velocity are continuous at the joins.
+class SineSequenceProfile {
+ public:
+  SineSequenceProfile(double amplitude, std::vector<double> frequencies, int cycles_each);
+
+  [[nodiscard]] double displacement(double t) const;
+  [[nodiscard]] double velocity(double t) const;
+  [[nodiscard]] double duration() const { return duration_; }
+
+ private:
+  [[nodiscard]] SineProfile segment(double t, double& local) const;
+
+  double amplitude_;
+  std::vector<double> frequencies_;
+  std::vector<double> starts_;  // segment start times [s]
+  double duration_;
+};
+
+// Band-limited random motion: a sum of sines at random frequencies, uniform in
+// [low, high] Hz, with random phases and equal amplitudes (a flat spectrum over the band),
+// deterministic for a seed. Smooth, so its velocity is exact. Scaled so that the largest |x| on
+// the sample grid of [0, duration] is `peak`: the run uses the whole stroke and never leaves it.
+class RandomProfile {
+ public:
+  static constexpr int kComponents = 64;
+
+  RandomProfile(double peak, double low, double high, double duration, double sample_period,
+                std::uint64_t seed);
+
+  [[nodiscard]] double displacement(double t) const;
+  [[nodiscard]] double velocity(double t) const;
+
+ private:
+  struct Component {
+    double omega;  // [rad/s]
+    double phase;  // [rad]
+  };
+  std::vector<Component> components_;
+  double scale_ = 1.0;  // amplitude of each component [m]
 };
 
 }  // namespace mrd::sim

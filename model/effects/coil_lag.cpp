@@ -1,0 +1,21 @@
+#include "model/effects/coil_lag.hpp"
+
+#include <cmath>
+
+namespace mrd::model {
+
+ParameterReport validate(const CoilLagParams& p) {
+  ParameterReport report;
+  report.require_in_range("time_constant", p.time_constant, 0.0, 10.0, false);
+  return report;
+}
+
+CoilLag::CoilLag(const CoilLagParams& params, double sample_period)
+    : gain_(params.time_constant > 0.0 ? -std::expm1(-sample_period / params.time_constant) : 1.0) {}
+
+double CoilLag::step(double command) {
+  if (std::isfinite(command)) current_ += gain_ * (command - current_);
+  return current_;
+}
+
+}  // namespace mrd::model

@@ -1,0 +1,14 @@
+#include "model/effects/gas_spring.hpp"
+
+#include <cmath>
+
+namespace mrd::model {
+
+ParameterReport validate(const GasSpringParams& p) {
+  ParameterReport report;
+  if (!std::isfinite(p.preload)) report.error("preload", "must be finite");
+  if (!std::isfinite(p.stiffness)) report.error("stiffness", "must be finite");
+  return report;
+}
+
+}  // namespace mrd::model

@@ -1,0 +1,55 @@
+#include "model/effects/stroke_end_air.hpp"
+
+#include <cmath>
+
+namespace mrd::model {
+
+ParameterReport validate(const StrokeEndAirParams& p) {
+  ParameterReport report;
+  report.require_positive("threshold", p.threshold);
+  report.require_in_range("depth", p.depth, 0.0, 1.0, false);
+  report.require_positive("length", p.length);
+  report.require_non_negative("reversal_travel", p.reversal_travel);
+  return report;
+}
+
+StrokeEndAir::StrokeEndAir(const StrokeEndAirParams& p)
+    : threshold_(p.threshold), depth_(p.depth), inv_length_(1.0 / p.length), reversal_travel_(p.reversal_travel) {}
+
+void StrokeEndAir::reset() {
+  started_ = false;
+  direction_ = 0;
+  armed_ = false;
+  reversals_ = 0;
+  factor_ = 1.0;
+}
+
+double StrokeEndAir::step(double x) {
+  if (!std::isfinite(x)) return factor_;
+  if (!started_) {
+    started_ = true;
+    extreme_ = x;
+    return factor_;
+  }
+  if (direction_ == 0) {  // the first move that exceeds the reversal travel sets the direction
+    if (std::fabs(x - extreme_) > reversal_travel_) {
+      direction_ = x > extreme_ ? 1 : -1;
+      extreme_ = x;
+    }
+    return factor_;
+  }
+  const double pullback = (extreme_ - x) * direction_;  // > 0: come back from the extreme
+  if (pullback <= 0.0) {
+    extreme_ = x;
+  } else if (pullback > reversal_travel_) {
+    reversal_ = extreme_;
+    armed_ = std::fabs(reversal_) > threshold_;
+    ++reversals_;
+    direction_ = -direction_;
+    extreme_ = x;
+  }
+  factor_ = armed_ ? 1.0 - depth_ * std::exp(-std::fabs(x - reversal_) * inv_length_) : 1.0;
+  return factor_;
+}
+
+}  // namespace mrd::model

@@ -1,0 +1,66 @@
+#include "model/effects/thermal_drift.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace mrd::model {
+
+namespace {
+double factor(TemperatureLaw law, double coefficient, double rise, double floor) {
+  const double f = law == TemperatureLaw::kLinear ? 1.0 - coefficient * rise : std::exp(-coefficient * rise);
+  return std::max(f, floor);
+}
+}  // namespace
+
+ParameterReport validate(const ThermalDriftParams& p) {
+  ParameterReport report;
+  report.require_in_range("initial_temperature", p.initial_temperature, -80.0, 300.0, false);
+  report.require_in_range("ambient_temperature", p.ambient_temperature, -80.0, 300.0, false);
+  report.require_in_range("reference_temperature", p.reference_temperature, -80.0, 300.0, false);
+  report.require_positive("heat_capacity", p.heat_capacity);
+  report.require_positive("cooling_time_constant", p.cooling_time_constant);
+  // Negative coefficients would make the fluid stiffen as it heats: outside this effect.
+  report.require_in_range("viscosity_coefficient", p.viscosity_coefficient, 0.0, 1.0, false);
+  report.require_in_range("yield_coefficient", p.yield_coefficient, 0.0, 1.0, false);
+  report.require_in_range("min_factor", p.min_factor, 0.0, 1.0, false);
+  return report;
+}
+
+ThermalDrift::ThermalDrift(const ThermalDriftParams& params, double sample_period)
+    : p_(params),
+      decay_(std::exp(-sample_period / params.cooling_time_constant)),
+      rise_per_watt_(params.cooling_time_constant / params.heat_capacity),
+      temperature_(params.initial_temperature),
+      measured_(std::numeric_limits<double>::quiet_NaN()) {
+  update_factors();
+}
+
+void ThermalDrift::heat(double power) {
+  if (!std::isfinite(power)) return;
+  const double settled = p_.ambient_temperature + std::max(power, 0.0) * rise_per_watt_;
+  temperature_ = settled + (temperature_ - settled) * decay_;
+  if (std::isnan(measured_)) update_factors();
+}
+
+void ThermalDrift::set_measured_temperature(double celsius) {
+  if (std::isinf(celsius)) return;  // a broken sensor value: keep what we had
+  measured_ = celsius;
+  update_factors();
+}
+
+double ThermalDrift::temperature() const { return std::isnan(measured_) ? temperature_ : measured_; }
+
+void ThermalDrift::reset() {
+  temperature_ = p_.initial_temperature;
+  measured_ = std::numeric_limits<double>::quiet_NaN();
+  update_factors();
+}
+
+void ThermalDrift::update_factors() {
+  const double rise = temperature() - p_.reference_temperature;
+  viscosity_factor_ = factor(p_.viscosity_law, p_.viscosity_coefficient, rise, p_.min_factor);
+  yield_factor_ = factor(p_.yield_law, p_.yield_coefficient, rise, p_.min_factor);
+}
+
+}  // namespace mrd::model

@@ -1,0 +1,149 @@
+// The observer with optional effects: off is the base model bit for bit; each one on changes
+// the force the way its physics says.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "model/effects/sensor_delay.hpp"
+#include "model/observer.hpp"
+
+namespace {
+
+using mrd::model::DamperModel;
+using mrd::model::EffectSet;
+using mrd::model::Observer;
+
+constexpr double kT = 1e-3;
+
+double x_at(int k) { return 0.040 * std::sin(2.0 * std::numbers::pi * 0.5 * k * kT); }
+double v_at(int k) { return 0.040 * std::numbers::pi * std::cos(2.0 * std::numbers::pi * 0.5 * k * kT); }
+double i_at(int k) { return 0.6 - 0.6 * std::cos(2.0 * std::numbers::pi * 0.5 * k * kT); }
+
+DamperModel with(void (*enable)(EffectSet&)) {
+  DamperModel m;
+  enable(m.effects);
+  return m;
+}
+
+// RMS of the force difference between two observers over two cycles with the true velocity.
+double rms_force_change(const DamperModel& a, const DamperModel& b) {
+  Observer oa(a), ob(b);
+  double sum = 0.0;
+  for (int k = 0; k < 4000; ++k) {
+    const double d = oa.step(x_at(k), v_at(k), i_at(k)).force - ob.step(x_at(k), v_at(k), i_at(k)).force;
+    sum += d * d;
+  }
+  return std::sqrt(sum / 4000);
+}
+
+TEST(ObserverEffects, AllOffIsTheBaseModelBitForBit) {
+  DamperModel m;
+  m.effects.coil_lag.time_constant = 0.5;  // parameters of disabled effects change nothing
+  m.effects.gas_spring.preload = 1e4;
+  Observer observer(m);
+  mrd::model::JilesAtherton ja(m.jiles_atherton, m.circuit, m.integration);
+  const mrd::model::YieldStress tau(m.fluid);
+  const mrd::model::BinghamDamper bingham(m.geometry, m.fluid.viscosity);
+  for (int k = 0; k < 3000; ++k) {
+    const auto e = observer.step(x_at(k), v_at(k), i_at(k));
+    const double B = ja.apply_current(i_at(k));
+    ASSERT_EQ(e.B, B);
+    ASSERT_EQ(e.force, bingham.force(v_at(k), tau(B)));
+  }
+}
+
+TEST(ObserverEffects, GasSpringAddsExactlyItsForce) {
+  const auto m = with([](EffectSet& e) { e.gas_spring = {true, 1500.0, 3e4}; });
+  Observer base(DamperModel{}), sprung(m);
+  for (int k = 0; k < 2000; ++k) {
+    const double d = sprung.step(x_at(k), v_at(k), i_at(k)).force - base.step(x_at(k), v_at(k), i_at(k)).force;
+    ASSERT_NEAR(d, 1500.0 + 3e4 * x_at(k), 1e-9) << k;
+  }
+}
+
+TEST(ObserverEffects, CoilLagDelaysTheField) {
+  const auto m = with([](EffectSet& e) { e.coil_lag = {true, 20e-3}; });
+  Observer lagged(m);
+  Observer base{DamperModel{}};
+  const auto step_b = base.step(0.0, 0.1, 1.0);
+  const auto step_l = lagged.step(0.0, 0.1, 1.0);
+  EXPECT_LT(step_l.B, 0.2 * step_b.B);  // after one period the current is 1 - exp(-1/20) = 5 %
+  EXPECT_NEAR(lagged.effects().coil_current(), -std::expm1(-1.0 / 20.0), 1e-12);
+  for (int k = 0; k < 200; ++k) lagged.step(0.0, 0.1, 1.0);  // 10 tau later it has caught up
+  EXPECT_NEAR(lagged.estimate().B, base.step(0.0, 0.1, 1.0).B, 1e-3);
+}
+
+TEST(ObserverEffects, ThermalDriftLowersTheForceAsTheFluidHeats) {
+  auto m = with([](EffectSet& e) {
+    e.thermal_drift.enabled = true;
+    e.thermal_drift.heat_capacity = 2000.0;  // small: it heats within the test
+  });
+  Observer hot(m), base{DamperModel{}};
+  for (int k = 0; k < 4000; ++k) {
+    hot.step(x_at(k), v_at(k), i_at(k));
+    base.step(x_at(k), v_at(k), i_at(k));
+  }
+  EXPECT_GT(hot.effects().temperature(), 25.0);
+  EXPECT_LT(std::fabs(hot.estimate().force), std::fabs(base.estimate().force));
+  EXPECT_LT(hot.estimate().yield_stress, base.estimate().yield_stress);
+  // A measured temperature at the reference gives the base model's yield stress back.
+  hot.set_measured_temperature(20.0);
+  const auto e = hot.step(x_at(4000), v_at(4000), i_at(4000));
+  EXPECT_NEAR(e.yield_stress, base.step(x_at(4000), v_at(4000), i_at(4000)).yield_stress, 1e-6);
+}
+
+TEST(ObserverEffects, EachEffectChangesTheForce) {
+  const DamperModel base;
+  EXPECT_GT(rms_force_change(base, with([](EffectSet& e) { e.coil_lag.enabled = true; })), 100.0);
+  EXPECT_GT(rms_force_change(base, with([](EffectSet& e) { e.preyield_hysteresis.enabled = true; })), 100.0);
+  EXPECT_GT(rms_force_change(base, with([](EffectSet& e) { e.thermal_drift = {.enabled = true, .heat_capacity = 500.0}; })), 100.0);
+  EXPECT_GT(rms_force_change(base, with([](EffectSet& e) { e.stroke_end_air.enabled = true; })), 100.0);
+  EXPECT_GT(rms_force_change(base, with([](EffectSet& e) { e.gas_spring = {true, 100.0, 0.0}; })), 99.0);
+  EXPECT_GT(rms_force_change(base, with([](EffectSet& e) { e.sensor_delay = {true, 5e-3}; })), 10.0);
+}
+
+// The observer fed by a late LVDT: with sensor_delay on it predicts the motion across the delay
+// and its force is closer to the force of an observer that sees the true displacement.
+TEST(ObserverEffects, SensorDelayCompensationBringsBackTheTrueForce) {
+  const double delay = 8e-3;
+  const auto compensating = with([](EffectSet& e) { e.sensor_delay = {true, 8e-3}; });
+  Observer truth{DamperModel{}}, naive{DamperModel{}}, predicted(compensating);
+  mrd::model::SensorDelay lvdt({true, delay}, kT);
+  double naive_sq = 0.0;
+  double predicted_sq = 0.0;
+  for (int k = 0; k < 6000; ++k) {
+    const double late = lvdt.step(x_at(k));
+    const double f = truth.step(x_at(k), i_at(k)).force;
+    const double a = naive.step(late, i_at(k)).force - f;
+    const double b = predicted.step(late, i_at(k)).force - f;
+    if (k >= 2000) {
+      naive_sq += a * a;
+      predicted_sq += b * b;
+    }
+  }
+  EXPECT_LT(predicted_sq, 0.25 * naive_sq);
+}
+
+TEST(ObserverEffects, ResetRestartsEveryEffect) {
+  auto m = with([](EffectSet& e) {
+    e.coil_lag.enabled = true;
+    e.preyield_hysteresis.enabled = true;
+    e.thermal_drift = {.enabled = true, .heat_capacity = 500.0};
+    e.stroke_end_air.enabled = true;
+  });
+  Observer a(m), b(m);
+  for (int k = 0; k < 3000; ++k) a.step(x_at(k), i_at(k));
+  a.reset();
+  for (int k = 0; k < 3000; ++k) ASSERT_EQ(a.step(x_at(k), i_at(k)).force, b.step(x_at(k), i_at(k)).force);
+}
+
+TEST(ObserverEffects, ValidateReportsEffectFieldsUnderTheirPath) {
+  DamperModel m;
+  m.effects.coil_lag.time_constant = -1.0;
+  const auto report = validate(m);
+  ASSERT_FALSE(report.ok());
+  EXPECT_EQ(report.issues().front().field, "effects.coil_lag.time_constant");
+}
+
+}  // namespace

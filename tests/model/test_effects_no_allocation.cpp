@@ -1,0 +1,71 @@
+// Every optional effect on: the observer's, the plant's and the control law's steps still make
+// no heap allocation. Its own binary, so that the hook sees every allocation of the process.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "firmware/control_law.hpp"
+#include "model/observer.hpp"
+#include "sim/damper_plant.hpp"
+#include "tests/support/allocation_counter.hpp"
+
+namespace {
+
+using mrd::test::start_counting_allocations;
+using mrd::test::stop_counting_allocations;
+
+constexpr int kSteps = 100000;
+
+mrd::model::DamperModel every_effect_on() {
+  mrd::model::DamperModel m;
+  auto& e = m.effects;
+  e.coil_lag.enabled = true;
+  e.preyield_hysteresis.enabled = true;
+  e.preyield_hysteresis.n = 1.7;  // the std::pow path as well
+  e.gas_spring = {true, 1500.0, 3e4};
+  e.thermal_drift.enabled = true;
+  e.sensor_delay = {true, 3.5e-3};
+  e.stroke_end_air.enabled = true;
+  return m;
+}
+
+double x_at(int k) { return 0.045 * std::sin(2.0 * std::numbers::pi * 0.5 * k * 1e-3); }
+double v_at(int k) { return 0.045 * std::numbers::pi * std::cos(2.0 * std::numbers::pi * 0.5 * k * 1e-3); }
+double i_at(int k) { return 0.6 + 0.6 * std::sin(2.0 * std::numbers::pi * 0.7 * k * 1e-3); }
+
+TEST(RealTimeEffects, ObserverStepsWithEveryEffectDoNotAllocate) {
+  mrd::model::Observer filtered(every_effect_on());
+  mrd::model::Observer sensed(every_effect_on());
+  double sink = 0.0;
+  start_counting_allocations();
+  for (int k = 0; k < kSteps; ++k) {
+    sink += filtered.step(x_at(k), i_at(k)).force;
+    sink += sensed.step(x_at(k), v_at(k), i_at(k)).force;
+    if (k == kSteps / 2) sensed.set_measured_temperature(35.0);
+  }
+  EXPECT_EQ(stop_counting_allocations(), 0u);
+  EXPECT_TRUE(std::isfinite(sink));
+}
+
+TEST(RealTimeEffects, PlantStepsWithEveryEffectDoNotAllocate) {
+  mrd::sim::DamperPlant plant(every_effect_on(), mrd::sim::PlantSettings{1e-3, 5e-6, 20.0, 3});
+  double sink = 0.0;
+  start_counting_allocations();
+  for (int k = 0; k < kSteps; ++k) sink += plant.step(x_at(k), v_at(k), i_at(k)).measured_force;
+  EXPECT_EQ(stop_counting_allocations(), 0u);
+  EXPECT_TRUE(std::isfinite(sink));
+}
+
+TEST(RealTimeEffects, ControlLawStepWithEveryEffectDoesNotAllocate) {
+  mrd::firmware::ControlLawConfig config;
+  config.damper = every_effect_on();
+  mrd::firmware::ControlLaw law(config);
+  double coil = 0.0;
+  start_counting_allocations();
+  for (int k = 0; k < kSteps; ++k) coil = law.step(x_at(k), coil).command_current;
+  EXPECT_EQ(stop_counting_allocations(), 0u);
+  EXPECT_TRUE(std::isfinite(coil));
+}
+
+}  // namespace

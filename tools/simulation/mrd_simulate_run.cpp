@@ -1,0 +1,131 @@
+// mrd-simulate-run: a recorded-run CSV from the simulated damper, optionally carrying effects the
+// run does not declare (the test material of the residual analysis, docs/CLOSING-THE-LOOP.md).
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "model/effects/effect_set.hpp"
+#include "tools/simulation/run_csv.hpp"
+#include "tools/simulation/run_generator.hpp"
+
+namespace {
+
+void list_effects() {
+  for (const char* name : {"50kN", "1kN"}) {
+    const auto c = *mrd::tools::find_damper_class(name);
+    std::printf("%s class, size 1 (small = 0.5, large = 2 times it):\n", name);
+    std::printf("  coil_lag             tau = %.3g ms\n", c.coil_time_constant * 1e3);
+    std::printf("  preyield_hysteresis  %.3g of the yield force on z, z_max = %.3g mm\n", c.preyield_fraction,
+                c.preyield_travel * 1e3);
+    std::printf("  gas_spring           F0 = %.4g N, k = %.4g N/m\n", c.gas_preload, c.gas_stiffness);
+    std::printf("  thermal_drift        the run heats the fluid by %.3g K\n", c.thermal_rise);
+    std::printf("  sensor_delay         %.3g ms\n", c.sensor_delay * 1e3);
+    std::printf("  stroke_end_air       depth %.2f after reversals beyond %.3g mm, recovery %.3g mm\n",
+                c.stroke_end_depth, c.stroke_end_threshold * 1e3, c.stroke_end_length * 1e3);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Write a recorded-run CSV from the simulated damper, with effects it does not declare"};
+  mrd::tools::RunOptions options;
+  std::string out;
+  std::string profile = "table4";
+  std::string damper = "50kN";
+  std::vector<std::string> effects;
+  double amplitude_mm = 0.0;
+  double noise_um = -1.0;
+  std::string manifest;
+  mrd::tools::RunColumns columns;
+  bool no_velocity = false;
+  bool show_effects = false;
+  bool report_residual = false;
+  app.add_option("--out", out, "the CSV to write");
+  app.add_option("--profile", profile,
+                 "table4 (sine, Table 4 currents), paper-sines (0.05-1 Hz, Table 4 currents), sine "
+                 "(constant current), random (band-limited motion, constant current), telegraph "
+                 "(band-limited motion, random telegraph current)")
+      ->capture_default_str();
+  app.add_option("--damper", damper, "damper class: 50kN or 1kN")->capture_default_str();
+  app.add_option("--rate", options.rate, "sample rate [Hz]")->capture_default_str();
+  app.add_option("--duration", options.duration,
+                 "seconds; default 5 cycles (sines), 30 s (random, telegraph), the whole sequence");
+  app.add_option("--frequency", options.frequency, "sine frequency [Hz]")->capture_default_str();
+  app.add_option("--amplitude-mm", amplitude_mm, "sine amplitude or random peak [mm]; default the class's");
+  app.add_option("--current", options.current,
+                 "constant current, or the telegraph's high level [A]; default half (telegraph: all) "
+                 "of the class's maximum");
+  app.add_option("--cycles", options.cycles, "paper-sines: cycles per frequency")->capture_default_str();
+  app.add_option("--dwell", options.dwell, "telegraph mean dwell [s]")->capture_default_str();
+  app.add_option("--noise-um", noise_um, "LVDT noise RMS [um]; default the class's");
+  app.add_option("--force-noise-n", options.force_noise, "load-cell noise RMS [N]; default the class's");
+  app.add_option("--seed", options.seed, "noise, random motion and telegraph seed")->capture_default_str();
+  app.add_option("--effect", effects, "NAME[:SIZE], repeatable; SIZE small, medium, large or a factor");
+  app.add_flag("--with-B", columns.B, "add the B_T column");
+  app.add_flag("--with-temperature", columns.temperature, "add the temperature_C column");
+  app.add_flag("--no-velocity", no_velocity, "leave out the velocity_mm_s column");
+  app.add_option("--manifest", manifest, "also write what the run carries, as JSON");
+  app.add_flag("--residual", report_residual,
+               "also print the RMS error of the class's base model replayed on the written run, and of "
+               "the model with the effects the run carries (the best a residual analysis can reach)");
+  app.add_flag("--list-effects", show_effects, "print the effects' sizes per damper class and exit");
+  CLI11_PARSE(app, argc, argv);
+
+  if (show_effects) {
+    list_effects();
+    return 0;
+  }
+  const auto fail = [](const std::string& message) {
+    std::fprintf(stderr, "mrd-simulate-run: %s\n", message.c_str());
+    return 2;
+  };
+  if (out.empty()) return fail("--out FILE is required");
+  const auto parsed_profile = mrd::tools::parse_run_profile(profile);
+  if (!parsed_profile) return fail("unknown profile '" + profile + "'");
+  options.profile = *parsed_profile;
+  const auto damper_class = mrd::tools::find_damper_class(damper);
+  if (!damper_class) return fail("unknown damper class '" + damper + "' (50kN, 1kN)");
+  options.damper = *damper_class;
+  options.amplitude = amplitude_mm * 1e-3;
+  options.lvdt_noise = noise_um < 0.0 ? -1.0 : noise_um * 1e-6;
+  columns.velocity = !no_velocity;
+  for (const auto& text : effects) {
+    std::string error;
+    const auto request = mrd::tools::parse_effect_request(text, error);
+    if (!request) return fail(error);
+    options.effects.push_back(*request);
+  }
+  if (const std::string problems = mrd::tools::check(mrd::tools::resolve(options)); !problems.empty()) {
+    return fail(problems);
+  }
+
+  const mrd::tools::SimulatedRun run = mrd::tools::simulate_run(options);
+  std::ofstream file(out);
+  if (!file) return fail("cannot write " + out);
+  mrd::tools::write_run_csv(file, run, columns);
+  if (!manifest.empty()) {
+    std::ofstream json(manifest);
+    if (!json) return fail("cannot write " + manifest);
+    json << mrd::tools::run_manifest_json(run);
+  }
+  std::string carried;
+  for (const auto& e : run.options.effects) {
+    char size[32];
+    std::snprintf(size, sizeof size, ":%g", e.size);
+    carried += " " + e.name + size;
+  }
+  std::printf("mrd-simulate-run: %s, %s damper, %zu samples at %.0f Hz (%.1f s), seed %llu, effects:%s\n",
+              std::string(to_string(run.options.profile)).c_str(), run.options.damper.name.c_str(),
+              run.samples.size(), run.options.rate, run.options.duration,
+              static_cast<unsigned long long>(run.options.seed), carried.empty() ? " none" : carried.c_str());
+  if (report_residual) {
+    std::printf("base model residual: %.4g N RMS; with the carried effects: %.4g N RMS (load-cell noise %.4g N)\n",
+                mrd::tools::model_residual(run), mrd::tools::model_residual(run, run.effects),
+                run.options.force_noise);
+  }
+  std::printf("wrote %s\n", out.c_str());
+  return 0;
+}
