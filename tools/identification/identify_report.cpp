@@ -6,22 +6,17 @@
 #include <sstream>
 
 #include "tools/gnuplot.hpp"
+#include "tools/json.hpp"
 
 namespace mrd::tools {
 
 namespace {
 
-std::string number(double x) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.9g", x);
-  return buffer;
-}
-
 std::string params_json(const Point& x) {
   std::string out = "{";
   for (int j = 0; j < kParameterCount; ++j) {
     out += (j ? ", \"" : "\"") + std::string(kParameterNames[static_cast<std::size_t>(j)]) +
-           "\": " + number(x[j]);
+           "\": " + json_number(x[j]);
   }
   return out + "}";
 }
@@ -32,18 +27,18 @@ std::string identify_json(const IdentifyResult& r) {
   std::ostringstream out;
   out << "{\n  \"algo\": \"" << algorithm_name(r.algorithm) << "\",\n"
       << "  \"params\": " << params_json(r.search.best) << ",\n"
-      << "  \"rmse_T\": " << number(r.fit.rmse) << ",\n"
+      << "  \"rmse_T\": " << json_number(r.fit.rmse) << ",\n"
       << "  \"evaluations\": " << r.search.evaluations << ",\n"
-      << "  \"wall_s\": " << number(r.wall_s) << ",\n"
+      << "  \"wall_s\": " << json_number(r.wall_s) << ",\n"
       << "  \"rounds\": " << r.rounds << ",\n"
       << "  \"start\": " << params_json(r.start) << ",\n"
       << "  \"bounds\": {\"lower\": " << params_json(r.bounds.lower)
       << ", \"upper\": " << params_json(r.bounds.upper) << "}";
   if (r.polish) {
     out << ",\n  \"polish\": {\"method\": \"levenberg-marquardt\", \"params\": "
-        << params_json(r.polish->best) << ", \"rmse_T\": " << number(r.polish->rmse)
+        << params_json(r.polish->best) << ", \"rmse_T\": " << json_number(r.polish->rmse)
         << ", \"evaluations\": " << r.polish->evaluations
-        << ", \"wall_s\": " << number(r.polish_wall_s) << "}";
+        << ", \"wall_s\": " << json_number(r.polish_wall_s) << "}";
   }
   out << "\n}\n";
   return out.str();
@@ -62,14 +57,14 @@ std::string identify_text(const IdentifyResult& r, const BHObjective& objective)
                   static_cast<long long>(evaluations), wall);
     out << line;
   };
-  out << objective.points() << " points; rms B " << number(rms) << " T\n";
+  out << objective.points() << " points; rms B " << json_number(rms) << " T\n";
   if (r.rounds > 1) {
     out << "the best point reached a face of the estimated box; searched " << r.rounds
         << " boxes, each re-centred on the best so far\n";
   }
-  out << "start          Ms=" << number(r.start[0]) << " a=" << number(r.start[1])
-      << " alpha=" << number(r.start[2]) << " k=" << number(r.start[3])
-      << " c=" << number(r.start[4]) << "\n";
+  out << "start          Ms=" << json_number(r.start[0]) << " a=" << json_number(r.start[1])
+      << " alpha=" << json_number(r.start[2]) << " k=" << json_number(r.start[3])
+      << " c=" << json_number(r.start[4]) << "\n";
   row(std::string(algorithm_name(r.algorithm)).c_str(), r.search.best, r.fit.rmse,
       r.search.evaluations, r.wall_s);
   if (r.fit.penalised) out << "warning: the best point is penalised (non-physical)\n";
@@ -104,7 +99,7 @@ std::string plot_identification(const IdentifyResult& r, const BHObjective& obje
   gp << "set terminal pngcairo size 900,650\n"
      << "set output '" << (fs::path(directory) / "identify_bh.png").string() << "'\n"
      << "set title 'B-H loops: measured and fitted (" << label << ", RMSE "
-     << number(r.polish ? r.polish->rmse : r.fit.rmse) << " T)' noenhanced\n"
+     << json_number(r.polish ? r.polish->rmse : r.fit.rmse) << " T)' noenhanced\n"
      << "set xlabel 'H [A/m]'\nset ylabel 'B [T]'\nset grid\nset key left top\n"
      << "plot '" << loops_file << "' using 1:2 with points pt 7 ps 0.4 title 'measured', '"
      << loops_file << "' using 1:3 with lines lw 2 title 'J-A fit'\n"

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "tools/gnuplot.hpp"
+#include "tools/json.hpp"
 
 namespace mrd::tools {
 
@@ -20,23 +21,6 @@ std::string format(const char* pattern, Args... args) {
   std::string out(static_cast<std::size_t>(std::max(n, 0)), '\0');
   std::snprintf(out.data(), out.size() + 1, pattern, args...);
   return out;
-}
-
-std::string json_number(double x) { return std::isfinite(x) ? format("%.9g", x) : "null"; }
-
-std::string json_string(std::string_view s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      out += format("\\u%04x", static_cast<unsigned>(c));
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
 }
 
 struct Range {

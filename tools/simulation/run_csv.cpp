@@ -3,30 +3,16 @@
 #include <cstdio>
 
 #include "firmware/effects_config.hpp"
+#include "tools/json.hpp"
 
 namespace mrd::tools {
 
 namespace {
 
-std::string number(double value) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.9g", value);
-  return buf;
-}
-
-std::string json_string(std::string_view text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (c == '\n') {
-      out += "\\n";
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
+std::string csv_number(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.9g", value);
+  return buffer;
 }
 
 }  // namespace
@@ -39,11 +25,11 @@ void write_run_csv(std::ostream& out, const SimulatedRun& run, const RunColumns&
   out << '\n';
   std::string row;
   for (const RunSample& s : run.samples) {
-    row = number(s.time) + ',' + number(s.displacement * 1e3) + ',' + number(s.current) + ',' +
-          number(s.force * 1e-3);
-    if (columns.velocity) row += ',' + number(s.velocity * 1e3);
-    if (columns.B) row += ',' + number(s.B);
-    if (columns.temperature) row += ',' + number(s.temperature);
+    row = csv_number(s.time) + ',' + csv_number(s.displacement * 1e3) + ',' +
+          csv_number(s.current) + ',' + csv_number(s.force * 1e-3);
+    if (columns.velocity) row += ',' + csv_number(s.velocity * 1e3);
+    if (columns.B) row += ',' + csv_number(s.B);
+    if (columns.temperature) row += ',' + csv_number(s.temperature);
     row += '\n';
     out << row;
   }
@@ -54,14 +40,14 @@ std::string run_manifest_json(const SimulatedRun& run) {
   std::string effects;
   for (const auto& e : o.effects) {
     effects += std::string(effects.empty() ? "" : ", ") + "{\"name\": " + json_string(e.name) +
-               ", \"size\": " + number(e.size) + "}";
+               ", \"size\": " + json_number(e.size) + "}";
   }
   return "{\n  \"damper_class\": " + json_string(o.damper.name) + ",\n  \"profile\": " +
-         json_string(to_string(o.profile)) + ",\n  \"rate_hz\": " + number(o.rate) +
-         ",\n  \"duration_s\": " + number(o.duration) + ",\n  \"samples\": " +
+         json_string(to_string(o.profile)) + ",\n  \"rate_hz\": " + json_number(o.rate) +
+         ",\n  \"duration_s\": " + json_number(o.duration) + ",\n  \"samples\": " +
          std::to_string(run.samples.size()) + ",\n  \"seed\": " + std::to_string(o.seed) +
-         ",\n  \"lvdt_noise_m\": " + number(o.lvdt_noise) + ",\n  \"force_noise_N\": " +
-         number(o.force_noise) + ",\n  \"effects\": [" + effects + "],\n  \"effects_toml\": " +
+         ",\n  \"lvdt_noise_m\": " + json_number(o.lvdt_noise) + ",\n  \"force_noise_N\": " +
+         json_number(o.force_noise) + ",\n  \"effects\": [" + effects + "],\n  \"effects_toml\": " +
          json_string(firmware::effects_toml(run.effects)) + "\n}\n";
 }
 
