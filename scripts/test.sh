@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Every test CI runs, in one command (the README's second quick-start command).
+# Stages run in order and the script stops at the first failure.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+stage() { printf '\n=== %s ===\n' "$1"; }
+
+stage "release: build and every fast test"
+cmake --workflow --preset release
