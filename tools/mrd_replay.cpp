@@ -63,6 +63,11 @@ int main(int argc, char** argv) {
                      "current driver gain [A/V], for runs that logged its command voltage");
   app.add_flag("--recorded-velocity", replay_options.use_recorded_velocity,
                "feed the run's velocity to the observer instead of the controller's filter");
+  double zero_phase = 0.0;
+  auto* zero_phase_option = app.add_option(
+      "--zero-phase-velocity", zero_phase,
+      "offline: the velocity from a zero-phase filter of the displacement at this cutoff [Hz] "
+      "(0: from the motion's spectrum), as mrd-residual uses, instead of the controller's causal filter");
   app.add_option("--plot", plot_dir,
                  "write the force-displacement, residual and current PNGs here");
   app.add_option("--csv", csv_path, "write the per-sample replay as CSV");
@@ -87,6 +92,7 @@ int main(int argc, char** argv) {
     if (current_option->count() > 0) read.current = current;
     if (rate_option->count() > 0) read.sample_rate = sample_rate;
     if (gain_option->count() > 0) replay_options.amps_per_volt = amps_per_volt;
+    if (zero_phase_option->count() > 0) replay_options.zero_phase_cutoff = zero_phase;
 
     const RecordedRun run = read_recorded_run(run_path, read);
     if (!candump_path.empty() &&

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "tools/csv.hpp"
+#include "tools/replay/zero_phase_velocity.hpp"
 
 namespace mrd::tools {
 
@@ -46,6 +47,9 @@ firmware::ControlLawConfig law_for(const RecordedRun& run, const ReplayOptions& 
   if (options.amps_per_volt && !std::isfinite(*options.amps_per_volt)) {
     throw InputError("--amps-per-volt must be a finite number");
   }
+  if (options.use_recorded_velocity && options.zero_phase_cutoff) {
+    throw InputError("--recorded-velocity and --zero-phase-velocity exclude each other");
+  }
   if (options.use_recorded_velocity && !run.has_velocity()) {
     throw InputError(run.name + ": --recorded-velocity, but the run has no velocity column");
   }
@@ -78,15 +82,23 @@ ReplayResult replay(const RecordedRun& run, const ReplayOptions& options) {
                   &t.command_current}) {
     v->resize(run.size());
   }
+  // The velocity a sensor would give: recorded, offline zero-phase, or none (the filter).
+  std::vector<double> offline;
+  if (options.zero_phase_cutoff) {
+    const double cutoff = *options.zero_phase_cutoff > 0.0 ? *options.zero_phase_cutoff
+                                                           : motion_velocity_cutoff(run.displacement, run.sample_rate);
+    offline = zero_phase_velocity(run.displacement, run.sample_rate, cutoff);
+  }
+  const std::vector<double>* sensor = options.use_recorded_velocity ? &run.velocity
+                                      : options.zero_phase_cutoff   ? &offline
+                                                                    : nullptr;
   for (std::size_t i = 0; i < run.size(); ++i) {
     const double x = run.displacement[i];
     const double current = run.coil[i] * gain;
-    const model::ObserverEstimate estimate = options.use_recorded_velocity
-                                                 ? observer.step(x, run.velocity[i], current)
-                                                 : observer.step(x, current);
-    const firmware::ControlOutput out = options.use_recorded_velocity
-                                            ? law.step(x, run.velocity[i], flowing)
-                                            : law.step(x, flowing);
+    const model::ObserverEstimate estimate =
+        sensor != nullptr ? observer.step(x, (*sensor)[i], current) : observer.step(x, current);
+    const firmware::ControlOutput out =
+        sensor != nullptr ? law.step(x, (*sensor)[i], flowing) : law.step(x, flowing);
     flowing = out.command_current;
     t.coil_current[i] = current;
     t.velocity[i] = estimate.velocity;

@@ -20,6 +20,10 @@ struct ReplayOptions {
   // Feed the run's recorded velocity to the observer (a velocity sensor) instead of the
   // controller's own velocity filter on the displacement.
   bool use_recorded_velocity = false;
+  // Offline analysis: the velocity from zero_phase_velocity at this cutoff [Hz] (0: from the
+  // motion's spectrum), fed to the observer and the law as a sensor's. Not what the controller
+  // can do (it cannot look ahead); for comparing models without the causal filter's lag.
+  std::optional<double> zero_phase_cutoff;
 };
 
 // What the controller's code computed at each sample of the run, index for index.

@@ -44,9 +44,9 @@ double real_time_factor(const ReplayContext& c, double seconds) {
 }
 
 std::string velocity_source(const ReplayContext& c) {
-  return c.options.use_recorded_velocity ? "recorded"
-                                         : format("the controller's filter (%g Hz)",
-                                                  c.options.law.observer.velocity_cutoff_frequency);
+  if (c.options.use_recorded_velocity) return "recorded";
+  if (c.options.zero_phase_cutoff) return "offline zero-phase filter of the displacement";
+  return format("the controller's filter (%g Hz)", c.options.law.observer.velocity_cutoff_frequency);
 }
 
 std::string coil_description(const ReplayContext& c) {

@@ -1,0 +1,89 @@
+// The fit's building blocks: the linear terms describe a real model exactly, the swarm and
+// Nelder-Mead recover a known parameter, and the residual's structure is read correctly.
+#include "tools/residual/model_fit.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "tools/residual/candidate_effects.hpp"
+#include "tools/residual/residual_structure.hpp"
+#include "tests/tools/residual/residual_test_support.hpp"
+
+namespace {
+
+using namespace mrd::tools;
+
+FitSeries table4_series(std::vector<EffectRequest> effects = {}) {
+  return make_fit_series({residual_testing::simulated_recorded_run(RunProfile::kTable4, "50kN", std::move(effects), 4.0)}, {});
+}
+
+TEST(ModelFit, LinearTermsAreTheModelTheyDescribe) {
+  const FitSeries s = table4_series();
+  const mrd::model::DamperModel base;
+  std::vector<double> f, scaled;
+  predict_force(base, s, f);
+  const LinearTerms t{0.37, 2500.0, true, 120.0, 4000.0};
+  predict_force(apply_linear_terms(base, t), s, scaled);
+  double worst = 0.0, largest = 0.0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const double expected = t.force_scale * f[i] + t.extra_viscous * s.velocity[i] + t.preload + t.stiffness * s.displacement[i];
+    worst = std::max(worst, std::fabs(scaled[i] - expected));
+    largest = std::max(largest, std::fabs(expected));
+  }
+  EXPECT_LT(worst, 1e-9 * largest);
+}
+
+TEST(ModelFit, LinearTermsComeBackFromAScaledForce) {
+  const FitSeries truth = table4_series();
+  std::vector<double> f;
+  predict_force(mrd::model::DamperModel{}, truth, f);
+  FitSeries s = truth;
+  for (std::size_t i = 0; i < s.size(); ++i) s.force[i] = 0.5 * f[i] - 800.0 * s.velocity[i];
+  const LinearTerms t = fit_linear_terms(s, f, false);
+  EXPECT_NEAR(t.force_scale, 0.5, 1e-9);
+  EXPECT_NEAR(t.extra_viscous, -800.0, 1e-6);
+  EXPECT_LT(linear_fit_rms(s, f, t), 1e-6);
+}
+
+TEST(ModelFit, SwarmThenNelderMeadFindTheCoilTimeConstant) {
+  const FitSeries s = table4_series({{"coil_lag", 1.0}});  // tau 20 ms on the 50 kN class
+  const SeriesScales scales = series_scales(s);
+  const ParameterSpace space = effect_space("coil_lag", mrd::model::DamperModel{}, scales);
+  WorkerPool pool(2);
+  const FittedModel swarm = fit_space(space, s, &pool, 7, 32);
+  const FittedModel fit = refine_space(space, s, swarm.theta, 40, 0.02);
+  EXPECT_NEAR(fit.model.effects.coil_lag.time_constant, 0.020, 0.001);
+  EXPECT_LE(fit.fitting_rms, swarm.fitting_rms + 1e-9);
+  EXPECT_LT(fit.fitting_rms, 40.0);  // the load cell's 25 N noise, and little else
+}
+
+TEST(ResidualStructure, WhiteNoiseIsWhite) {
+  const FitSeries s = table4_series();
+  std::mt19937_64 rng(1);
+  std::normal_distribution<double> noise(0.0, 30.0);
+  std::vector<double> r(s.size());
+  for (double& v : r) v = noise(rng);
+  const ResidualStructure st = analyse_residual(s, r);
+  EXPECT_NEAR(st.noise_floor, 30.0, 2.0);
+  EXPECT_NEAR(st.rms, 30.0, 2.0);
+  EXPECT_NE(describe(st).find("white, at the noise floor"), std::string::npos) << describe(st);
+}
+
+TEST(ResidualStructure, APeriodicComponentAndTheStrokeEndsAreNamed) {
+  const FitSeries s = table4_series();
+  std::vector<double> periodic(s.size()), ends(s.size());
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const double t = static_cast<double>(i) * s.sample_period;
+    periodic[i] = 500.0 * std::sin(2.0 * M_PI * 3.0 * t);
+    ends[i] = std::fabs(s.displacement[i]) > 0.036 ? 800.0 : 0.0;
+  }
+  const std::string p = describe(analyse_residual(s, periodic));
+  // 4 s of data: bins of 0.244 Hz, so 3 Hz reads 2.93.
+  EXPECT_NE(p.find("a periodic component at 2.93 Hz"), std::string::npos) << p;
+  const std::string e = describe(analyse_residual(s, ends));
+  EXPECT_NE(e.find("error concentrates at the stroke ends"), std::string::npos) << e;
+}
+
+}  // namespace

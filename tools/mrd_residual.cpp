@@ -1,0 +1,131 @@
+// mrd-residual: fits the J-A + Bingham model to a recorded run, finds the residual, tries each
+// candidate effect on part of the run and validates it on the rest, accepts the effects that
+// pass, and writes the error before and after, an updated config and JSON.
+// See docs/CLOSING-THE-LOOP.md, "mrd-residual".
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "firmware/config_loader.hpp"
+#include "tools/csv.hpp"
+#include "tools/replay/run_reader.hpp"
+#include "tools/residual/residual_report.hpp"
+#include "tools/residual/residual_search.hpp"
+
+namespace {
+
+using namespace mrd::tools;
+
+bool write_file(const std::string& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+  return static_cast<bool>(out);
+}
+
+std::vector<std::string> split_names(const std::string& text) {
+  std::vector<std::string> names;
+  std::stringstream in(text);
+  for (std::string name; std::getline(in, name, ',');)
+    if (!name.empty()) names.push_back(name);
+  return names;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Fit the damper model to a recorded run, trace the residual to missing effects, add them"};
+  std::vector<std::string> run_paths;
+  std::string columns_text, config_path, json_path, plot_dir, config_out, candidates_text;
+  double current = 0.0, sample_rate = 0.0, amps_per_volt = 0.0;
+  RunReadOptions read;
+  FitSeriesOptions series_options;
+  ResidualOptions options;
+  app.add_option("runs", run_paths,
+                 "one run, or several analysed together (one model for all, e.g. tests at several currents)")
+      ->required();
+  app.add_option("--columns", columns_text, "map a foreign file's columns (as mrd-replay); units: " + known_unit_names());
+  auto* current_option = app.add_option("--current", current, "constant coil current of the run [A]");
+  auto* from_name = app.add_flag("--current-from-name", read.current_from_name,
+                                 "read each run's constant current from its file name (25mm0x25Hz0x5A.txt: 0.5 A)");
+  current_option->excludes(from_name);
+  auto* rate_option = app.add_option("--sample-rate", sample_rate, "[Hz], for files without a time column");
+  auto* gain_option = app.add_option("--amps-per-volt", amps_per_volt,
+                                     "current driver gain [A/V], for runs that logged its command voltage");
+  app.add_option("--config", config_path,
+                 "the controller's TOML config: the damper to start from and the effects it declares "
+                 "(default: the embedded one)");
+  app.add_option("--json", json_path, "write the result as JSON");
+  app.add_option("--write-config", config_out, "write the updated config (the fitted damper, accepted effects on)");
+  app.add_option("--plot", plot_dir, "write force-displacement, residual-time and residual-phase PNGs here");
+  app.add_option("--candidates", candidates_text, "comma-separated candidate effects (default: all)");
+  app.add_option("--threshold", options.minimum_reduction,
+                 "fraction by which an effect must lower the validation error to be accepted")
+      ->capture_default_str();
+  app.add_option("--velocity-cutoff", series_options.velocity_cutoff,
+                 "[Hz] zero-phase velocity filter, for runs without a velocity column (0: from the motion's spectrum)")
+      ->capture_default_str();
+  app.add_option("--max-fit-samples", options.max_fit_samples, "fits run on the run averaged down to this")
+      ->capture_default_str();
+  app.add_option("--threads", options.threads, "worker threads (0: every core)")->capture_default_str();
+  app.add_option("--seed", options.seed, "seed of the swarms")->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+
+  const auto config = config_path.empty() ? mrd::firmware::load_default_config()
+                                          : mrd::firmware::load_config_file(config_path);
+  if (!config.ok()) {
+    std::fprintf(stderr, "%s", config.report().c_str());
+    return 1;
+  }
+  options.start = config.config.law.damper;
+  options.candidates = split_names(candidates_text);
+  for (const auto& name : options.candidates) {
+    if (std::find(mrd::model::kEffectNames.begin(), mrd::model::kEffectNames.end(), name) ==
+        mrd::model::kEffectNames.end()) {
+      std::fprintf(stderr, "mrd-residual: --candidates: unknown effect '%s'\n", name.c_str());
+      return 1;
+    }
+  }
+  read.can = config.config.can;
+  try {
+    if (!columns_text.empty()) read.columns = parse_column_mapping(columns_text);
+    if (current_option->count() > 0) read.current = current;
+    if (rate_option->count() > 0) read.sample_rate = sample_rate;
+    if (gain_option->count() > 0) series_options.amps_per_volt = amps_per_volt;
+    std::vector<RecordedRun> runs;
+    for (const auto& path : run_paths) runs.push_back(read_recorded_run(path, read));
+    const FitSeries series = make_fit_series(runs, series_options);
+    const ResidualResult result = find_missing_effects(series, options);
+
+    std::fputs(residual_summary(runs, result).c_str(), stdout);
+    int status = 0;
+    if (!json_path.empty() && !write_file(json_path, residual_json(result))) {
+      std::fprintf(stderr, "mrd-residual: cannot write %s\n", json_path.c_str());
+      status = 1;
+    }
+    if (!config_out.empty()) {
+      std::string text;
+      if (config_path.empty()) {
+        text = std::string(mrd::firmware::default_config_text());
+      } else {
+        std::ifstream in(config_path);
+        std::ostringstream all;
+        all << in.rdbuf();
+        text = all.str();
+      }
+      if (!write_file(config_out, updated_config(text, result))) {
+        std::fprintf(stderr, "mrd-residual: cannot write %s\n", config_out.c_str());
+        status = 1;
+      }
+    }
+    if (!plot_dir.empty()) {
+      const std::string name = runs.size() == 1 ? runs.front().name : std::to_string(runs.size()) + " runs";
+      if (const auto why = plot_residual(series, result, name, plot_dir); !why.empty())
+        std::fprintf(stderr, "mrd-residual: plot skipped: %s\n", why.c_str());
+    }
+    return status;
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "mrd-residual: %s\n", e.what());
+    return 2;
+  }
+}

@@ -1,0 +1,21 @@
+#pragma once
+
+#include <span>
+#include <vector>
+
+namespace mrd::tools {
+
+// Velocity [m/s] from displacement [m] for offline analysis: a second-order Butterworth
+// low-pass at `cutoff` [Hz], run forwards and then backwards (no phase lag, unlike the
+// controller's causal filter), then central differences. Non-causal: for tools that see the
+// whole run, never for the control loop. Both passes start at rest on their first sample, so
+// a run that starts in motion has a short transient at each end.
+[[nodiscard]] std::vector<double> zero_phase_velocity(std::span<const double> displacement,
+                                                      double sample_rate, double cutoff);
+
+// A cutoff [Hz] for zero_phase_velocity from the motion itself: five times the frequency below
+// which 99 % of the displacement's power lies (its |H|^2 is 0.9984 there), within
+// [2 Hz, 0.2 x the sample rate].
+[[nodiscard]] double motion_velocity_cutoff(const std::vector<double>& displacement, double sample_rate);
+
+}  // namespace mrd::tools

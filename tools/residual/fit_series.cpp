@@ -1,0 +1,105 @@
+#include "tools/residual/fit_series.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "tools/csv.hpp"
+#include "tools/replay/zero_phase_velocity.hpp"
+
+namespace mrd::tools {
+
+namespace {
+
+void check_run(const RecordedRun& run, const FitSeriesOptions& options) {
+  if (!run.has_force())
+    throw InputError(run.name + ": the run has no force column; a residual needs the measured force");
+  if (run.size() < 16 || !(run.sample_rate > 0.0))
+    throw InputError(run.name + ": too short for a residual analysis (at least 16 samples)");
+  if (run.coil_signal == CoilSignal::kCommandVoltage && !options.amps_per_volt)
+    throw InputError(run.name +
+                     ": the run logged the driver's command voltage, not the coil current: "
+                     "give the driver gain (--amps-per-volt)");
+}
+
+}  // namespace
+
+FitSeries make_fit_series(const std::vector<RecordedRun>& runs, const FitSeriesOptions& options) {
+  if (runs.empty()) throw InputError("no runs to analyse");
+  const bool with_temperature =
+      std::all_of(runs.begin(), runs.end(), [](const RecordedRun& r) { return r.has_temperature(); });
+  FitSeries s;
+  const int blocks = std::max(options.blocks, 2);
+  for (const RecordedRun& run : runs) {
+    check_run(run, options);
+    const double rate = run.sample_rate;
+    s.sample_period = s.run_periods.empty() ? 1.0 / rate : std::min(s.sample_period, 1.0 / rate);
+    s.run_periods.push_back(1.0 / rate);
+    const double gain =
+        run.coil_signal == CoilSignal::kCommandVoltage ? *options.amps_per_volt : 1.0;
+    std::vector<double> velocity = run.velocity;
+    if (!run.has_velocity()) {
+      double cutoff = options.velocity_cutoff;
+      if (cutoff <= 0.0) cutoff = motion_velocity_cutoff(run.displacement, rate);
+      velocity = zero_phase_velocity(run.displacement, rate, cutoff);
+      s.notes.push_back(run.name + ": velocity from the displacement, zero-phase low-pass at " +
+                        std::to_string(cutoff) + " Hz");
+    }
+    s.run_starts.push_back(s.size());
+    const std::size_t n = run.size();
+    // Half the blocks validate: a fixed shuffle, the same for every run and every call.
+    std::vector<std::uint8_t> held_out(static_cast<std::size_t>(blocks));
+    for (std::size_t b = 0; b < held_out.size(); ++b) held_out[b] = b % 2 == 1;
+    std::mt19937 shuffle_rng(20261121u + static_cast<unsigned>(s.run_starts.size()));
+    for (std::size_t b = held_out.size() - 1; b > 0; --b)
+      std::swap(held_out[b], held_out[shuffle_rng() % (b + 1)]);
+    for (std::size_t i = 0; i < n; ++i) {
+      s.displacement.push_back(run.displacement[i]);
+      s.velocity.push_back(velocity[i]);
+      s.current.push_back(run.coil[i] * gain);
+      s.force.push_back(run.force[i]);
+      if (with_temperature) s.temperature.push_back(run.temperature[i]);
+      const auto block = static_cast<int>((i * static_cast<std::size_t>(blocks)) / n);
+      s.validation.push_back(held_out[static_cast<std::size_t>(block)]);
+    }
+  }
+  return s;
+}
+
+std::size_t decimation_factor(const FitSeries& series, std::size_t max_samples) {
+  return std::max<std::size_t>(1, (series.size() + max_samples - 1) / std::max<std::size_t>(max_samples, 1));
+}
+
+FitSeries decimate(const FitSeries& series, std::size_t wanted, double min_rate) {
+  if (wanted <= 1) return series;
+  FitSeries out;
+  out.notes = series.notes;
+  std::vector<std::size_t> ends(series.run_starts.begin() + 1, series.run_starts.end());
+  ends.push_back(series.size());
+  const bool with_temperature = !series.temperature.empty();
+  const auto mean = [](const std::vector<double>& v, std::size_t from, std::size_t to) {
+    double sum = 0.0;
+    for (std::size_t i = from; i < to; ++i) sum += v[i];
+    return sum / static_cast<double>(to - from);
+  };
+  for (std::size_t r = 0; r < ends.size(); ++r) {
+    const double rate = 1.0 / series.run_periods[r];
+    const std::size_t factor = std::clamp<std::size_t>(
+        wanted, 1, static_cast<std::size_t>(std::max(1.0, std::floor(rate / min_rate))));
+    out.run_periods.push_back(series.run_periods[r] * static_cast<double>(factor));
+    out.sample_period = r == 0 ? out.run_periods[0] : std::min(out.sample_period, out.run_periods[r]);
+    out.run_starts.push_back(out.size());
+    for (std::size_t from = series.run_starts[r]; from < ends[r]; from += factor) {
+      const std::size_t to = std::min(from + factor, ends[r]);
+      out.displacement.push_back(mean(series.displacement, from, to));
+      out.velocity.push_back(mean(series.velocity, from, to));
+      out.current.push_back(mean(series.current, from, to));
+      out.force.push_back(mean(series.force, from, to));
+      if (with_temperature) out.temperature.push_back(mean(series.temperature, from, to));
+      out.validation.push_back(series.validation[from]);
+    }
+  }
+  return out;
+}
+
+}  // namespace mrd::tools

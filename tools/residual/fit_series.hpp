@@ -1,0 +1,55 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tools/replay/recorded_run.hpp"
+
+namespace mrd::tools {
+
+// One or more recorded runs as the residual analysis sees them: SI channels at one rate, the
+// coil current in amperes, a velocity for every sample, and which samples validate.
+struct FitSeries {
+  double sample_period = 0.0;  // [s], the shortest of the runs
+  std::vector<double> run_periods;  // [s], each run's own
+  std::vector<double> displacement;  // [m]
+  std::vector<double> velocity;      // [m/s]: recorded, or zero_phase_velocity
+  std::vector<double> current;       // [A]
+  std::vector<double> force;         // [N], measured
+  std::vector<double> temperature;   // [degC], empty when no run recorded it
+  // The first sample of each run: the model starts again from a demagnetised core there.
+  std::vector<std::size_t> run_starts;
+  // 1 for samples held out for validation, 0 for those the fits may use.
+  std::vector<std::uint8_t> validation;
+  std::vector<std::string> notes;  // how the series was made, for the reports
+
+  [[nodiscard]] std::size_t size() const { return displacement.size(); }
+};
+
+struct FitSeriesOptions {
+  std::optional<double> amps_per_volt;  // for runs that logged the driver's command voltage
+  // [Hz] of zero_phase_velocity, for runs without velocity; <= 0: five times the frequency below
+  // which 99 % of the displacement's power lies, within [2 Hz, 0.2 x the sample rate].
+  double velocity_cutoff = 0.0;
+  // Each run is cut into this many equal blocks, half of which validate, drawn at random with a
+  // fixed seed: alternate blocks would lock onto the phase of a periodic motion whenever a
+  // period spans an even number of them (a fit would then see only some phases).
+  int blocks = 24;
+};
+
+// Throws InputError when a run has no force, a voltage run comes without a gain, or the runs
+// differ in rate by more than 1 %.
+FitSeries make_fit_series(const std::vector<RecordedRun>& runs, const FitSeriesOptions& options);
+
+// Every `factor` samples averaged into one (all channels alike, so no channel moves in time
+// against another), or fewer for a run that would fall below `min_rate` [Hz]; run boundaries
+// and the validation blocks are kept.
+FitSeries decimate(const FitSeries& series, std::size_t factor, double min_rate);
+
+// The factor that brings the series to at most `max_samples`.
+std::size_t decimation_factor(const FitSeries& series, std::size_t max_samples);
+
+}  // namespace mrd::tools

@@ -1,0 +1,295 @@
+#include "tools/residual/model_fit.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "model/observer.hpp"
+#include "tools/identification/particle_swarm.hpp"
+
+namespace mrd::tools {
+
+void predict_force(const model::DamperModel& model, const FitSeries& series,
+                   std::vector<double>& force) {
+  force.resize(series.size());
+  const bool with_temperature = !series.temperature.empty();
+  model::ObserverSettings settings;
+  for (std::size_t r = 0; r < series.run_starts.size(); ++r) {
+    settings.sample_period = series.run_periods[r];
+    const std::size_t from = series.run_starts[r];
+    const std::size_t to = r + 1 < series.run_starts.size() ? series.run_starts[r + 1] : series.size();
+    model::Observer observer(model, settings);
+    for (std::size_t i = from; i < to; ++i) {
+      if (with_temperature) observer.set_measured_temperature(series.temperature[i]);
+      force[i] = observer.step(series.displacement[i], series.velocity[i], series.current[i]).force;
+    }
+  }
+}
+
+ResidualRms residual_rms(const FitSeries& series, const std::vector<double>& predicted) {
+  double sum[2] = {0.0, 0.0};
+  std::size_t count[2] = {0, 0};
+  ResidualRms out;
+  for (std::size_t i = 0; i < series.size(); ++i) {
+    const double r = series.force[i] - predicted[i];
+    sum[series.validation[i]] += r * r;
+    ++count[series.validation[i]];
+    out.max = std::max(out.max, std::fabs(r));
+  }
+  const auto rms = [](double s, std::size_t n) { return n > 0 ? std::sqrt(s / static_cast<double>(n)) : 0.0; };
+  out.fitting = rms(sum[0], count[0]);
+  out.validation = rms(sum[1], count[1]);
+  out.all = rms(sum[0] + sum[1], count[0] + count[1]);
+  return out;
+}
+
+namespace {
+
+// Columns of the linear fit at sample i.
+int fill_columns(const FitSeries& s, const std::vector<double>& predicted, bool spring,
+                 std::size_t i, double* column) {
+  column[0] = predicted[i];
+  column[1] = s.velocity[i];
+  if (!spring) return 2;
+  column[2] = 1.0;
+  column[3] = s.displacement[i];
+  return 4;
+}
+
+}  // namespace
+
+LinearTerms fit_linear_terms(const FitSeries& series, const std::vector<double>& predicted,
+                             bool with_spring) {
+  const int n = with_spring ? 4 : 2;
+  Eigen::Matrix4d normal = Eigen::Matrix4d::Zero();
+  Eigen::Vector4d rhs = Eigen::Vector4d::Zero();
+  double column[4];
+  for (std::size_t i = 0; i < series.size(); ++i) {
+    if (series.validation[i] != 0) continue;
+    fill_columns(series, predicted, with_spring, i, column);
+    for (int r = 0; r < n; ++r) {
+      rhs[r] += column[r] * series.force[i];
+      for (int c = 0; c < n; ++c) normal(r, c) += column[r] * column[c];
+    }
+  }
+  // A light ridge keeps the solve defined when a column is all zero (no force predicted at all).
+  for (int r = 0; r < n; ++r) normal(r, r) += 1e-12 * (normal(r, r) + 1.0);
+  const Eigen::VectorXd solution =
+      normal.topLeftCorner(n, n).ldlt().solve(rhs.head(n));
+  LinearTerms t;
+  t.force_scale = std::max(solution[0], 0.0);
+  t.extra_viscous = solution[1];
+  if (with_spring) {
+    t.with_spring = true;
+    t.preload = solution[2];
+    t.stiffness = solution[3];
+  }
+  return t;
+}
+
+double linear_fit_rms(const FitSeries& series, const std::vector<double>& predicted,
+                      const LinearTerms& t) {
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < series.size(); ++i) {
+    if (series.validation[i] != 0) continue;
+    double f = t.force_scale * predicted[i] + t.extra_viscous * series.velocity[i];
+    if (t.with_spring) f += t.preload + t.stiffness * series.displacement[i];
+    const double r = series.force[i] - f;
+    sum += r * r;
+    ++count;
+  }
+  return count > 0 ? std::sqrt(sum / static_cast<double>(count)) : 0.0;
+}
+
+model::DamperModel apply_linear_terms(model::DamperModel m, const LinearTerms& t) {
+  const double a = std::max(t.force_scale, 1e-9);
+  const model::BinghamDamper before(m.geometry, m.fluid.viscosity);
+  const double c0 = before.viscous_coefficient();
+  m.geometry.pole_length *= a;
+  // c0 is proportional to the viscosity at fixed geometry; a damper cannot have c0 <= 0.
+  const double target = std::max(a * c0 + t.extra_viscous, 1e-6 * a * c0);
+  const model::BinghamDamper scaled(m.geometry, m.fluid.viscosity);
+  m.fluid.viscosity *= target / scaled.viscous_coefficient();
+  auto& gas = m.effects.gas_spring;
+  if (gas.enabled) {
+    gas.preload *= a;
+    gas.stiffness *= a;
+  }
+  m.effects.preyield_hysteresis.stiffness *= a;
+  if (t.with_spring) {
+    gas.enabled = true;
+    gas.preload += t.preload;
+    gas.stiffness += t.stiffness;
+  }
+  return m;
+}
+
+namespace {
+
+double fitness_at(const ParameterSpace& space, const FitSeries& series, const Point& theta,
+                  std::vector<double>& buffer) {
+  const model::DamperModel model = space.build(theta);
+  if (!model::validate(model).ok()) return 1e300;
+  predict_force(model, series, buffer);
+  const LinearTerms terms = fit_linear_terms(series, buffer, space.with_spring);
+  const double rms = linear_fit_rms(series, buffer, terms);
+  return std::isfinite(rms) ? rms : 1e300;
+}
+
+// The swarm's objective: points in parallel on the pool (or serially), one buffer per worker.
+class SpaceObjective final : public BatchObjective {
+ public:
+  SpaceObjective(const ParameterSpace& space, const FitSeries& series, WorkerPool* pool)
+      : space_(space), series_(series), pool_(pool), buffers_(pool != nullptr ? pool->size() : 1) {}
+
+  void evaluate(const std::vector<Point>& points, std::vector<double>& fitness,
+                const std::vector<double>* /*cutoffs*/) override {
+    fitness.resize(points.size());
+    if (pool_ == nullptr) {
+      for (std::size_t i = 0; i < points.size(); ++i) fitness[i] = fitness_at(space_, series_, points[i], buffers_[0]);
+      return;
+    }
+    pool_->run(points.size(), [&](std::size_t i, unsigned worker) {
+      fitness[i] = fitness_at(space_, series_, points[i], buffers_[worker]);
+    });
+  }
+
+ private:
+  const ParameterSpace& space_;
+  const FitSeries& series_;
+  WorkerPool* pool_;
+  std::vector<std::vector<double>> buffers_;
+};
+
+FittedModel finish(const ParameterSpace& space, const FitSeries& series, const Point& theta,
+                   std::int64_t evaluations) {
+  FittedModel out;
+  out.theta = theta;
+  out.evaluations = evaluations;
+  std::vector<double> force;
+  const model::DamperModel model = space.build(theta);
+  predict_force(model, series, force);
+  out.linear = fit_linear_terms(series, force, space.with_spring);
+  out.fitting_rms = linear_fit_rms(series, force, out.linear);
+  out.model = apply_linear_terms(model, out.linear);
+  return out;
+}
+
+}  // namespace
+
+double space_fitness(const ParameterSpace& space, const FitSeries& series, const Point& p,
+                     std::vector<double>& buffer) {
+  return fitness_at(space, series, p, buffer);
+}
+
+FittedModel best_of(const ParameterSpace& space, const FitSeries& series, const std::vector<Point>& points) {
+  std::vector<double> buffer;
+  std::size_t best = 0;
+  double best_fitness = 1e301;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double f = fitness_at(space, series, points[i], buffer);
+    if (f < best_fitness) {
+      best_fitness = f;
+      best = i;
+    }
+  }
+  return finish(space, series, points.at(best), static_cast<std::int64_t>(points.size()) + 1);
+}
+
+ParameterSpace combine(const ParameterSpace& first, const ParameterSpace& second) {
+  ParameterSpace joint;
+  joint.name = first.name + "+" + second.name;
+  joint.parameters = first.parameters;
+  joint.parameters.insert(joint.parameters.end(), second.parameters.begin(), second.parameters.end());
+  const Eigen::Index n1 = first.bounds.dimension(), n2 = second.bounds.dimension();
+  joint.bounds.lower.resize(n1 + n2);
+  joint.bounds.upper.resize(n1 + n2);
+  joint.bounds.lower << first.bounds.lower, second.bounds.lower;
+  joint.bounds.upper << first.bounds.upper, second.bounds.upper;
+  joint.origin = first.origin;
+  joint.edit = [e1 = first.edit, e2 = second.edit, n1, n2](model::DamperModel m, const Point& p) {
+    return e2(e1(std::move(m), p.head(n1)), p.tail(n2));
+  };
+  joint.with_spring = first.with_spring || second.with_spring;
+  return joint;
+}
+
+FittedModel fit_space(const ParameterSpace& space, const FitSeries& series, WorkerPool* pool,
+                      std::uint64_t seed, int evaluations_per_parameter) {
+  const auto dimension = space.bounds.dimension();
+  if (dimension == 0) return finish(space, series, Point(0), 1);
+  SpaceObjective objective(space, series, pool);
+  Budget budget;
+  budget.population = static_cast<int>(std::clamp<Eigen::Index>(4 + 4 * dimension, 8, 16));
+  budget.evaluations = evaluations_per_parameter * dimension;
+  const OptimisationResult best = run_improved_pso(objective, space.bounds, budget, ImprovedPsoSettings{}, seed);
+  return finish(space, series, best.best, best.evaluations + 1);
+}
+
+FittedModel refine_space(const ParameterSpace& space, const FitSeries& series, const Point& start,
+                         int max_evaluations, double step) {
+  const auto n = space.bounds.dimension();
+  if (n == 0) return finish(space, series, Point(0), 1);
+  std::vector<double> buffer;
+  std::int64_t evaluations = 0;
+  const auto f = [&](const Point& p) {
+    ++evaluations;
+    return fitness_at(space, series, p, buffer);
+  };
+  // Simplex: the start and one step along each coordinate (away from the nearer bound).
+  std::vector<Point> x(static_cast<std::size_t>(n + 1), space.bounds.clamp(start));
+  std::vector<double> fx(x.size());
+  const Point range = space.bounds.upper - space.bounds.lower;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    Point& p = x[static_cast<std::size_t>(i + 1)];
+    const double h = step * range[i];
+    p[i] += (p[i] + h <= space.bounds.upper[i]) ? h : -h;
+  }
+  for (std::size_t i = 0; i < x.size(); ++i) fx[i] = f(x[i]);
+  std::vector<std::size_t> order(x.size());
+  while (evaluations < max_evaluations) {
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return fx[a] < fx[b]; });
+    const std::size_t best = order.front(), worst = order.back(), second = order[order.size() - 2];
+    if (fx[worst] - fx[best] <= 1e-7 * std::fabs(fx[best])) break;
+    Point centroid = Point::Zero(n);
+    for (std::size_t i = 0; i + 1 < order.size(); ++i) centroid += x[order[i]];
+    centroid /= static_cast<double>(n);
+    const auto along = [&](double t) { return space.bounds.clamp(centroid + t * (x[worst] - centroid)); };
+    const Point reflected = along(-1.0);
+    const double fr = f(reflected);
+    if (fr < fx[best]) {
+      const Point expanded = along(-2.0);
+      const double fe = f(expanded);
+      if (fe < fr) {
+        x[worst] = expanded;
+        fx[worst] = fe;
+      } else {
+        x[worst] = reflected;
+        fx[worst] = fr;
+      }
+    } else if (fr < fx[second]) {
+      x[worst] = reflected;
+      fx[worst] = fr;
+    } else {
+      const Point contracted = fr < fx[worst] ? along(-0.5) : along(0.5);
+      const double fc = f(contracted);
+      if (fc < std::min(fr, fx[worst])) {
+        x[worst] = contracted;
+        fx[worst] = fc;
+      } else {
+        for (std::size_t i = 0; i < x.size(); ++i) {
+          if (i == best) continue;
+          x[i] = space.bounds.clamp(x[best] + 0.5 * (x[i] - x[best]));
+          fx[i] = f(x[i]);
+        }
+      }
+    }
+  }
+  const auto best = static_cast<std::size_t>(std::min_element(fx.begin(), fx.end()) - fx.begin());
+  return finish(space, series, x[best], evaluations + 1);
+}
+
+}  // namespace mrd::tools

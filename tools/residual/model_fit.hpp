@@ -1,0 +1,103 @@
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "model/damper_model.hpp"
+#include "tools/identification/optimiser.hpp"
+#include "tools/identification/worker_pool.hpp"
+#include "tools/residual/fit_series.hpp"
+
+namespace mrd::tools {
+
+// The force [N] the observer predicts over the series: model::Observer with the series'
+// velocity as its velocity sensor, from a demagnetised core at each run start. A recorded
+// temperature is handed to the observer (it matters only with thermal_drift on).
+void predict_force(const model::DamperModel& model, const FitSeries& series,
+                   std::vector<double>& force);
+
+// RMS [N] of measured - predicted over the fitting samples, the validation samples and all.
+struct ResidualRms {
+  double fitting = 0.0;
+  double validation = 0.0;
+  double all = 0.0;
+  double max = 0.0;  // max |residual| over all samples
+};
+ResidualRms residual_rms(const FitSeries& series, const std::vector<double>& predicted);
+
+// Terms fitted by least squares on the fitting samples on top of a model's force F_m:
+//   F = a F_m + b v [+ F0 + k x]
+// a rescales the yield and viscous forces together (the damper's size), b corrects the
+// viscous coefficient, F0 + k x is a gas spring's. They make the search over the nonlinear
+// parameters cheap: each trial point costs one observer pass.
+struct LinearTerms {
+  double force_scale = 1.0;    // a [-], >= 0
+  double extra_viscous = 0.0;  // b [N s/m]
+  bool with_spring = false;
+  double preload = 0.0;        // F0 [N]
+  double stiffness = 0.0;      // k [N/m]
+};
+LinearTerms fit_linear_terms(const FitSeries& series, const std::vector<double>& predicted,
+                             bool with_spring);
+// F_fit - (a F_m + ...) as above, over the fitting samples: the search's fitness [N RMS].
+double linear_fit_rms(const FitSeries& series, const std::vector<double>& predicted,
+                      const LinearTerms& terms);
+
+// The model the terms describe: the pole length times a (yield and viscous force scale with
+// it), the viscosity set so that c0 becomes a c0 + b, force-like effect parameters (gas
+// spring, Bouc-Wen stiffness) times a, and the spring's F0 and k added. The observer then
+// predicts a F_m + b v + F0 + k x exactly for the base model, and closely with effects on
+// (thermal_drift and stroke_end_air scale b v too); the reports always evaluate the model
+// itself, never this approximation.
+model::DamperModel apply_linear_terms(model::DamperModel model, const LinearTerms& terms);
+
+// Changes a model at search coordinates p: sets a base parameter or an effect's.
+using ModelEdit = std::function<model::DamperModel(model::DamperModel, const Point&)>;
+
+// A family of models over a few nonlinear parameters, in search coordinates: edit(origin, p).
+struct ParameterSpace {
+  std::string name;
+  std::vector<std::string> parameters;  // names of the search coordinates, for reports
+  Bounds bounds;                         // may have dimension 0: only the linear terms
+  model::DamperModel origin;
+  ModelEdit edit;
+  bool with_spring = false;  // fit F0 + k x among the linear terms
+
+  [[nodiscard]] model::DamperModel build(const Point& p) const { return edit(origin, p); }
+};
+
+// The coordinates of `first` followed by those of `second`, both edits applied to first's
+// origin in that order: a joint refinement of, say, the base parameters and a new effect.
+ParameterSpace combine(const ParameterSpace& first, const ParameterSpace& second);
+
+// The search's fitness at p: one observer pass, the linear terms solved, RMS over the fitting
+// samples [N]; 1e300 for a model that fails validation. `buffer` is scratch.
+double space_fitness(const ParameterSpace& space, const FitSeries& series, const Point& p,
+                     std::vector<double>& buffer);
+
+struct FittedModel {
+  Point theta;                // the best search coordinates
+  LinearTerms linear;
+  model::DamperModel model;   // apply_linear_terms(build(theta), linear)
+  double fitting_rms = 0.0;   // of the linear fit at theta [N]
+  std::int64_t evaluations = 0;
+};
+
+// The improved PSO of the identification (tools/identification/particle_swarm.hpp) over the
+// space's coordinates, the linear terms solved at each point; `evaluations` per coordinate,
+// one observer pass each, spread over `pool` (serial when it is null). Deterministic for the
+// seed.
+FittedModel fit_space(const ParameterSpace& space, const FitSeries& series, WorkerPool* pool,
+                      std::uint64_t seed, int evaluations_per_parameter = 48);
+
+// The best of `points` by space_fitness (serial), as a fit.
+FittedModel best_of(const ParameterSpace& space, const FitSeries& series, const std::vector<Point>& points);
+
+// Nelder-Mead from `start` inside the space's bounds (points are clamped), serial: the local
+// joint refinement after a swarm. Initial steps are `step` of each coordinate's range.
+FittedModel refine_space(const ParameterSpace& space, const FitSeries& series, const Point& start,
+                         int max_evaluations, double step = 0.1);
+
+}  // namespace mrd::tools

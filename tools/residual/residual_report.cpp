@@ -1,0 +1,220 @@
+#include "tools/residual/residual_report.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <toml++/toml.h>
+
+#include "firmware/effects_config.hpp"
+#include "tools/gnuplot.hpp"
+#include "tools/json.hpp"
+#include "tools/residual/candidate_effects.hpp"
+
+namespace mrd::tools {
+
+namespace {
+
+template <typename... Args>
+std::string format(const char* pattern, Args... args) {
+  const int n = std::snprintf(nullptr, 0, pattern, args...);
+  std::string out(static_cast<std::size_t>(std::max(n, 0)), '\0');
+  std::snprintf(out.data(), out.size() + 1, pattern, args...);
+  return out;
+}
+
+// Each candidate once: the trial of the round it was accepted in, else its last.
+std::vector<const CandidateTrial*> final_trials(const ResidualResult& r) {
+  std::vector<const CandidateTrial*> out;
+  for (const CandidateTrial& t : r.trials) {
+    auto it = std::find_if(out.begin(), out.end(), [&](const CandidateTrial* o) { return o->effect == t.effect; });
+    if (it == out.end())
+      out.push_back(&t);
+    else if (!(*it)->accepted)
+      *it = &t;
+  }
+  return out;
+}
+
+double range_of(const std::vector<double>& v) {
+  const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+  return v.empty() ? 0.0 : *hi - *lo;
+}
+
+}  // namespace
+
+std::string residual_summary(const std::vector<RecordedRun>& runs, const ResidualResult& r) {
+  std::string out;
+  for (const RecordedRun& run : runs) {
+    out += format("%s: %zu samples, %.6g s at %.6g Hz\n", run.name.c_str(), run.size(), run.duration(),
+                  run.sample_rate);
+    for (const auto& note : run.notes) out += "  note: " + note + "\n";
+  }
+  for (const auto& note : r.notes) out += "note: " + note + "\n";
+  out += format("fitted on %zu samples (every %zu averaged), half the blocks held out for validation\n",
+                r.fit_samples, r.decimation);
+  out += "base model (J-A + Bingham, lumped):\n";
+  for (const auto& line : r.base_parameters) out += "  " + line + "\n";
+  out += format("before: RMS %.4g N, max %.4g N (validation blocks %.4g N)\n", r.before.all, r.before.max,
+                r.before.validation);
+  out += "  residual: " + describe(r.structure_before) + "\n";
+  int round = 0;
+  for (const CandidateTrial& t : r.trials) {
+    if (t.round != round) {
+      round = t.round;
+      out += format("round %d (validation RMS %.4g N):\n", round, t.validation_before);
+    }
+    out += format("  %-20s validation %10.4g N  whole run %10.4g N  %s\n", t.effect.c_str(), t.validation_rms,
+                  t.rms_after, t.verdict.c_str());
+    if (!t.parameters.empty()) {
+      out += "  " + std::string(22, ' ') + "fitted:";
+      for (const auto& [key, value] : t.parameters) out += format(" %s %.4g", key.c_str(), value);
+      out += "\n";
+    }
+  }
+  if (r.accepted.empty()) {
+    out += "effect: none\n";
+  } else {
+    out += "effects accepted:";
+    for (const auto& e : r.accepted) out += " " + e;
+    out += "\n";
+    for (const auto& e : r.accepted) {
+      out += "  " + e + ":";
+      for (const auto& [key, value] : effect_parameters(e, r.final_model.effects))
+        out += format(" %s %.4g", key.c_str(), value);
+      out += "\n";
+    }
+  }
+  out += format("after: RMS %.4g N, max %.4g N (%.1f%% of before)\n", r.after.all, r.after.max,
+                r.before.all > 0.0 ? 100.0 * r.after.all / r.before.all : 0.0);
+  out += "unexplained: " + r.unexplained + "\n";
+  out += format("analysed %zu samples in %.2f s\n", r.samples, r.seconds);
+  return out;
+}
+
+std::string residual_json(const ResidualResult& r) {
+  std::ostringstream j;
+  j << "{\n  \"samples\": " << r.samples << ",\n";
+  j << "  \"rms_before_N\": " << json_number(r.before.all) << ",\n";
+  j << "  \"max_before_N\": " << json_number(r.before.max) << ",\n";
+  j << "  \"effects\": [";
+  for (std::size_t i = 0; i < r.accepted.size(); ++i) j << (i ? ", " : "") << json_string(r.accepted[i]);
+  j << "],\n  \"effect\": " << json_string(r.accepted.empty() ? "none" : r.accepted.front()) << ",\n";
+  j << "  \"rms_after_N\": " << json_number(r.after.all) << ",\n";
+  j << "  \"max_after_N\": " << json_number(r.after.max) << ",\n";
+  j << "  \"effect_params\": {";
+  for (std::size_t i = 0; i < r.accepted.size(); ++i) {
+    j << (i ? ", " : "") << "\n    " << json_string(r.accepted[i]) << ": {";
+    const auto params = effect_parameters(r.accepted[i], r.final_model.effects);
+    for (std::size_t k = 0; k < params.size(); ++k)
+      j << (k ? ", " : "") << json_string(params[k].first) << ": " << json_number(params[k].second);
+    j << "}";
+  }
+  j << (r.accepted.empty() ? "" : "\n  ") << "},\n  \"candidates\": [";
+  const auto trials = final_trials(r);
+  for (std::size_t i = 0; i < trials.size(); ++i) {
+    const CandidateTrial& t = *trials[i];
+    j << (i ? "," : "") << "\n    {\"effect\": " << json_string(t.effect) << ", \"rms_after_N\": "
+      << json_number(t.rms_after) << ", \"validation_rms_N\": " << json_number(t.validation_rms)
+      << ", \"accepted\": " << (t.accepted ? "true" : "false") << "}";
+  }
+  j << (trials.empty() ? "" : "\n  ") << "],\n  \"unexplained\": " << json_string(r.unexplained) << "\n}\n";
+  return j.str();
+}
+
+std::string updated_config(std::string_view config_text, const ResidualResult& r) {
+  toml::table root;
+  try {
+    root = toml::parse(config_text);
+  } catch (const toml::parse_error& e) {
+    throw std::runtime_error(std::string("the starting config does not parse: ") + std::string(e.description()));
+  }
+  const model::DamperModel& m = r.final_model;
+  auto* damper = root["damper"].as_table();
+  if (damper == nullptr) damper = root.insert_or_assign("damper", toml::table{}).first->second.as_table();
+  const auto set = [&](const char* table, const char* key, double value) {
+    auto* t = (*damper)[table].as_table();
+    if (t == nullptr) t = damper->insert_or_assign(table, toml::table{}).first->second.as_table();
+    t->insert_or_assign(key, value);
+  };
+  set("jiles_atherton", "Ms", m.jiles_atherton.Ms);
+  set("jiles_atherton", "a", m.jiles_atherton.a);
+  set("jiles_atherton", "alpha", m.jiles_atherton.alpha);
+  set("jiles_atherton", "k", m.jiles_atherton.k);
+  set("jiles_atherton", "c", m.jiles_atherton.c);
+  set("circuit", "turns", m.circuit.turns);
+  set("circuit", "effective_length", m.circuit.effective_length);
+  set("fluid", "viscosity", m.fluid.viscosity);
+  set("fluid", "volume_fraction", m.fluid.volume_fraction);
+  set("fluid", "particle_diameter", m.fluid.particle_diameter);
+  set("fluid", "particle_saturation", m.fluid.particle_saturation);
+  set("geometry", "piston_area", m.geometry.piston_area);
+  set("geometry", "pole_length", m.geometry.pole_length);
+  set("geometry", "gap", m.geometry.gap);
+  set("geometry", "piston_diameter", m.geometry.piston_diameter);
+  set("geometry", "sign_velocity_scale", m.geometry.sign_velocity_scale);
+  const toml::table effects = toml::parse(firmware::effects_toml(m.effects));
+  damper->insert_or_assign("effects", *effects["damper"]["effects"].as_table());
+  std::ostringstream out;
+  out << "# Written by mrd-residual: the damper fitted to the run";
+  if (!r.accepted.empty()) {
+    out << ", with";
+    for (const auto& e : r.accepted) out << ' ' << e;
+  }
+  out << ". Every other key is the starting config's.\n" << root << '\n';
+  return out.str();
+}
+
+std::string plot_residual(const FitSeries& s, const ResidualResult& r, const std::string& name,
+                          const std::string& directory) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::create_directories(directory, ec);
+  if (ec) return "cannot create " + directory + ": " + ec.message();
+  const std::size_t stride = std::max<std::size_t>(1, s.size() / 40000);
+  const std::string data = (fs::path(directory) / "residual.dat").string();
+  {
+    std::ofstream out(data);
+    for (std::size_t i = 0; i < s.size(); i += stride) {
+      out << static_cast<double>(i) * s.sample_period << ' ' << 1e3 * s.displacement[i] << ' ' << 1e3 * s.velocity[i]
+          << ' ' << s.force[i] << ' ' << r.predicted_before[i] << ' ' << r.predicted_after[i] << ' '
+          << s.force[i] - r.predicted_before[i] << ' ' << s.force[i] - r.predicted_after[i] << '\n';
+    }
+    if (!out) return "cannot write " + data;
+  }
+  std::string after = "after: none";
+  if (!r.accepted.empty()) {
+    after = "after: +";
+    for (const auto& e : r.accepted) after += " " + e;
+  }
+  const std::string figures = format("RMS %.4g N -> %.4g N (range %.4g N)", r.before.all, r.after.all, range_of(s.force));
+  auto png = [&](const char* file) { return (fs::path(directory) / file).string(); };
+  std::ostringstream gp;
+  gp << "set terminal pngcairo size 900,650\nset grid\nset key left top\n"
+     << "set output '" << png("residual_force_displacement.png") << "'\n"
+     << "set title '" << name << ": force against displacement, " << figures << "' noenhanced\n"
+     << "set xlabel 'displacement [mm]'\nset ylabel 'force [N]'\n"
+     << "plot '" << data << "' using 2:4 with points pt 7 ps 0.2 lc rgb '#888888' title 'measured', '" << data
+     << "' using 2:5 with points pt 7 ps 0.2 lc rgb '#1f77b4' title 'base model', '" << data
+     << "' using 2:6 with points pt 7 ps 0.2 lc rgb '#d62728' title '" << after << "'\n"
+     << "set output '" << png("residual_time.png") << "'\n"
+     << "set title '" << name << ": residual against time, " << figures << "' noenhanced\n"
+     << "set xlabel 'time in the analysed series [s]'\nset ylabel 'measured - predicted [N]'\n"
+     << "plot '" << data << "' using 1:7 with lines lw 1 lc rgb '#1f77b4' title 'base model', '" << data
+     << "' using 1:8 with lines lw 1 lc rgb '#d62728' title '" << after << "'\n"
+     << "set terminal pngcairo size 1200,500\nset output '" << png("residual_phase.png") << "'\n"
+     << "set multiplot layout 1,2 title '" << name << ": residual against the motion' noenhanced\n"
+     << "set title 'against displacement'\nset xlabel 'displacement [mm]'\n"
+     << "plot '" << data << "' using 2:7 with points pt 7 ps 0.2 lc rgb '#1f77b4' title 'base', '" << data
+     << "' using 2:8 with points pt 7 ps 0.2 lc rgb '#d62728' title 'after'\n"
+     << "set title 'against velocity'\nset xlabel 'velocity [mm/s]'\n"
+     << "plot '" << data << "' using 3:7 with points pt 7 ps 0.2 lc rgb '#1f77b4' title 'base', '" << data
+     << "' using 3:8 with points pt 7 ps 0.2 lc rgb '#d62728' title 'after'\n"
+     << "unset multiplot\n";
+  return run_gnuplot(gp.str());
+}
+
+}  // namespace mrd::tools

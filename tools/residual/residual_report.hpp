@@ -1,0 +1,34 @@
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tools/replay/recorded_run.hpp"
+#include "tools/residual/fit_series.hpp"
+#include "tools/residual/residual_search.hpp"
+
+namespace mrd::tools {
+
+// The human summary: the runs, the base fit, the error before, each round's candidates with
+// their verdicts, the accepted effects and their parameters, the error after, what remains.
+std::string residual_summary(const std::vector<RecordedRun>& runs, const ResidualResult& r);
+
+// The JSON of docs/CLOSING-THE-LOOP.md, exactly these keys (forces in N): samples,
+// rms_before_N, max_before_N, effects, effect, rms_after_N, max_after_N, effect_params,
+// candidates [{effect, rms_after_N, validation_rms_N, accepted}] (each candidate once: its
+// last round), unexplained.
+std::string residual_json(const ResidualResult& r);
+
+// `config_text` (the config the analysis started from) with its damper tables replaced by the
+// final model, the accepted effects enabled in [damper.effects.*]: mrd-controller --config and
+// mrd-replay --config load it as it is. Throws std::runtime_error if the text does not parse.
+std::string updated_config(std::string_view config_text, const ResidualResult& r);
+
+// residual_force_displacement.png (measured, base and final model against displacement),
+// residual_time.png (residual before and after against time) and residual_phase.png (the
+// residual against displacement and velocity). Returns "" or why not.
+std::string plot_residual(const FitSeries& series, const ResidualResult& r, const std::string& name,
+                          const std::string& directory);
+
+}  // namespace mrd::tools

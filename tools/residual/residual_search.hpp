@@ -1,0 +1,71 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "model/damper_model.hpp"
+#include "tools/residual/fit_series.hpp"
+#include "tools/residual/model_fit.hpp"
+#include "tools/residual/residual_structure.hpp"
+
+namespace mrd::tools {
+
+// The documented acceptance threshold: an effect is accepted only when, fitted on the fitting
+// blocks, it lowers the RMS error on the validation blocks by at least this fraction.
+inline constexpr double kMinimumValidationReduction = 0.25;
+
+struct ResidualOptions {
+  // The damper the fit starts from: the config's, or the default. Effects enabled here were
+  // declared by the config: they stay in the base model and are not candidates.
+  model::DamperModel start;
+  std::vector<std::string> candidates;  // default: every name of model::kEffectNames
+  double minimum_reduction = kMinimumValidationReduction;
+  // The fits run on the series averaged down to at most this many samples (never below
+  // min_fit_rate); every reported error is evaluated on the full series.
+  std::size_t max_fit_samples = 100000;
+  double min_fit_rate = 200.0;  // [Hz]
+  int evaluations_per_parameter = 64;
+  unsigned threads = 0;  // 0: every core
+  std::uint64_t seed = 1;
+};
+
+struct CandidateTrial {
+  std::string effect;
+  int round = 0;                   // 1 for the first greedy round
+  double validation_before = 0.0;  // the round's model on the validation blocks [N RMS]
+  double validation_rms = 0.0;     // with this effect added [N RMS]
+  double rms_after = 0.0;          // on the whole run, with this effect added [N]
+  double max_after = 0.0;          // [N]
+  bool accepted = false;
+  std::string verdict;  // why accepted or not
+  std::vector<std::pair<std::string, double>> parameters;
+};
+
+struct ResidualResult {
+  std::size_t samples = 0;      // of the full series
+  std::size_t fit_samples = 0;  // of the series the fits ran on
+  std::size_t decimation = 1;
+  std::vector<std::string> notes;  // how the series was made
+  std::vector<std::string> base_parameters;  // what the base fit found, one line each
+  model::DamperModel base;
+  model::DamperModel final_model;
+  ResidualRms before;  // base model, whole run
+  ResidualRms after;   // with the accepted effects (the base when none)
+  std::vector<std::string> accepted;  // in the order accepted
+  std::vector<CandidateTrial> trials;  // every round's
+  ResidualStructure structure_before;
+  ResidualStructure structure_after;
+  std::string unexplained;
+  std::vector<double> predicted_before;  // per sample of the full series [N]
+  std::vector<double> predicted_after;
+  double seconds = 0.0;  // wall time of the analysis
+};
+
+// Steps 1-4 of docs/CLOSING-THE-LOOP.md, "mrd-residual": fit the base model, analyse its
+// residual, fit each candidate effect on the fitting blocks and validate it on the others,
+// accept greedily while the best passes the threshold. Deterministic for the seed.
+ResidualResult find_missing_effects(const FitSeries& series, const ResidualOptions& options);
+
+}  // namespace mrd::tools
