@@ -77,11 +77,6 @@ FitSeries decimate(const FitSeries& series, std::size_t wanted, double min_rate)
   std::vector<std::size_t> ends(series.run_starts.begin() + 1, series.run_starts.end());
   ends.push_back(series.size());
   const bool with_temperature = !series.temperature.empty();
-  const auto mean = [](const std::vector<double>& v, std::size_t from, std::size_t to) {
-    double sum = 0.0;
-    for (std::size_t i = from; i < to; ++i) sum += v[i];
-    return sum / static_cast<double>(to - from);
-  };
   for (std::size_t r = 0; r < ends.size(); ++r) {
     const double rate = 1.0 / series.run_periods[r];
     const std::size_t factor = std::clamp<std::size_t>(
@@ -91,12 +86,13 @@ FitSeries decimate(const FitSeries& series, std::size_t wanted, double min_rate)
     out.run_starts.push_back(out.size());
     for (std::size_t from = series.run_starts[r]; from < ends[r]; from += factor) {
       const std::size_t to = std::min(from + factor, ends[r]);
-      out.displacement.push_back(mean(series.displacement, from, to));
-      out.velocity.push_back(mean(series.velocity, from, to));
-      out.current.push_back(mean(series.current, from, to));
-      out.force.push_back(mean(series.force, from, to));
-      if (with_temperature) out.temperature.push_back(mean(series.temperature, from, to));
-      out.validation.push_back(series.validation[from]);
+      const std::size_t mid = from + (to - from) / 2;
+      out.displacement.push_back(series.displacement[mid]);
+      out.velocity.push_back(series.velocity[mid]);
+      out.current.push_back(series.current[mid]);
+      out.force.push_back(series.force[mid]);
+      if (with_temperature) out.temperature.push_back(series.temperature[mid]);
+      out.validation.push_back(series.validation[mid]);
     }
   }
   return out;

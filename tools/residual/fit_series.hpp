@@ -44,9 +44,11 @@ struct FitSeriesOptions {
 // differ in rate by more than 1 %.
 FitSeries make_fit_series(const std::vector<RecordedRun>& runs, const FitSeriesOptions& options);
 
-// Every `factor` samples averaged into one (all channels alike, so no channel moves in time
-// against another), or fewer for a run that would fall below `min_rate` [Hz]; run boundaries
-// and the validation blocks are kept.
+// Every `factor`-th sample (the middle one of each block of `factor`), or fewer for a run that
+// would fall below `min_rate` [Hz]; run boundaries and the validation blocks are kept. Picked,
+// not averaged: the force is a nonlinear function of the current's history (J-A, Eq. 13), so the
+// force averaged over a block is not the force of the averaged current, which costs a fit on a
+// switched current more than the samples left out do.
 FitSeries decimate(const FitSeries& series, std::size_t factor, double min_rate);
 
 // The factor that brings the series to at most `max_samples`.

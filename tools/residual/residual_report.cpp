@@ -91,7 +91,8 @@ std::string residual_summary(const std::vector<RecordedRun>& runs, const Residua
   out += format("after: RMS %.4g N, max %.4g N (%.1f%% of before)\n", r.after.all, r.after.max,
                 r.before.all > 0.0 ? 100.0 * r.after.all / r.before.all : 0.0);
   out += "unexplained: " + r.unexplained + "\n";
-  out += format("analysed %zu samples in %.2f s\n", r.samples, r.seconds);
+  out += format("analysed %zu samples in %.2f s (%lld observer passes over the fitting series)\n", r.samples,
+                r.seconds, static_cast<long long>(r.evaluations));
   return out;
 }
 

@@ -46,8 +46,10 @@ std::vector<std::string> describe_base(const ParameterSpace& space, const Fitted
 // Nelder-Mead over the base parameters and those of every accepted effect together, three
 // times (each from the last one's model, so the linear terms come close to identity).
 model::DamperModel polish(const model::DamperModel& model, const std::vector<std::string>& accepted,
-                          const model::DamperModel& start, const SeriesScales& scales, const FitSeries& series) {
+                          const model::DamperModel& start, const SeriesScales& scales, const FitSeries& series,
+                          std::int64_t& evaluations) {
   model::DamperModel out = model;
+  std::int64_t count = 0;
   for (int pass = 0; pass < 3; ++pass) {
     ParameterSpace joint = base_space(out, start, scales);
     Point coordinates = base_coordinates(out, scales);
@@ -59,8 +61,11 @@ model::DamperModel polish(const model::DamperModel& model, const std::vector<std
       coordinates = both;
     }
     const auto dimension = static_cast<int>(joint.bounds.dimension());
-    out = refine_space(joint, series, coordinates, 10 + 20 * dimension, pass == 0 ? 0.02 : 0.005).model;
+    const FittedModel fit = refine_space(joint, series, coordinates, 10 + 20 * dimension, pass == 0 ? 0.02 : 0.005);
+    out = fit.model;
+    count += fit.evaluations;
   }
+  evaluations += count;
   return out;
 }
 
@@ -79,9 +84,11 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   std::uint64_t seed = options.seed;
 
   // 1. The base model.
-  const ParameterSpace base_fit_space = base_space(options.start, options.start, scales);
-  const FittedModel swarm = fit_space(base_fit_space, fit_series, &pool, seed++, 3 * options.evaluations_per_parameter);
+  const model::DamperModel& start = options.start;
+  const ParameterSpace base_fit_space = base_space(start, start, scales);
+  const FittedModel swarm = fit_space(base_fit_space, fit_series, &pool, seed++, 2 * options.evaluations_per_parameter);
   const FittedModel base = refine_space(base_fit_space, fit_series, swarm.theta, 60, 0.02);
+  std::atomic<std::int64_t> evaluations = swarm.evaluations + base.evaluations;
   result.base = base.model;
   result.base_parameters = describe_base(base_fit_space, base, options.start);
   predict_force(result.base, full, result.predicted_before);
@@ -93,7 +100,7 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   if (candidates.empty()) candidates.assign(model::kEffectNames.begin(), model::kEffectNames.end());
   std::erase_if(candidates, [&](const std::string& name) { return model::is_enabled(options.start.effects, name); });
 
-  model::DamperModel current = result.base;
+  model::DamperModel current = base.model;
   std::vector<double> scratch;
   predict_force(current, fit_series, scratch);
   double current_validation = residual_rms(fit_series, scratch).validation;
@@ -110,17 +117,20 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
       const ParameterSpace effect = effect_space(name, current, scales);
       const FittedModel alone =
           fit_space(effect, fit_series, nullptr, round_seed + k, options.evaluations_per_parameter);
+      std::int64_t spent = alone.evaluations;
       FittedModel fit = alone;
       if (name == "stroke_end_air") {
         // Coarse by rank over every reversal, then every reversal between the best's neighbours.
         const auto coarse = stroke_threshold_trials(fit_series, scales, alone.theta);
         fit = best_of(effect, fit_series, coarse);
+        spent += fit.evaluations;
         double lower = 0.0, upper = 1.0;
         for (const Point& p : coarse) {
           if (p[0] < fit.theta[0]) lower = std::max(lower, p[0]);
           if (p[0] > fit.theta[0]) upper = std::min(upper, p[0]);
         }
         fit = best_of(effect, fit_series, stroke_threshold_trials(fit_series, scales, fit.theta, lower, upper, 32));
+        spent += fit.evaluations;
       }
       // Twice: the second time from the first's model, whose linear terms are then close to
       // identity, so what the search saw and what the observer runs agree (the linear terms
@@ -129,10 +139,11 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
         const model::DamperModel& origin = evaluations_per_coordinate == 15 ? current : fit.model;
         const ParameterSpace joint =
             combine(base_space(origin, options.start, scales), effect_space(name, origin, scales));
-        Point start(joint.bounds.dimension());
-        start << base_coordinates(origin, scales), fit.theta;
+        Point from(joint.bounds.dimension());
+        from << base_coordinates(origin, scales), fit.theta;
         const auto dimension = static_cast<int>(joint.bounds.dimension());
-        fit = refine_space(joint, fit_series, start, 10 + evaluations_per_coordinate * dimension, 0.02);
+        fit = refine_space(joint, fit_series, from, 10 + evaluations_per_coordinate * dimension, 0.02);
+        spent += fit.evaluations;
         fit.theta = fit.theta.tail(effect.bounds.dimension()).eval();
       }
       std::vector<double> force;
@@ -142,6 +153,7 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
       trial.validation_before = current_validation;
       predict_force(fit.model, fit_series, force);
       trial.validation_rms = residual_rms(fit_series, force).validation;
+      evaluations += spent;
       predict_force(fit.model, full, force);
       const ResidualRms on_full = residual_rms(full, force);
       trial.rms_after = on_full.all;
@@ -168,7 +180,9 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
       result.accepted.push_back(trials[best].effect);
       // The next round compares its candidates with this model refined to convergence, so
       // no candidate is credited with what a longer refinement of this one would have found.
-      current = polish(fits[best].model, result.accepted, options.start, scales, fit_series);
+      std::int64_t polish_evaluations = 0;
+      current = polish(fits[best].model, result.accepted, start, scales, fit_series, polish_evaluations);
+      evaluations += polish_evaluations;
       predict_force(current, fit_series, scratch);
       current_validation = residual_rms(fit_series, scratch).validation;
       std::erase(candidates, trials[best].effect);
@@ -182,6 +196,7 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   }
 
   result.final_model = current;
+  result.evaluations = evaluations;
   predict_force(current, full, result.predicted_after);
   result.after = residual_rms(full, result.predicted_after);
   result.structure_after = analyse_residual(full, residual_of(full, result.predicted_after));

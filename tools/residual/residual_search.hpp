@@ -1,5 +1,6 @@
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -26,7 +27,7 @@ struct ResidualOptions {
   // min_fit_rate); every reported error is evaluated on the full series.
   std::size_t max_fit_samples = 100000;
   double min_fit_rate = 200.0;  // [Hz]
-  int evaluations_per_parameter = 64;
+  int evaluations_per_parameter = 40;
   unsigned threads = 0;  // 0: every core
   std::uint64_t seed = 1;
 };
@@ -60,6 +61,7 @@ struct ResidualResult {
   std::string unexplained;
   std::vector<double> predicted_before;  // per sample of the full series [N]
   std::vector<double> predicted_after;
+  std::int64_t evaluations = 0;  // observer passes over the fitting series
   double seconds = 0.0;  // wall time of the analysis
 };
 
