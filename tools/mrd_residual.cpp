@@ -12,6 +12,7 @@
 #include "tools/replay/run_reader.hpp"
 #include "tools/residual/residual_report.hpp"
 #include "tools/residual/residual_search.hpp"
+#include "tools/residual/spencer_reference.hpp"
 
 namespace {
 
@@ -58,6 +59,10 @@ int main(int argc, char** argv) {
   app.add_option("--json", json_path, "write the result as JSON");
   app.add_option("--write-config", config_out, "write the updated config (the fitted damper, accepted effects on)");
   app.add_option("--plot", plot_dir, "write force-displacement, residual-time and residual-phase PNGs here");
+  bool spencer = false;
+  app.add_flag("--reference-spencer-dyke", spencer,
+               "also report Spencer 1997's modified Bouc-Wen model with its published parameters for "
+               "Dyke's prototype damper (runs that logged the command voltage)");
   app.add_option("--candidates", candidates_text, "comma-separated candidate effects (default: all)");
   app.add_option("--threshold", options.minimum_reduction,
                  "fraction by which an effect must lower the validation error to be accepted")
@@ -98,6 +103,14 @@ int main(int argc, char** argv) {
     const ResidualResult result = find_missing_effects(series, options);
 
     std::fputs(residual_summary(runs, result).c_str(), stdout);
+    if (spencer) {
+      if (runs.size() != 1) throw InputError("--reference-spencer-dyke takes one run");
+      const ForceError s = spencer_dyke_reference(runs.front(), series);
+      const ForceError ours = force_error(series.force, result.predicted_after);
+      std::printf("reference, Spencer 1997 (published parameters): RMS %.4g N, max %.4g N, NRMSE %.4g; "
+                  "ours before %.4g, after %.4g\n",
+                  s.rms, s.max, s.nrmse, result.before.all / ours.measured_range, ours.nrmse);
+    }
     int status = 0;
     if (!json_path.empty() && !write_file(json_path, residual_json(result))) {
       std::fprintf(stderr, "mrd-residual: cannot write %s\n", json_path.c_str());

@@ -54,8 +54,9 @@ std::string residual_summary(const std::vector<RecordedRun>& runs, const Residua
     for (const auto& note : run.notes) out += "  note: " + note + "\n";
   }
   for (const auto& note : r.notes) out += "note: " + note + "\n";
-  out += format("fitted on %zu samples (every %zu averaged), half the blocks held out for validation\n",
-                r.fit_samples, r.decimation);
+  out += r.decimation == 1 ? format("fitted on all %zu samples", r.fit_samples)
+                           : format("fitted on %zu samples (every %zuth)", r.fit_samples, r.decimation);
+  out += format("; half of the %d blocks of each run held out for validation\n", FitSeriesOptions{}.blocks);
   out += "base model (J-A + Bingham, lumped):\n";
   for (const auto& line : r.base_parameters) out += "  " + line + "\n";
   out += format("before: RMS %.4g N, max %.4g N (validation blocks %.4g N)\n", r.before.all, r.before.max,

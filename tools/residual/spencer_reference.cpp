@@ -1,0 +1,21 @@
+#include "tools/residual/spencer_reference.hpp"
+
+#include <vector>
+
+#include "model/spencer_bouc_wen.hpp"
+#include "tools/csv.hpp"
+
+namespace mrd::tools {
+
+ForceError spencer_dyke_reference(const RecordedRun& run, const FitSeries& series) {
+  if (run.coil_signal != CoilSignal::kCommandVoltage)
+    throw InputError(run.name + ": Spencer's model takes the driver's command voltage; the run logged a current");
+  model::SpencerBoucWen spencer(model::SpencerBoucWenParams::dyke_prototype(), 1.0 / run.sample_rate);
+  spencer.reset(run.displacement.front());
+  std::vector<double> force(run.size());
+  for (std::size_t i = 0; i < run.size(); ++i)
+    force[i] = spencer.step(run.displacement[i], series.velocity[i], run.coil[i]);
+  return force_error(run.force, force);
+}
+
+}  // namespace mrd::tools
