@@ -122,6 +122,10 @@ int run_controller(const ControllerConfig& config, const RunOptions& options,
                  static_cast<unsigned long long>(queue->offered()),
                  static_cast<unsigned long long>(writer->written()),
                  static_cast<unsigned long long>(queue->dropped()), config.telemetry.path.c_str());
+    if (const auto t0 = writer->start_time()) {
+      std::fprintf(out, "telemetry: time_s 0 is CLOCK_MONOTONIC %.9f s\n",
+                   std::chrono::duration<double>(*t0).count());
+    }
   }
   return 0;
 }
