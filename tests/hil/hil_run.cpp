@@ -2,6 +2,7 @@
 
 #include <signal.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -17,6 +18,12 @@ namespace {
 using namespace std::chrono_literals;
 
 constexpr int kBusThreadPriority = 40;
+
+// The binaries: the build's, or where the environment says (inside the HIL VM).
+std::string binary(const char* variable, const char* built) {
+  const char* set = std::getenv(variable);
+  return set != nullptr ? set : built;
+}
 
 void write_file(const std::filesystem::path& path, const std::string& text) {
   std::ofstream(path) << text;
@@ -37,7 +44,7 @@ HilResult run_hil(const HilScenario& s) {
   write_file(plant_config, "[plant]\ncontroller_config = \"" + controller_config.string() +
                                "\"\nlog = \"" + plant_log.string() + "\"\n" + s.plant_toml);
 
-  std::vector<std::string> plant_args{MRD_PLANT_BINARY, "--config", plant_config.string()};
+  std::vector<std::string> plant_args{binary("MRD_PLANT", MRD_PLANT_BINARY), "--config", plant_config.string()};
   if (s.ephemeral_port) {
     plant_args.insert(plant_args.end(), {"--port", "0"});
   }
@@ -62,9 +69,10 @@ HilResult run_hil(const HilScenario& s) {
     return r;
   }
 
-  ChildProcess controller({MRD_CONTROLLER_BINARY, "--config", controller_config.string(), "--duration",
+  ChildProcess controller({binary("MRD_CONTROLLER", MRD_CONTROLLER_BINARY), "--config", controller_config.string(), "--duration",
                            std::to_string(s.controller_duration), "--telemetry", telemetry.string()},
                           kBusThreadPriority);
+  if (s.while_running) r.observed = s.while_running(controller);
   const auto limit = std::chrono::milliseconds(static_cast<long>(s.controller_duration * 1000.0)) + 20s;
   const auto controller_exit = controller.wait_exit(limit);
   plant.signal(SIGTERM);

@@ -1,6 +1,9 @@
 #pragma once
 
+#include <functional>
 #include <string>
+
+#include "tests/hil/child_process.hpp"
 #include <vector>
 
 #include "tools/hil/telemetry_csv.hpp"
@@ -16,6 +19,8 @@ struct HilScenario {
                                     // plant.log are set by the run)
   double controller_duration = 4.0;  // [s]
   bool ephemeral_port = true;       // Modbus TCP: the plant picks a port, the controller is told
+  // Called while the controller runs (e.g. to watch GPIO lines); its text lands in `observed`.
+  std::function<std::string(ChildProcess&)> while_running;
 };
 
 struct HilResult {
@@ -26,6 +31,7 @@ struct HilResult {
   std::vector<tools::TelemetryRow> telemetry;
   tools::RecordedRun plant_log;
   double offset = 0.0;  // plant log time of the telemetry's time 0 [s]
+  std::string observed;  // what while_running reported
   std::string failure;  // why the run could not be made ("" when it was)
 
   // The plant's time of a telemetry row.

@@ -9,6 +9,7 @@
 #include "firmware/config_loader.hpp"
 #include "model/current_schedule.hpp"
 #include "tests/hil/child_process.hpp"
+#include "tests/hil/hil_checks.hpp"
 #include "tests/hil/hil_run.hpp"
 #include "tools/hil/force_join.hpp"
 
@@ -16,9 +17,7 @@ namespace {
 
 using mrd::firmware::SupervisorState;
 using mrd::firmware::Trigger;
-using mrd::test::HilResult;
-using mrd::test::run_length_before;
-using mrd::tools::TelemetryRow;
+using namespace mrd::test;
 
 // The shipped HIL config, with the overrun trip off: these tests are about the bus, and a
 // shared CI machine overruns now and then.
@@ -32,81 +31,16 @@ const mrd::firmware::SupervisorConfig& safety() {
   return config;
 }
 
-bool fresh(const TelemetryRow& r) { return r.sample == "fresh" && r.overruns == 0; }
-
 HilResult run(const std::string& name, const std::string& faults, double duration = 4.0) {
   return mrd::test::run_hil({name, controller_toml(),
                              "[profile]\nkind = \"sine\"\namplitude = 0.040\nfrequency = 0.5\n" + faults,
-                             duration});
-}
-
-// Common to every run: both processes end cleanly, every telemetry record reaches the file,
-// and the last cycle is the shutdown one, in SAFE at 0 A.
-void expect_clean_run(const HilResult& r, double duration) {
-  ASSERT_TRUE(r.failure.empty()) << r.failure;
-  EXPECT_EQ(r.controller_exit, 0) << r.controller_output;
-  EXPECT_EQ(r.plant_exit, 0) << r.plant_output;
-  const auto cycles = mrd::test::find_number(r.controller_output, R"(cycles (\d+),)");
-  const auto offered = mrd::test::find_number(r.controller_output, R"((\d+) records offered)");
-  const auto written = mrd::test::find_number(r.controller_output, R"((\d+) written)");
-  const auto dropped = mrd::test::find_number(r.controller_output, R"((\d+) dropped)");
-  ASSERT_TRUE(cycles && offered && written && dropped) << r.controller_output;
-  EXPECT_EQ(*cycles, std::round(duration * 1000.0));
-  EXPECT_EQ(*offered, *cycles + 1) << "every cycle and the shutdown cycle offer a record";
-  EXPECT_EQ(*dropped, 0.0);
-  EXPECT_EQ(*written + *dropped, *offered);
-  EXPECT_EQ(static_cast<double>(r.telemetry.size()), *written);
-  ASSERT_FALSE(r.telemetry.empty());
-  EXPECT_EQ(r.telemetry.back().state, SupervisorState::kSafe);
-  EXPECT_NE(r.controller_output.find("-> SAFE (shutdown): 1"), std::string::npos) << r.controller_output;
-  EXPECT_EQ(r.telemetry.back().setpoint, 0.0);
-}
-
-// INIT -> RUN exactly when the run of good periods reaches recovery_periods.
-std::size_t expect_first_run(const HilResult& r) {
-  for (std::size_t i = 0; i < r.telemetry.size(); ++i) {
-    if (r.telemetry[i].state == SupervisorState::kInit) continue;
-    EXPECT_EQ(r.telemetry[i].state, SupervisorState::kRun);
-    EXPECT_EQ(r.telemetry[i].trigger, Trigger::kGoodPeriods);
-    EXPECT_EQ(run_length_before(r.telemetry, i, fresh), static_cast<std::size_t>(safety().recovery_periods));
-    return i;
-  }
-  ADD_FAILURE() << "never left INIT";
-  return 0;
-}
-
-// SAFE -> RUN after recovery_periods good periods. A good period also needs the previous
-// period's setpoint write to have succeeded, which the telemetry does not show: the first
-// period or two after a reconnect may have a fresh sample but the failed write of the period
-// before.
-void expect_recovery_length(const HilResult& r, std::size_t back) {
-  const std::size_t n = run_length_before(r.telemetry, back, fresh);
-  const auto m = static_cast<std::size_t>(safety().recovery_periods);
-  EXPECT_GE(n, m);
-  EXPECT_LE(n, m + 2);
-}
-
-// Every state change, for failure messages.
-std::string transitions(const HilResult& r) {
-  std::string out;
-  for (const auto& c : mrd::tools::state_changes(r.telemetry)) {
-    out += "  " + to_string(c) + " plant t " + std::to_string(c.time + r.offset) + "\n";
-  }
-  return out;
-}
-
-// The first row in `state` at or after plant time t, and its index.
-std::size_t first_in(const HilResult& r, SupervisorState state, double t) {
-  for (std::size_t i = 0; i < r.telemetry.size(); ++i) {
-    if (r.plant_time(r.telemetry[i]) >= t && r.telemetry[i].state == state) return i;
-  }
-  return r.telemetry.size();
+                             duration, true, {}});
 }
 
 TEST(HilModbus, Table4SineRunsWithTheScheduleFollowedAndNoRecordLost) {
   const HilResult r = run("nominal", "");
   expect_clean_run(r, 4.0);
-  const std::size_t run_at = expect_first_run(r);
+  const std::size_t run_at = expect_first_run(r, safety());
 
   // No SAFE but the final shutdown; the current command follows Table 4 in control: the
   // scheduled current is model::CurrentSchedule's on the displacement the loop held.
@@ -146,7 +80,7 @@ TEST(HilModbus, Table4SineRunsWithTheScheduleFollowedAndNoRecordLost) {
 TEST(HilModbus, ServerStallTripsSafeAfterStalePeriodsAndRecovers) {
   const HilResult r = run("stall", "[faults.stall]\nkind = \"server_stall\"\nstart = 2.0\nduration = 0.5\n", 5.0);
   expect_clean_run(r, 5.0);
-  expect_first_run(r);
+  expect_first_run(r, safety());
   const std::size_t safe = first_in(r, SupervisorState::kSafe, 2.0);
   ASSERT_LT(safe, r.telemetry.size()) << "never went SAFE";
   EXPECT_EQ(r.telemetry[safe].trigger, Trigger::kSensorStale) << transitions(r) << r.controller_output << r.plant_output;
@@ -160,7 +94,7 @@ TEST(HilModbus, ServerStallTripsSafeAfterStalePeriodsAndRecovers) {
   const std::size_t back = first_in(r, SupervisorState::kRun, 2.5);
   ASSERT_LT(back, r.telemetry.size()) << "never recovered";
   EXPECT_EQ(r.telemetry[back].trigger, Trigger::kGoodPeriods);
-  expect_recovery_length(r, back);
+  expect_recovery_length(r, back, safety());
   EXPECT_GE(r.plant_time(r.telemetry[back]), 2.5 + safety().recovery_periods * 1e-3);
 }
 
@@ -169,7 +103,7 @@ TEST(HilModbus, ServerStallTripsSafeAfterStalePeriodsAndRecovers) {
 TEST(HilModbus, ServerRestartTripsSafeAndTheControllerReconnects) {
   const HilResult r = run("restart", "[faults.restart]\nkind = \"server_restart\"\nstart = 2.0\nduration = 0.3\n", 5.0);
   expect_clean_run(r, 5.0);
-  expect_first_run(r);
+  expect_first_run(r, safety());
   const std::size_t safe = first_in(r, SupervisorState::kSafe, 2.0);
   ASSERT_LT(safe, r.telemetry.size()) << "never went SAFE";
   const Trigger why = r.telemetry[safe].trigger;
@@ -179,7 +113,7 @@ TEST(HilModbus, ServerRestartTripsSafeAndTheControllerReconnects) {
   EXPECT_NEAR(r.plant_time(r.telemetry[safe]), 2.0, 0.02);
   const std::size_t back = first_in(r, SupervisorState::kRun, 2.3);
   ASSERT_LT(back, r.telemetry.size()) << "never reconnected:\n" << r.controller_output;
-  expect_recovery_length(r, back);
+  expect_recovery_length(r, back, safety());
   EXPECT_NE(r.plant_output.find("restarts=1"), std::string::npos) << r.plant_output;
   EXPECT_NE(r.controller_output.find("connects=2"), std::string::npos) << r.controller_output;
 }
@@ -190,7 +124,7 @@ TEST(HilModbus, ServerRestartTripsSafeAndTheControllerReconnects) {
 TEST(HilModbus, SlowResponsesDegradeWithoutTrippingSafe) {
   const HilResult r = run("slow", "[faults.slow]\nkind = \"delay\"\nvalue = 0.0015\nstart = 2.0\nduration = 1.0\n", 4.5);
   expect_clean_run(r, 4.5);
-  expect_first_run(r);
+  expect_first_run(r, safety());
   std::size_t degraded = 0;
   std::size_t longest_gap = 0;
   for (std::size_t i = 0; i + 1 < r.telemetry.size(); ++i) {
@@ -211,7 +145,7 @@ TEST(HilModbus, SlowResponsesDegradeWithoutTrippingSafe) {
 TEST(HilModbus, OutOfRangeLvdtTripsSafeAfterBadSamplePeriods) {
   const HilResult r = run("range", "[faults.range]\nkind = \"lvdt_out_of_range\"\nvalue = 0.060\nstart = 2.0\nduration = 0.2\n", 4.0);
   expect_clean_run(r, 4.0);
-  expect_first_run(r);
+  expect_first_run(r, safety());
   const std::size_t safe = first_in(r, SupervisorState::kSafe, 2.0);
   ASSERT_LT(safe, r.telemetry.size());
   EXPECT_EQ(r.telemetry[safe].trigger, Trigger::kSampleOutOfRange);
