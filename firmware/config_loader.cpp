@@ -202,6 +202,7 @@ void read_all(TomlReader& in, ControllerConfig& c) {
   in.get("realtime.priority", c.realtime.priority);
   in.get("realtime.cpu", c.realtime.cpu);
   in.get("realtime.lock_memory", c.realtime.lock_memory);
+  in.get("realtime.io_priority", c.realtime.io_priority);
   in.get("telemetry.path", c.telemetry.path);
   in.get("telemetry.decimation", c.telemetry.decimation);
   in.get("telemetry.ring_size", c.telemetry.ring_size);
