@@ -17,10 +17,7 @@ B=build/release
 ./$B/tools/mrd-table4-run --out out "$@"
 echo
 mkdir -p out
-# Under SCHED_FIFO 40 when permitted, so the bus threads are real-time too (docs/HIL.md).
-fifo=()
-if chrt -f 40 true 2>/dev/null; then fifo=(chrt -f 40); fi
-"${fifo[@]}" ./$B/sim/plant/mrd-plant --config etc/mrd/plant.toml --log out/hil_plant.csv > out/hil_plant.out 2>&1 &
+./$B/sim/plant/mrd-plant --config etc/mrd/plant.toml --log out/hil_plant.csv > out/hil_plant.out 2>&1 &
 plant=$!
 trap 'kill $plant 2>/dev/null || true' EXIT
 # The plant says when it serves; wait for that line (bounded), not for a fixed time.
@@ -30,7 +27,7 @@ for _ in $(seq 100); do
   sleep 0.1
 done
 cat out/hil_plant.out
-"${fifo[@]}" ./$B/firmware/mrd-controller --config etc/mrd/hil-modbus.toml --duration 6 \
+./$B/firmware/mrd-controller --config etc/mrd/hil-modbus.toml --duration 6 \
   --telemetry out/hil_telemetry.csv | tee out/hil_controller.out
 kill -TERM $plant
 wait $plant || true

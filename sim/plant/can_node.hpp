@@ -46,6 +46,8 @@ class CanNode {
   [[nodiscard]] double setpoint() const { return setpoint_.load(std::memory_order_relaxed); }
   [[nodiscard]] bool enabled() const { return enable_.load(std::memory_order_relaxed); }
   [[nodiscard]] CanNodeCounters counters() const;
+  // Its I/O thread, for the caller's scheduling set-up.
+  [[nodiscard]] hal::IoThread& io_thread() { return thread_; }
   [[nodiscard]] const std::string& interface() const { return interface_; }
 
  private:

@@ -51,6 +51,8 @@ class ModbusServer {
   // The newest setpoint the controller wrote [A]; 0 before the first.
   [[nodiscard]] double setpoint() const { return setpoint_.load(std::memory_order_relaxed); }
   [[nodiscard]] ModbusServerCounters counters() const;
+  // Its I/O thread, for the caller's scheduling set-up.
+  [[nodiscard]] hal::IoThread& io_thread() { return thread_; }
 
  private:
   bool listen_tcp(std::string& error);

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "firmware/loop_report.hpp"
 #include "firmware/rt_runner.hpp"
@@ -159,7 +160,10 @@ int main(int argc, char** argv) {
                 modbus->endpoint().c_str());
   }
   if (can) std::printf("mrd-plant: can %s\n", can->interface().c_str());
-  // The bus threads are running at SCHED_OTHER; only the stepping thread goes real-time.
+  std::vector<mrd::hal::IoThread*> io_threads;
+  if (modbus) io_threads.push_back(&modbus->io_thread());
+  if (can) io_threads.push_back(&can->io_thread());
+  mrd::firmware::make_io_threads_realtime(config.realtime, io_threads, rt);
   mrd::firmware::make_current_thread_realtime(config.realtime, rt);
   for (const auto& w : rt.warnings) std::fprintf(stderr, "mrd-plant: warning: %s\n", w.c_str());
   std::printf("mrd-plant: ready\n");
@@ -169,15 +173,22 @@ int main(int argc, char** argv) {
   mrd::firmware::RealTimeRunner runner(period);
   mrd::firmware::LoopStatistics stats;
   std::optional<mrd::hal::Timestamp> start;
+  std::optional<double> fault_origin;  // plant time of fault time 0
+  const auto commanded_yet = [&] {
+    return (can && can->counters().commands > 0) || (modbus && modbus->counters().setpoints > 0);
+  };
   const auto max_cycles = static_cast<std::uint64_t>(config.duration * config.rate + 0.5);
   runner.run(
       [&](mrd::hal::Timestamp release) {
         if (!start) start = release;
         const double t = std::chrono::duration<double>(release - *start).count();
+        if (!fault_origin && (config.faults_from == mrd::plant::FaultClock::kStart || commanded_yet())) {
+          fault_origin = t;
+        }
         const double commanded = current_from_can ? (can->enabled() ? can->setpoint() : 0.0)
                                  : modbus         ? modbus->setpoint()
                                                   : 0.0;
-        const auto& s = rig->step(t, commanded);
+        const auto& s = rig->step(t, fault_origin ? t - *fault_origin : -1.0, commanded);
         if (modbus) modbus->publish(s.lvdt, s.reading.coil_current, s.faults);
         if (can) can->send(t, s.lvdt, s.reading.coil_current, s.faults);
         log.write(s);
@@ -190,6 +201,12 @@ int main(int argc, char** argv) {
   print_summary(stdout, stats, modbus.get(), can.get(), log, config.log);
   if (start) {
     std::printf("plant log: time_s 0 is CLOCK_MONOTONIC %.9f s\n", std::chrono::duration<double>(*start).count());
+  }
+  if (fault_origin) {
+    std::printf("plant faults: time 0 is plant log time_s %.6f s (%s)\n", *fault_origin,
+                config.faults_from == mrd::plant::FaultClock::kStart ? "the start" : "the first command");
+  } else if (!config.faults.empty()) {
+    std::printf("plant faults: none ran, no command came\n");
   }
   return 0;
 }

@@ -117,9 +117,12 @@ void read_all(const toml::table& root, TomlReader& in, PlantConfig& c, const std
   in.get("plant.force_noise", c.force_noise);
   in.get("plant.seed", c.seed);
   in.get("plant.log", c.log);
+  in.get_enum("plant.faults_from", c.faults_from,
+              {{"first_command", FaultClock::kFirstCommand}, {"start", FaultClock::kStart}});
   in.get("realtime.priority", c.realtime.priority);
   in.get("realtime.cpu", c.realtime.cpu);
   in.get("realtime.lock_memory", c.realtime.lock_memory);
+  in.get("realtime.io_priority", c.realtime.io_priority);
   read_profile(in, c.profile);
   in.get("modbus.enabled", c.modbus.enabled);
   in.get("modbus.listen", c.modbus.listen);

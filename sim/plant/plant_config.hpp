@@ -48,10 +48,14 @@ enum class FaultKind : std::uint8_t {
 };
 [[nodiscard]] std::string_view to_string(FaultKind k);
 
+// Where a fault's start counts from: the controller's first command (so a script means the
+// same however long the controller takes to start), or the plant's own start.
+enum class FaultClock : std::uint8_t { kFirstCommand, kStart };
+
 struct Fault {
   std::string name;  // its table: [faults.<name>]
   FaultKind kind = FaultKind::kFrameLoss;
-  double start = 0.0;     // [s] after the plant starts
+  double start = 0.0;     // [s] on the fault clock
   double duration = 0.0;  // [s]; 0: until the end of the run
   double value = 0.0;     // see FaultKind; 0 takes the kind's default
 
@@ -84,9 +88,10 @@ struct PlantConfig {
   double force_noise = 0.0;  // load cell RMS [N]
   std::uint32_t seed = 1;
   std::string log;           // recorded-run CSV ("": none)
-  // The stepping thread; below the controller's default 80, so on a shared host the
-  // controller's loop goes first.
-  firmware::RealtimeConfig realtime{70, -1, true};
+  FaultClock faults_from = FaultClock::kFirstCommand;
+  // The stepping thread below the controller's default 80, so on a shared host the
+  // controller's loop goes first; the bus threads below it.
+  firmware::RealtimeConfig realtime{70, -1, true, 60};
   ProfileConfig profile;
   ModbusServerConfig modbus;
   CanNodeConfig can;

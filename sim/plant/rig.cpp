@@ -53,13 +53,14 @@ Rig::Rig(const PlantConfig& config, Motion motion)
              sim::PlantSettings{config.period(), config.lvdt_noise, config.force_noise, config.seed}),
       faults_(config.faults) {}
 
-const RigSample& Rig::step(double t, double commanded) {
+const RigSample& Rig::step(double t, double fault_t, double commanded) {
   const auto [x, v] = std::visit(
       [t](const auto& m) { return std::pair{m.displacement(t), m.velocity(t)}; }, motion_);
   last_.time = t;
   last_.commanded = commanded;
   last_.reading = plant_.step(x, v, commanded);
-  last_.faults = active_faults(faults_, t);
+  last_.fault_time = fault_t;
+  last_.faults = fault_t < 0.0 ? ActiveFaults{} : active_faults(faults_, fault_t);
   double lvdt = last_.reading.lvdt_displacement;
   if (last_.faults.has(FaultKind::kLvdtFrozen)) {
     if (!frozen_) frozen_ = last_.lvdt;  // the value it had when the fault began

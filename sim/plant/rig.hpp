@@ -33,6 +33,7 @@ using Motion = std::variant<sim::SineProfile, sim::SineSequenceProfile, sim::Ran
 // One plant step: what happened and what the LVDT reports.
 struct RigSample {
   double time = 0.0;           // [s] since the start
+  double fault_time = -1.0;    // [s] on the fault clock; < 0 before it starts
   sim::PlantReading reading;   // the truth
   double lvdt = 0.0;           // what the LVDT reports, after the LVDT faults [m]
   double commanded = 0.0;      // the coil current the driver was told [A]
@@ -45,8 +46,9 @@ class Rig {
  public:
   Rig(const PlantConfig& config, Motion motion);
 
-  // `commanded` is the setpoint the driver holds this period (0 when it is disabled).
-  const RigSample& step(double t, double commanded);
+  // At plant time t and fault time fault_t (< 0: no fault yet); `commanded` is the setpoint
+  // the driver holds this period (0 when it is disabled).
+  const RigSample& step(double t, double fault_t, double commanded);
   [[nodiscard]] const RigSample& last() const { return last_; }
 
  private:

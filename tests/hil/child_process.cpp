@@ -1,7 +1,6 @@
 #include "tests/hil/child_process.hpp"
 
 #include <fcntl.h>
-#include <sched.h>
 #include <poll.h>
 #include <signal.h>
 #include <spawn.h>
@@ -14,7 +13,7 @@ extern char** environ;
 
 namespace mrd::test {
 
-ChildProcess::ChildProcess(const std::vector<std::string>& argv, int fifo_priority) {
+ChildProcess::ChildProcess(const std::vector<std::string>& argv) {
   int pipe_fds[2];
   if (pipe2(pipe_fds, O_CLOEXEC) != 0) return;
   posix_spawn_file_actions_t actions;
@@ -24,20 +23,7 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, int fifo_priori
   std::vector<char*> args;
   for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
-  posix_spawnattr_t attributes;
-  posix_spawnattr_init(&attributes);
-  if (fifo_priority > 0) {
-    sched_param param{};
-    param.sched_priority = fifo_priority;
-    posix_spawnattr_setschedpolicy(&attributes, SCHED_FIFO);
-    posix_spawnattr_setschedparam(&attributes, &param);
-    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSCHEDULER);
-  }
-  if (posix_spawn(&pid_, args[0], &actions, &attributes, args.data(), environ) != 0 &&
-      (fifo_priority <= 0 || posix_spawn(&pid_, args[0], &actions, nullptr, args.data(), environ) != 0)) {
-    pid_ = -1;
-  }
-  posix_spawnattr_destroy(&attributes);
+  if (posix_spawn(&pid_, args[0], &actions, nullptr, args.data(), environ) != 0) pid_ = -1;
   posix_spawn_file_actions_destroy(&actions);
   close(pipe_fds[1]);
   fd_ = pipe_fds[0];

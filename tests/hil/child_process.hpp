@@ -14,10 +14,7 @@ namespace mrd::test {
 // for an event (a line of output, the exit) and bounded by a limit; none sleeps a fixed time.
 class ChildProcess {
  public:
-  // `fifo_priority` > 0 starts it under SCHED_FIFO at that priority when permitted, so that
-  // every thread it starts inherits it (its bus threads, which the program leaves as they are);
-  // without the permission it starts under SCHED_OTHER.
-  explicit ChildProcess(const std::vector<std::string>& argv, int fifo_priority = 0);
+  explicit ChildProcess(const std::vector<std::string>& argv);
   ~ChildProcess();  // SIGKILL if still running
   ChildProcess(const ChildProcess&) = delete;
   ChildProcess& operator=(const ChildProcess&) = delete;
@@ -26,6 +23,8 @@ class ChildProcess {
   // Reads output until a line matches `pattern`; the match and its groups ([0] is the whole
   // match), or nullopt at the limit or at the end of the output.
   std::optional<std::vector<std::string>> wait_for_line(const std::regex& pattern, std::chrono::milliseconds limit);
+  // Reads output for up to `limit`; false once it has ended (the process is exiting).
+  bool read_for(std::chrono::milliseconds limit) { return read_some(limit); }
   // Reads all output and reaps the process; its exit code (128 + signal when killed), or
   // nullopt at the limit.
   std::optional<int> wait_exit(std::chrono::milliseconds limit);

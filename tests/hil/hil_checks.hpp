@@ -8,6 +8,7 @@
 #include <string>
 
 #include "firmware/supervisor.hpp"
+#include "model/current_schedule.hpp"
 #include "tests/hil/child_process.hpp"
 #include "tests/hil/hil_run.hpp"
 
@@ -65,19 +66,43 @@ inline void expect_recovery_length(const HilResult& r, std::size_t back, const m
   EXPECT_LE(n, m + 2);
 }
 
+// The current command follows Table 4 in control: the scheduled current is
+// model::CurrentSchedule's on the displacement the loop held, in every row in control. Returns
+// how many rows were in control.
+inline std::size_t expect_table4_followed(const HilResult& r) {
+  model::CurrentSchedule schedule;
+  std::size_t in_control = 0;
+  std::size_t mismatches = 0;
+  for (const auto& row : r.telemetry) {
+    const double scheduled = schedule.update(row.displacement);
+    if (!row.in_control()) continue;
+    ++in_control;
+    if (scheduled != row.scheduled_current) ++mismatches;
+  }
+  EXPECT_EQ(mismatches, 0u);
+  return in_control;
+}
+
 // Every state change, for failure messages.
 inline std::string transitions(const HilResult& r) {
   std::string out;
   for (const auto& c : mrd::tools::state_changes(r.telemetry)) {
-    out += "  " + to_string(c) + " plant t " + std::to_string(c.time + r.offset) + "\n";
+    out += "  " + to_string(c) + " fault clock t " + std::to_string(c.time + r.offset - r.fault_origin) + "\n";
   }
   return out;
 }
 
-// The first row in `state` at or after plant time t, and its index.
+// No SAFE before the shutdown cycle.
+inline void expect_never_safe_before_shutdown(const HilResult& r) {
+  for (std::size_t i = 0; i + 1 < r.telemetry.size(); ++i) {
+    ASSERT_NE(r.telemetry[i].state, SupervisorState::kSafe) << "cycle " << r.telemetry[i].cycle << "\n" << transitions(r);
+  }
+}
+
+// The first row in `state` at or after time t on the faults' clock, and its index.
 inline std::size_t first_in(const HilResult& r, SupervisorState state, double t) {
   for (std::size_t i = 0; i < r.telemetry.size(); ++i) {
-    if (r.plant_time(r.telemetry[i]) >= t && r.telemetry[i].state == state) return i;
+    if (r.fault_time(r.telemetry[i]) >= t && r.telemetry[i].state == state) return i;
   }
   return r.telemetry.size();
 }

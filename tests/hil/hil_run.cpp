@@ -17,8 +17,6 @@ namespace {
 
 using namespace std::chrono_literals;
 
-constexpr int kBusThreadPriority = 40;
-
 // The binaries: the build's, or where the environment says (inside the HIL VM).
 std::string binary(const char* variable, const char* built) {
   const char* set = std::getenv(variable);
@@ -48,9 +46,7 @@ HilResult run_hil(const HilScenario& s) {
   if (s.ephemeral_port) {
     plant_args.insert(plant_args.end(), {"--port", "0"});
   }
-  // Both under SCHED_FIFO 40 where permitted: the bus threads inherit it, below the loops
-  // (80, 70). Under SCHED_OTHER a loaded host delays a bus thread past stale_periods.
-  ChildProcess plant(plant_args, kBusThreadPriority);
+  ChildProcess plant(plant_args);
   if (!plant.started()) {
     r.failure = "cannot start mrd-plant";
     return r;
@@ -70,8 +66,7 @@ HilResult run_hil(const HilScenario& s) {
   }
 
   ChildProcess controller({binary("MRD_CONTROLLER", MRD_CONTROLLER_BINARY), "--config", controller_config.string(), "--duration",
-                           std::to_string(s.controller_duration), "--telemetry", telemetry.string()},
-                          kBusThreadPriority);
+                           std::to_string(s.controller_duration), "--telemetry", telemetry.string()});
   if (s.while_running) r.observed = s.while_running(controller);
   const auto limit = std::chrono::milliseconds(static_cast<long>(s.controller_duration * 1000.0)) + 20s;
   const auto controller_exit = controller.wait_exit(limit);
@@ -93,7 +88,9 @@ HilResult run_hil(const HilScenario& s) {
                 "--- plant\n" + r.plant_output;
     return r;
   }
+  r.controller_t0 = *controller_t0;
   r.offset = *controller_t0 - *plant_t0;
+  r.fault_origin = find_number(r.plant_output, R"(plant faults: time 0 is plant log time_s ([0-9.]+) s)").value_or(0.0);
   try {
     r.telemetry = tools::read_telemetry_csv(telemetry.string());
     r.plant_log = tools::read_recorded_run(plant_log.string());

@@ -3,8 +3,9 @@
 #include <functional>
 #include <string>
 
-#include "tests/hil/child_process.hpp"
 #include <vector>
+
+#include "tests/hil/child_process.hpp"
 
 #include "tools/hil/telemetry_csv.hpp"
 #include "tools/replay/recorded_run.hpp"
@@ -30,12 +31,15 @@ struct HilResult {
   std::string plant_output;
   std::vector<tools::TelemetryRow> telemetry;
   tools::RecordedRun plant_log;
+  double controller_t0 = 0.0;  // CLOCK_MONOTONIC of the telemetry's time 0 [s]
   double offset = 0.0;  // plant log time of the telemetry's time 0 [s]
+  double fault_origin = 0.0;  // plant log time of the faults' time 0 (the first command) [s]
   std::string observed;  // what while_running reported
   std::string failure;  // why the run could not be made ("" when it was)
 
-  // The plant's time of a telemetry row.
+  // The plant's time of a telemetry row, and its time on the faults' clock.
   [[nodiscard]] double plant_time(const tools::TelemetryRow& r) const { return r.time + offset; }
+  [[nodiscard]] double fault_time(const tools::TelemetryRow& r) const { return plant_time(r) - fault_origin; }
 };
 
 // Starts the plant, waits until it serves, runs the controller for its duration, stops the
