@@ -6,10 +6,10 @@ export PATH=/bin:/sbin
 mount -t proc proc /proc
 mount -t sysfs sysfs /sys
 mount -t devtmpfs devtmpfs /dev
-for m in virtio_ring virtio virtio_pci_legacy_dev virtio_pci_modern_dev virtio_pci netfs fscache \
-         9pnet 9pnet_virtio 9p configfs can-dev vcan can can-raw gpio-sim; do
+# /modules/order: dependencies first (scripts/hil-vm.sh writes it).
+while read -r m; do
   insmod /modules/$m.ko || echo "init: insmod $m failed"
-done
+done < /modules/order
 mount -t configfs configfs /sys/kernel/config
 mkdir -p /hil /tmp
 mount -t tmpfs tmpfs /tmp
