@@ -18,7 +18,10 @@ using firmware::SupervisorState;
 using firmware::Trigger;
 using tools::TelemetryRow;
 
+// A good period as far as the telemetry shows: a fresh sample and no overrun.
 inline bool fresh(const TelemetryRow& r) { return r.sample == "fresh" && r.overruns == 0; }
+// A period the supervisor counts towards stale_periods: no fresh sample (overruns aside).
+inline bool no_sample(const TelemetryRow& r) { return r.sample != "fresh"; }
 
 // Common to every run: both processes end cleanly, every telemetry record reaches the file,
 // and the last cycle is the shutdown one, in SAFE at 0 A.

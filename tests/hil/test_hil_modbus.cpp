@@ -73,7 +73,7 @@ TEST(HilModbus, ServerStallTripsSafeAfterStalePeriodsAndRecovers) {
   const std::size_t safe = first_in(r, SupervisorState::kSafe, 2.0);
   ASSERT_LT(safe, r.telemetry.size()) << "never went SAFE";
   EXPECT_EQ(r.telemetry[safe].trigger, Trigger::kSensorStale) << transitions(r) << r.controller_output << r.plant_output;
-  EXPECT_EQ(run_length_before(r.telemetry, safe, [](const TelemetryRow& x) { return !fresh(x); }),
+  EXPECT_EQ(run_length_before(r.telemetry, safe, no_sample),
             static_cast<std::size_t>(safety().stale_periods + 1));
   EXPECT_EQ(r.telemetry[safe - static_cast<std::size_t>(safety().stale_periods)].state, SupervisorState::kDegraded);
   // The last answer came before the stall began.
@@ -97,7 +97,7 @@ TEST(HilModbus, ServerRestartTripsSafeAndTheControllerReconnects) {
   ASSERT_LT(safe, r.telemetry.size()) << "never went SAFE";
   const Trigger why = r.telemetry[safe].trigger;
   EXPECT_TRUE(why == Trigger::kSetpointWriteFailed || why == Trigger::kSensorStale) << to_string(why);
-  EXPECT_LE(run_length_before(r.telemetry, safe, [](const TelemetryRow& x) { return !fresh(x); }),
+  EXPECT_LE(run_length_before(r.telemetry, safe, no_sample),
             static_cast<std::size_t>(safety().stale_periods + 1));
   EXPECT_NEAR(r.fault_time(r.telemetry[safe]), 2.0, 0.02);
   const std::size_t back = first_in(r, SupervisorState::kRun, 2.3);
@@ -122,7 +122,7 @@ TEST(HilModbus, SlowResponsesDegradeWithoutTrippingSafe) {
     const double t = r.fault_time(row);
     if (t < 2.0 || t > 3.0) continue;
     if (row.state == SupervisorState::kDegraded) ++degraded;
-    longest_gap = std::max(longest_gap, run_length_before(r.telemetry, i, [](const TelemetryRow& x) { return !fresh(x); }));
+    longest_gap = std::max(longest_gap, run_length_before(r.telemetry, i, no_sample));
   }
   EXPECT_GT(degraded, 100u) << "the slow answers went unnoticed";
   EXPECT_GE(longest_gap, 3u);
