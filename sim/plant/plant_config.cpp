@@ -1,11 +1,8 @@
 #include "sim/plant/plant_config.hpp"
 
 #include <algorithm>
-#include <climits>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "firmware/config_loader.hpp"
 #include "firmware/effects_config.hpp"
@@ -220,25 +217,14 @@ std::string LoadedPlantConfig::report() const {
 
 LoadedPlantConfig load_plant_config_text(std::string_view text, const std::string& file_name) {
   LoadedPlantConfig out;
-  toml::table root;
-  try {
-    root = toml::parse(text, file_name);
-  } catch (const toml::parse_error& e) {
-    out.errors.push_back({file_name, static_cast<int>(e.source().begin.line), "",
-                          "TOML syntax error at column " + std::to_string(e.source().begin.column) +
-                              ": " + std::string(e.description()),
-                          false});
-    return out;
-  }
+  const std::optional<toml::table> root = firmware::parse_config_text(text, file_name, out.errors);
+  if (!root) return out;
   firmware::ConfigMessages messages;
-  TomlReader in(root, file_name, messages);
-  read_all(root, in, out.config, file_name);
+  TomlReader in(*root, file_name, messages);
+  read_all(*root, in, out.config, file_name);
   in.report_unknown_keys();
   validate(in, out.config);
-  std::stable_sort(messages.begin(), messages.end(), [](const auto& a, const auto& b) {
-    return (a.line == 0 ? INT_MAX : a.line) < (b.line == 0 ? INT_MAX : b.line);
-  });
-  for (auto& m : messages) (m.warning ? out.warnings : out.errors).push_back(std::move(m));
+  firmware::file_messages(messages, out.errors, out.warnings);
 
   // The controller's side of the buses and its damper.
   const auto controller = out.config.controller_config.empty()
@@ -250,15 +236,9 @@ LoadedPlantConfig load_plant_config_text(std::string_view text, const std::strin
 }
 
 LoadedPlantConfig load_plant_config_file(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) {
-    LoadedPlantConfig out;
-    out.errors.push_back({path, 0, "", "cannot open the file", false});
-    return out;
-  }
-  std::ostringstream text;
-  text << file.rdbuf();
-  return load_plant_config_text(text.str(), path);
+  LoadedPlantConfig out;
+  const std::optional<std::string> text = firmware::read_config_file(path, out.errors);
+  return text ? load_plant_config_text(*text, path) : out;
 }
 
 }  // namespace mrd::plant
