@@ -1,10 +1,7 @@
 #include "firmware/config_loader.hpp"
 
 #include <algorithm>
-#include <climits>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "firmware/default_config_text.hpp"  // generated from etc/mrd/mrd.toml
 #include "firmware/effects_config.hpp"
@@ -202,6 +199,7 @@ void read_all(TomlReader& in, ControllerConfig& c) {
   in.get("realtime.priority", c.realtime.priority);
   in.get("realtime.cpu", c.realtime.cpu);
   in.get("realtime.lock_memory", c.realtime.lock_memory);
+  in.get("realtime.io_priority", c.realtime.io_priority);
   in.get("telemetry.path", c.telemetry.path);
   in.get("telemetry.decimation", c.telemetry.decimation);
   in.get("telemetry.ring_size", c.telemetry.ring_size);
@@ -291,26 +289,14 @@ void validate_all(TomlReader& in, ControllerConfig& c) {
 
 LoadedConfig load_config_text(std::string_view text, const std::string& file_name) {
   LoadedConfig out;
-  toml::table root;
-  try {
-    root = toml::parse(text, file_name);
-  } catch (const toml::parse_error& e) {
-    out.errors.push_back({file_name, static_cast<int>(e.source().begin.line), "",
-                          "TOML syntax error at column " + std::to_string(e.source().begin.column) +
-                              ": " + std::string(e.description()),
-                          false});
-    return out;
-  }
+  const std::optional<toml::table> root = parse_config_text(text, file_name, out.errors);
+  if (!root) return out;
   ConfigMessages messages;
-  TomlReader in(root, file_name, messages);
+  TomlReader in(*root, file_name, messages);
   read_all(in, out.config);
   in.report_unknown_keys();
   validate_all(in, out.config);
-  // In file order, so the report reads top to bottom; messages without a line come last.
-  std::stable_sort(messages.begin(), messages.end(), [](const ConfigMessage& a, const ConfigMessage& b) {
-    return (a.line == 0 ? INT_MAX : a.line) < (b.line == 0 ? INT_MAX : b.line);
-  });
-  for (auto& m : messages) (m.warning ? out.warnings : out.errors).push_back(std::move(m));
+  file_messages(messages, out.errors, out.warnings);
   out.keys = in.keys();
   out.defaulted = in.defaulted();
   return out;
@@ -328,15 +314,9 @@ LoadedConfig revalidate(const ControllerConfig& config, const std::string& sourc
 }
 
 LoadedConfig load_config_file(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) {
-    LoadedConfig out;
-    out.errors.push_back({path, 0, "", "cannot open the file", false});
-    return out;
-  }
-  std::ostringstream text;
-  text << file.rdbuf();
-  return load_config_text(text.str(), path);
+  LoadedConfig out;
+  const std::optional<std::string> text = read_config_file(path, out.errors);
+  return text ? load_config_text(*text, path) : out;
 }
 
 std::string_view default_config_text() { return kDefaultConfigText; }

@@ -4,6 +4,7 @@
 #include <memory>
 #include <optional>
 #include <thread>
+#include <vector>
 
 #include "firmware/control_loop.hpp"
 #include "firmware/csv_telemetry_writer.hpp"
@@ -44,6 +45,8 @@ int run_controller(const ControllerConfig& config, const RunOptions& options,
     std::fprintf(stderr, "mrd-controller: cannot start the back ends:\n%s", started.error.c_str());
     return 1;
   }
+  const std::vector<hal::IoThread*> io_threads = hal.io_threads();
+  make_io_threads_realtime(config.realtime, io_threads, rt);
 
   std::unique_ptr<TelemetryQueue> queue;
   std::unique_ptr<CsvTelemetryWriter> writer;
@@ -97,11 +100,15 @@ int run_controller(const ControllerConfig& config, const RunOptions& options,
 
   if (unblock != nullptr) pthread_sigmask(SIG_UNBLOCK, unblock, nullptr);
   while (!setup_done.load()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  std::fprintf(out, "real-time: memory %s, scheduling %s, cpu %s\n",
+  std::fprintf(out, "real-time: memory %s, scheduling %s, cpu %s, bus threads %s\n",
                rt.memory_locked ? "locked" : "NOT locked",
                rt.fifo ? ("SCHED_FIFO " + std::to_string(config.realtime.priority)).c_str()
                        : "SCHED_OTHER",
-               rt.pinned ? std::to_string(config.realtime.cpu).c_str() : "any");
+               rt.pinned ? std::to_string(config.realtime.cpu).c_str() : "any",
+               io_threads.empty() ? "none"
+               : rt.io_fifo == io_threads.size()
+                   ? ("SCHED_FIFO " + std::to_string(config.realtime.io_priority)).c_str()
+                   : "SCHED_OTHER");
   for (const auto& w : rt.warnings) std::fprintf(stderr, "mrd-controller: warning: %s\n", w.c_str());
   std::fflush(out);
 
@@ -122,6 +129,10 @@ int run_controller(const ControllerConfig& config, const RunOptions& options,
                  static_cast<unsigned long long>(queue->offered()),
                  static_cast<unsigned long long>(writer->written()),
                  static_cast<unsigned long long>(queue->dropped()), config.telemetry.path.c_str());
+    if (const auto t0 = writer->start_time()) {
+      std::fprintf(out, "telemetry: time_s 0 is CLOCK_MONOTONIC %.9f s\n",
+                   std::chrono::duration<double>(*t0).count());
+    }
   }
   return 0;
 }

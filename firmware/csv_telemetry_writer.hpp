@@ -29,6 +29,9 @@ class CsvTelemetryWriter {
   void stop();
 
   [[nodiscard]] std::uint64_t written() const { return written_.load(std::memory_order_relaxed); }
+  // The CSV's t = 0 on the loop's clock (CLOCK_MONOTONIC in the controller), once a record is
+  // written; read it after stop(). Another process on the same host joins its log by it.
+  [[nodiscard]] std::optional<hal::Timestamp> start_time() const { return start_; }
   static const char* header();
   // One CSV line (with '\n') into buf, time counted from `start`; returns the length.
   static int format(const TelemetryRecord& r, hal::Timestamp start, char* buf, std::size_t size);

@@ -91,6 +91,13 @@ void HalSet::stop() {
   if (can_) can_->stop();
 }
 
+std::vector<hal::IoThread*> HalSet::io_threads() {
+  std::vector<hal::IoThread*> threads;
+  if (modbus_) threads.push_back(&modbus_->io_thread());
+  if (can_) threads.push_back(&can_->io_thread());
+  return threads;
+}
+
 std::string HalSet::counters() const {
   std::string out;
   if (modbus_) append_counters<hal::modbus::ModbusEvent>(out, "modbus", modbus_->counters());

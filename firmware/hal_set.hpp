@@ -2,6 +2,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "firmware/controller_config.hpp"
 #include "firmware/hal_devices.hpp"
@@ -30,6 +31,8 @@ class HalSet {
 
   [[nodiscard]] HalDevices devices() { return {*lvdt_, *driver_, *lines_}; }
   [[nodiscard]] hal::mock::MockHal* mock() { return mock_.get(); }
+  // The bus back ends' I/O threads (after start()), for the real-time set-up.
+  [[nodiscard]] std::vector<hal::IoThread*> io_threads();
   // One line per bus back end with its counters, for the statistics printout.
   [[nodiscard]] std::string counters() const;
 

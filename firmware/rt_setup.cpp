@@ -15,6 +15,11 @@ hal::ConfigReport RealtimeConfig::validate() const {
   hal::ConfigReport r;
   r.check(priority >= 0 && priority <= 99, "priority",
           "must be in 0..99 (0: no SCHED_FIFO), got " + std::to_string(priority));
+  r.check(io_priority >= 0 && io_priority <= 99, "io_priority",
+          "must be in 0..99 (0: the bus threads stay SCHED_OTHER), got " + std::to_string(io_priority));
+  r.check(priority == 0 || io_priority < priority, "io_priority",
+          "must be below realtime.priority (" + std::to_string(priority) +
+              "): a bus thread must not preempt the loop, got " + std::to_string(io_priority));
   r.check(cpu >= -1 && cpu < 1024, "cpu", "must be -1 (no affinity) or a CPU number, got " +
                                               std::to_string(cpu));
   return r;
@@ -71,6 +76,23 @@ void make_current_thread_realtime(const RealtimeConfig& config, RtSetupResult& r
     }
   }
   prefault_stack();
+}
+
+void make_io_threads_realtime(const RealtimeConfig& config, std::span<hal::IoThread* const> threads,
+                              RtSetupResult& result) {
+  if (config.priority == 0 || config.io_priority == 0) return;
+  for (hal::IoThread* thread : threads) {
+    const int err = thread->make_fifo(config.io_priority);
+    if (err == 0) {
+      ++result.io_fifo;
+      continue;
+    }
+    result.warnings.push_back(
+        "cannot switch the bus thread " + thread->name() + " to SCHED_FIFO priority " +
+        std::to_string(config.io_priority) + " (" + std::strerror(err) +
+        "): it runs under SCHED_OTHER and a loaded host can delay its samples past "
+        "safety.stale_periods; grant CAP_SYS_NICE and LimitRTPRIO (the systemd unit does both)");
+  }
 }
 
 }  // namespace mrd::firmware

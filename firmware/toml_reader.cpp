@@ -1,8 +1,11 @@
 #include "firmware/toml_reader.hpp"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
+#include <fstream>
 #include <limits>
+#include <sstream>
 
 namespace mrd::firmware {
 
@@ -223,6 +226,38 @@ void TomlReader::walk(const toml::table& table, const std::string& prefix) {
     add(path, message, false, static_cast<int>(key.source().begin.line > 0 ? key.source().begin.line
                                                                             : node.source().begin.line));
   }
+}
+
+std::optional<toml::table> parse_config_text(std::string_view text, const std::string& file_name,
+                                             ConfigMessages& errors) {
+  try {
+    return toml::parse(text, file_name);
+  } catch (const toml::parse_error& e) {
+    errors.push_back({file_name, static_cast<int>(e.source().begin.line), "",
+                      "TOML syntax error at column " + std::to_string(e.source().begin.column) + ": " +
+                          std::string(e.description()),
+                      false});
+    return std::nullopt;
+  }
+}
+
+std::optional<std::string> read_config_file(const std::string& path, ConfigMessages& errors) {
+  std::ifstream file(path);
+  if (!file) {
+    errors.push_back({path, 0, "", "cannot open the file", false});
+    return std::nullopt;
+  }
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+void file_messages(ConfigMessages& messages, ConfigMessages& errors, ConfigMessages& warnings) {
+  // In file order, so the report reads top to bottom.
+  std::stable_sort(messages.begin(), messages.end(), [](const ConfigMessage& a, const ConfigMessage& b) {
+    return (a.line == 0 ? INT_MAX : a.line) < (b.line == 0 ? INT_MAX : b.line);
+  });
+  for (auto& m : messages) (m.warning ? warnings : errors).push_back(std::move(m));
 }
 
 }  // namespace mrd::firmware

@@ -1,6 +1,9 @@
 #include "hal/io_thread.hpp"
 
 #include <pthread.h>
+#include <sched.h>
+
+#include <cerrno>
 
 namespace mrd::hal {
 
@@ -10,8 +13,16 @@ void IoThread::start(const std::string& name, std::function<void()> body) {
     const std::lock_guard lock(mutex_);
     stop_ = false;
   }
+  name_ = name.substr(0, 15);
   thread_ = std::thread(std::move(body));
-  pthread_setname_np(thread_.native_handle(), name.substr(0, 15).c_str());
+  pthread_setname_np(thread_.native_handle(), name_.c_str());
+}
+
+int IoThread::make_fifo(int priority) {
+  if (!thread_.joinable()) return ESRCH;
+  sched_param param{};
+  param.sched_priority = priority;
+  return pthread_setschedparam(thread_.native_handle(), SCHED_FIFO, &param);
 }
 
 void IoThread::stop() {

@@ -25,6 +25,9 @@ class IoThread {
   void stop();
 
   [[nodiscard]] bool running() const { return thread_.joinable(); }
+  [[nodiscard]] const std::string& name() const { return name_; }
+  // Switches the running thread to SCHED_FIFO at `priority`; 0 or the errno of the refusal.
+  [[nodiscard]] int make_fifo(int priority);
   [[nodiscard]] bool stop_requested() const;
   // Sleeps until `deadline`; false when a stop was requested (then returns at once).
   bool wait_until(std::chrono::steady_clock::time_point deadline);
@@ -36,6 +39,7 @@ class IoThread {
   mutable std::mutex mutex_;
   std::condition_variable cv_;
   bool stop_ = false;  // guarded by mutex_
+  std::string name_;
   std::thread thread_;
 };
 

@@ -8,3 +8,8 @@ stage() { printf '\n=== %s ===\n' "$1"; }
 
 stage "release: build and every fast test"
 cmake --workflow --preset release
+
+stage "hil: controller and plant over vcan0 and gpio-sim, inside a QEMU VM (ctest -L hil: hil.vm)"
+# Builds the VM from Debian's packages in ~/.cache/mrd-hil (cold about 1 min of downloads),
+# boots it once for every VM scenario. Skipped where qemu cannot run, unless MRD_HIL_VM=required.
+ctest --test-dir build/release -L hil -R '^hil\.vm$' --output-on-failure

@@ -70,4 +70,30 @@ double RandomProfile::velocity(double t) const {
   return scale_ * v;
 }
 
+PlaybackProfile::PlaybackProfile(std::vector<double> time, std::vector<double> displacement)
+    : time_(std::move(time)), displacement_(std::move(displacement)) {
+  const double t0 = time_.front();
+  for (double& t : time_) t -= t0;
+}
+
+std::size_t PlaybackProfile::segment(double t) const {
+  const auto after = std::upper_bound(time_.begin(), time_.end(), t);
+  const auto i = static_cast<std::size_t>(after - time_.begin());
+  return std::clamp<std::size_t>(i, 1, time_.size() - 1) - 1;
+}
+
+double PlaybackProfile::displacement(double t) const {
+  if (t <= 0.0) return displacement_.front();
+  if (t >= duration()) return displacement_.back();
+  const std::size_t i = segment(t);
+  const double w = (t - time_[i]) / (time_[i + 1] - time_[i]);
+  return displacement_[i] + w * (displacement_[i + 1] - displacement_[i]);
+}
+
+double PlaybackProfile::velocity(double t) const {
+  if (t < 0.0 || t >= duration()) return 0.0;
+  const std::size_t i = segment(t);
+  return (displacement_[i + 1] - displacement_[i]) / (time_[i + 1] - time_[i]);
+}
+
 }  // namespace mrd::sim

@@ -56,4 +56,23 @@ class RandomProfile {
   double scale_ = 1.0;  // amplitude of each component [m]
 };
 
+// Playback of a recorded displacement: linear interpolation between the samples, time shifted
+// so that the first sample is at t = 0, held at the last value after the end. The velocity is
+// the slope of the segment t falls in (the interpolant's own derivative), 0 outside the run.
+class PlaybackProfile {
+ public:
+  // `time` strictly increasing [s], `displacement` [m], at least two samples of each.
+  PlaybackProfile(std::vector<double> time, std::vector<double> displacement);
+
+  [[nodiscard]] double displacement(double t) const;
+  [[nodiscard]] double velocity(double t) const;
+  [[nodiscard]] double duration() const { return time_.back(); }
+
+ private:
+  [[nodiscard]] std::size_t segment(double t) const;  // i with time_[i] <= t < time_[i + 1]
+
+  std::vector<double> time_;
+  std::vector<double> displacement_;
+};
+
 }  // namespace mrd::sim

@@ -70,6 +70,8 @@ class SocketCanBackend final : public DisplacementSource, public CurrentDriver {
   [[nodiscard]] std::optional<bool> feedback_driver_fault() const;
 
   [[nodiscard]] CanCounters counters() const { return counters_.snapshot(); }
+  // Its I/O thread, for the caller's scheduling set-up.
+  [[nodiscard]] IoThread& io_thread() { return thread_; }
   [[nodiscard]] bool tx_allowed() const;
 
  private:

@@ -64,6 +64,8 @@ class ModbusBackend final : public DisplacementSource, public CurrentDriver {
   [[nodiscard]] std::optional<CurrentReading> measured() override;
 
   [[nodiscard]] ModbusCounters counters() const { return counters_.snapshot(); }
+  // Its I/O thread, for the caller's scheduling set-up.
+  [[nodiscard]] IoThread& io_thread() { return thread_; }
   [[nodiscard]] bool connected() const { return connected_.load(std::memory_order_relaxed); }
   [[nodiscard]] int last_errno() const { return last_errno_.load(std::memory_order_relaxed); }
 

@@ -86,6 +86,7 @@ TEST(ConfigDefault, StatedValuesEqualTheCompiledDefaults) {
   EXPECT_EQ(a.can.lvdt_id, b.can.lvdt_id);
   EXPECT_EQ(a.gpio.heartbeat.offset, b.gpio.heartbeat.offset);
   EXPECT_EQ(a.realtime.priority, b.realtime.priority);
+  EXPECT_EQ(a.realtime.io_priority, b.realtime.io_priority);
   EXPECT_EQ(a.telemetry.ring_size, b.telemetry.ring_size);
 }
 
@@ -305,6 +306,17 @@ lines = "spi"
   // The 30 mm range no longer reaches past the 40 mm threshold: a warning, not an error.
   ASSERT_EQ(c.warnings.size(), 1u) << lines_of(c);
   EXPECT_EQ(c.warnings[0].key, "safety.displacement_max");
+}
+
+TEST(ConfigBad, BusThreadPriorityStaysBelowTheLoop) {
+  const LoadedConfig above = load_config_text("[realtime]\npriority = 50\nio_priority = 50\n", "r.toml");
+  EXPECT_TRUE(has_error(above, "r.toml:3: realtime.io_priority: must be below realtime.priority (50): a bus "
+                               "thread must not preempt the loop, got 50"))
+      << lines_of(above);
+  const LoadedConfig range = load_config_text("[realtime]\nio_priority = -1\n", "r.toml");
+  EXPECT_TRUE(has_error_containing(range, "realtime.io_priority", "0..99")) << lines_of(range);
+  // A loop under SCHED_OTHER leaves the bus threads there too, whatever io_priority says.
+  EXPECT_TRUE(load_config_text("[realtime]\npriority = 0\n", "r.toml").ok());
 }
 
 TEST(ConfigFile, MissingFileAndFileNameInMessages) {

@@ -1,0 +1,212 @@
+// mrd-plant: the simulated test rig as its own process. It moves a simulated MR damper along a
+// displacement profile in real time, serves the LVDT and takes the coil current over Modbus
+// (TCP, or RTU on a pty) and/or CAN exactly as the controller's config lays them out, injects
+// the faults its config scripts, and logs the run as a recorded-run CSV.
+#include <CLI/CLI.hpp>
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "firmware/loop_report.hpp"
+#include "firmware/rt_runner.hpp"
+#include "firmware/rt_setup.hpp"
+#include "sim/plant/can_node.hpp"
+#include "sim/plant/modbus_server.hpp"
+#include "sim/plant/plant_config.hpp"
+#include "sim/plant/rig.hpp"
+#include "sim/plant/run_log.hpp"
+#include "tools/csv.hpp"
+
+namespace {
+
+std::atomic<bool> g_stop{false};
+extern "C" void on_stop_signal(int) { g_stop.store(true); }
+
+void print_summary(std::FILE* out, const mrd::firmware::LoopStatistics& stats,
+                   const mrd::plant::ModbusServer* modbus, const mrd::plant::CanNode* can,
+                   const mrd::plant::RunLog& log, const std::string& log_path) {
+  std::fprintf(out, "--- mrd-plant statistics ---\n%s",
+               mrd::firmware::format_loop_statistics(stats).c_str());
+  if (modbus != nullptr) {
+    const auto c = modbus->counters();
+    std::fprintf(out,
+                 "modbus server: connections=%llu requests=%llu answered=%llu unanswered=%llu "
+                 "exceptions=%llu setpoints=%llu restarts=%llu\n",
+                 static_cast<unsigned long long>(c.connections), static_cast<unsigned long long>(c.requests),
+                 static_cast<unsigned long long>(c.answered), static_cast<unsigned long long>(c.unanswered),
+                 static_cast<unsigned long long>(c.exceptions), static_cast<unsigned long long>(c.setpoints),
+                 static_cast<unsigned long long>(c.restarts));
+  }
+  if (can != nullptr) {
+    const auto c = can->counters();
+    std::fprintf(out,
+                 "can node: lvdt_sent=%llu lvdt_lost=%llu feedback_sent=%llu error_frames=%llu "
+                 "commands=%llu bad_commands=%llu tx_errors=%llu\n",
+                 static_cast<unsigned long long>(c.lvdt_sent), static_cast<unsigned long long>(c.lvdt_lost),
+                 static_cast<unsigned long long>(c.feedback_sent),
+                 static_cast<unsigned long long>(c.error_frames), static_cast<unsigned long long>(c.commands),
+                 static_cast<unsigned long long>(c.bad_commands), static_cast<unsigned long long>(c.tx_errors));
+  }
+  if (!log_path.empty()) {
+    std::fprintf(out, "plant log: %llu rows -> %s\n", static_cast<unsigned long long>(log.rows()),
+                 log_path.c_str());
+  }
+  std::fflush(out);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"mrd-plant: the simulated damper rig, serving the controller over Modbus and CAN"};
+  std::string config_path;
+  std::string check_path;
+  double duration = -1.0;
+  int port = -2;
+  std::string log_path;
+  bool no_log = false;
+  app.add_option("--config", config_path, "plant TOML file (etc/mrd/plant.toml lists every key)");
+  app.add_option("--check-config", check_path, "validate FILE, print every problem, exit 0 or 1");
+  app.add_option("--duration", duration, "run this many seconds (overrides plant.duration; 0: until SIGTERM)")
+      ->check(CLI::Range(0.0, 1e7));
+  app.add_option("--port", port, "Modbus TCP port (overrides modbus.port; 0: any free port, printed)")
+      ->check(CLI::Range(0, 65535));
+  app.add_option("--log", log_path, "recorded-run CSV (overrides plant.log)");
+  app.add_flag("--no-log", no_log, "write no log");
+  CLI11_PARSE(app, argc, argv);
+
+  if (!check_path.empty()) {
+    const auto loaded = mrd::plant::load_plant_config_file(check_path);
+    std::fputs(loaded.report().c_str(), loaded.ok() ? stdout : stderr);
+    if (loaded.ok()) std::printf("%s: ok\n", check_path.c_str());
+    return loaded.ok() ? 0 : 1;
+  }
+  if (config_path.empty()) {
+    std::fprintf(stderr, "mrd-plant: --config FILE is required (etc/mrd/plant.toml lists every key)\n");
+    return 1;
+  }
+  auto loaded = mrd::plant::load_plant_config_file(config_path);
+  std::fputs(loaded.report().c_str(), loaded.ok() ? stdout : stderr);
+  if (!loaded.ok()) {
+    std::fprintf(stderr, "%s: %zu error(s)\n", config_path.c_str(), loaded.errors.size());
+    return 1;
+  }
+  mrd::plant::PlantConfig config = loaded.config;
+  if (duration >= 0.0) config.duration = duration;
+  if (port >= 0) config.modbus.port = port;
+  if (!log_path.empty()) config.log = log_path;
+  if (no_log) config.log.clear();
+
+  std::unique_ptr<mrd::plant::Rig> rig;
+  try {
+    auto motion = mrd::plant::make_motion(config);
+    if (config.duration == 0.0) config.duration = mrd::plant::motion_length(motion);
+    rig = std::make_unique<mrd::plant::Rig>(config, std::move(motion));
+  } catch (const mrd::tools::InputError& e) {
+    std::fprintf(stderr, "mrd-plant: profile.file: %s\n", e.what());
+    return 1;
+  }
+
+  mrd::firmware::RtSetupResult rt;
+  mrd::firmware::lock_memory(config.realtime, rt);
+  mrd::plant::RunLog log;
+  if (!config.log.empty()) {
+    if (const auto opened = log.open(config.log); !opened.ok) {
+      std::fprintf(stderr, "mrd-plant: %s\n", opened.error.c_str());
+      return 1;
+    }
+  }
+  std::unique_ptr<mrd::plant::ModbusServer> modbus;
+  if (config.modbus.enabled) {
+    modbus = std::make_unique<mrd::plant::ModbusServer>(config.controller.modbus, config.listen_host(),
+                                                        config.listen_port(), config.modbus.rtu_link,
+                                                        config.seed);
+    if (const auto started = modbus->start(); !started.ok) {
+      std::fprintf(stderr, "mrd-plant: %s\n", started.error.c_str());
+      return 1;
+    }
+  }
+  std::unique_ptr<mrd::plant::CanNode> can;
+  if (config.can.enabled) {
+    can = std::make_unique<mrd::plant::CanNode>(config.controller.can, config.can_interface(),
+                                                config.can.feedback, config.can.fault_pull, config.seed);
+    if (const auto started = can->start(); !started.ok) {
+      std::fprintf(stderr, "mrd-plant: %s\n", started.error.c_str());
+      return 1;
+    }
+  }
+  // Which bus the coil current comes from: the controller's driver back end when the plant
+  // serves it, else whichever bus the plant serves.
+  const bool current_from_can =
+      can && (config.controller.backends.driver == mrd::firmware::DeviceBackend::kCan || !modbus);
+
+  struct sigaction sa{};
+  sigemptyset(&sa.sa_mask);
+  sa.sa_handler = on_stop_signal;
+  sigaction(SIGTERM, &sa, nullptr);
+  sigaction(SIGINT, &sa, nullptr);
+
+  std::printf("mrd-plant: %.0f Hz, profile %s, %s%s%s%s\n", config.rate,
+              std::string(to_string(config.profile.kind)).c_str(),
+              config.duration > 0.0 ? (std::to_string(config.duration) + " s").c_str() : "until SIGTERM",
+              config.faults.empty() ? "" : (", " + std::to_string(config.faults.size()) + " scripted fault(s)").c_str(),
+              config.log.empty() ? "" : ", log ", config.log.c_str());
+  if (modbus) {
+    std::printf("mrd-plant: modbus %s %s\n",
+                config.controller.modbus.transport == mrd::hal::modbus::Transport::kTcp ? "tcp" : "rtu",
+                modbus->endpoint().c_str());
+  }
+  if (can) std::printf("mrd-plant: can %s\n", can->interface().c_str());
+  std::vector<mrd::hal::IoThread*> io_threads;
+  if (modbus) io_threads.push_back(&modbus->io_thread());
+  if (can) io_threads.push_back(&can->io_thread());
+  mrd::firmware::make_io_threads_realtime(config.realtime, io_threads, rt);
+  mrd::firmware::make_current_thread_realtime(config.realtime, rt);
+  for (const auto& w : rt.warnings) std::fprintf(stderr, "mrd-plant: warning: %s\n", w.c_str());
+  std::printf("mrd-plant: ready\n");
+  std::fflush(stdout);
+
+  const auto period = std::chrono::nanoseconds{static_cast<std::int64_t>(1e9 / config.rate + 0.5)};
+  mrd::firmware::RealTimeRunner runner(period);
+  mrd::firmware::LoopStatistics stats;
+  std::optional<mrd::hal::Timestamp> start;
+  std::optional<double> fault_origin;  // plant time of fault time 0
+  const auto commanded_yet = [&] {
+    return (can && can->counters().commands > 0) || (modbus && modbus->counters().setpoints > 0);
+  };
+  const auto max_cycles = static_cast<std::uint64_t>(config.duration * config.rate + 0.5);
+  runner.run(
+      [&](mrd::hal::Timestamp release) {
+        if (!start) start = release;
+        const double t = std::chrono::duration<double>(release - *start).count();
+        if (!fault_origin && (config.faults_from == mrd::plant::FaultClock::kStart || commanded_yet())) {
+          fault_origin = t;
+        }
+        const double commanded = current_from_can ? (can->enabled() ? can->setpoint() : 0.0)
+                                 : modbus         ? modbus->setpoint()
+                                                  : 0.0;
+        const auto& s = rig->step(t, fault_origin ? t - *fault_origin : -1.0, commanded);
+        if (modbus) modbus->publish(s.lvdt, s.reading.coil_current, s.faults);
+        if (can) can->send(t, s.lvdt, s.reading.coil_current, s.faults);
+        log.write(s);
+      },
+      g_stop, max_cycles, stats);
+
+  if (modbus) modbus->stop();
+  if (can) can->stop();
+  log.close();
+  print_summary(stdout, stats, modbus.get(), can.get(), log, config.log);
+  if (start) {
+    std::printf("plant log: time_s 0 is CLOCK_MONOTONIC %.9f s\n", std::chrono::duration<double>(*start).count());
+  }
+  if (fault_origin) {
+    std::printf("plant faults: time 0 is plant log time_s %.6f s (%s)\n", *fault_origin,
+                config.faults_from == mrd::plant::FaultClock::kStart ? "the start" : "the first command");
+  } else if (!config.faults.empty()) {
+    std::printf("plant faults: none ran, no command came\n");
+  }
+  return 0;
+}

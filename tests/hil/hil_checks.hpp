@@ -1,0 +1,113 @@
+#pragma once
+
+// What every HIL run is checked for, whatever the bus: clean exits, no telemetry lost, the
+// supervisor's transitions and their timing in periods.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "firmware/supervisor.hpp"
+#include "model/current_schedule.hpp"
+#include "tests/hil/child_process.hpp"
+#include "tests/hil/hil_run.hpp"
+
+namespace mrd::test {
+
+using firmware::SupervisorState;
+using firmware::Trigger;
+using tools::TelemetryRow;
+
+// A good period as far as the telemetry shows: a fresh sample and no overrun.
+inline bool fresh(const TelemetryRow& r) { return r.sample == "fresh" && r.overruns == 0; }
+// A period the supervisor counts towards stale_periods: no fresh sample (overruns aside).
+inline bool no_sample(const TelemetryRow& r) { return r.sample != "fresh"; }
+
+// Common to every run: both processes end cleanly, every telemetry record reaches the file,
+// and the last cycle is the shutdown one, in SAFE at 0 A.
+inline void expect_clean_run(const HilResult& r, double duration, double rate = 1000.0) {
+  ASSERT_TRUE(r.failure.empty()) << r.failure;
+  EXPECT_EQ(r.controller_exit, 0) << r.controller_output;
+  EXPECT_EQ(r.plant_exit, 0) << r.plant_output;
+  const auto cycles = mrd::test::find_number(r.controller_output, R"(cycles (\d+),)");
+  const auto offered = mrd::test::find_number(r.controller_output, R"((\d+) records offered)");
+  const auto written = mrd::test::find_number(r.controller_output, R"((\d+) written)");
+  const auto dropped = mrd::test::find_number(r.controller_output, R"((\d+) dropped)");
+  ASSERT_TRUE(cycles && offered && written && dropped) << r.controller_output;
+  EXPECT_EQ(*cycles, std::round(duration * rate));
+  EXPECT_EQ(*offered, *cycles + 1) << "every cycle and the shutdown cycle offer a record";
+  EXPECT_EQ(*dropped, 0.0);
+  EXPECT_EQ(*written + *dropped, *offered);
+  EXPECT_EQ(static_cast<double>(r.telemetry.size()), *written);
+  ASSERT_FALSE(r.telemetry.empty());
+  EXPECT_EQ(r.telemetry.back().state, SupervisorState::kSafe);
+  EXPECT_NE(r.controller_output.find("-> SAFE (shutdown): 1"), std::string::npos) << r.controller_output;
+  EXPECT_EQ(r.telemetry.back().setpoint, 0.0);
+}
+
+// INIT -> RUN exactly when the run of good periods reaches recovery_periods.
+inline std::size_t expect_first_run(const HilResult& r, const mrd::firmware::SupervisorConfig& safety) {
+  for (std::size_t i = 0; i < r.telemetry.size(); ++i) {
+    if (r.telemetry[i].state == SupervisorState::kInit) continue;
+    EXPECT_EQ(r.telemetry[i].state, SupervisorState::kRun);
+    EXPECT_EQ(r.telemetry[i].trigger, Trigger::kGoodPeriods);
+    EXPECT_EQ(run_length_before(r.telemetry, i, fresh), static_cast<std::size_t>(safety.recovery_periods));
+    return i;
+  }
+  ADD_FAILURE() << "never left INIT";
+  return 0;
+}
+
+// SAFE -> RUN after recovery_periods good periods. A good period also needs the previous
+// period's setpoint write to have succeeded, which the telemetry does not show: the first
+// period or two after a reconnect may have a fresh sample but the failed write of the period
+// before.
+inline void expect_recovery_length(const HilResult& r, std::size_t back, const mrd::firmware::SupervisorConfig& safety) {
+  const std::size_t n = run_length_before(r.telemetry, back, fresh);
+  const auto m = static_cast<std::size_t>(safety.recovery_periods);
+  EXPECT_GE(n, m);
+  EXPECT_LE(n, m + 2);
+}
+
+// The current command follows Table 4 in control: the scheduled current is
+// model::CurrentSchedule's on the displacement the loop held, in every row in control. Returns
+// how many rows were in control.
+inline std::size_t expect_table4_followed(const HilResult& r) {
+  model::CurrentSchedule schedule;
+  std::size_t in_control = 0;
+  std::size_t mismatches = 0;
+  for (const auto& row : r.telemetry) {
+    const double scheduled = schedule.update(row.displacement);
+    if (!row.in_control()) continue;
+    ++in_control;
+    if (scheduled != row.scheduled_current) ++mismatches;
+  }
+  EXPECT_EQ(mismatches, 0u);
+  return in_control;
+}
+
+// Every state change, for failure messages.
+inline std::string transitions(const HilResult& r) {
+  std::string out;
+  for (const auto& c : mrd::tools::state_changes(r.telemetry)) {
+    out += "  " + to_string(c) + " fault clock t " + std::to_string(c.time + r.offset - r.fault_origin) + "\n";
+  }
+  return out;
+}
+
+// No SAFE before the shutdown cycle.
+inline void expect_never_safe_before_shutdown(const HilResult& r) {
+  for (std::size_t i = 0; i + 1 < r.telemetry.size(); ++i) {
+    ASSERT_NE(r.telemetry[i].state, SupervisorState::kSafe) << "cycle " << r.telemetry[i].cycle << "\n" << transitions(r);
+  }
+}
+
+// The first row in `state` at or after time t on the faults' clock, and its index.
+inline std::size_t first_in(const HilResult& r, SupervisorState state, double t) {
+  for (std::size_t i = 0; i < r.telemetry.size(); ++i) {
+    if (r.fault_time(r.telemetry[i]) >= t && r.telemetry[i].state == state) return i;
+  }
+  return r.telemetry.size();
+}
+
+}  // namespace mrd::test

@@ -1,0 +1,103 @@
+#include "tests/hil/hil_run.hpp"
+
+#include <signal.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+
+#include "tests/hil/child_process.hpp"
+#include "tools/csv.hpp"
+#include "tools/replay/run_reader.hpp"
+
+namespace mrd::test {
+
+namespace {
+
+using namespace std::chrono_literals;
+
+// The binaries: the build's, or where the environment says (inside the HIL VM).
+std::string binary(const char* variable, const char* built) {
+  const char* set = std::getenv(variable);
+  return set != nullptr ? set : built;
+}
+
+void write_file(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream(path) << text;
+}
+
+}  // namespace
+
+HilResult run_hil(const HilScenario& s) {
+  HilResult r;
+  const auto dir = std::filesystem::temp_directory_path() / ("mrd_hil_" + s.name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const auto controller_config = dir / "controller.toml";
+  const auto plant_config = dir / "plant.toml";
+  const auto telemetry = dir / "telemetry.csv";
+  const auto plant_log = dir / "plant.csv";
+  write_file(controller_config, s.controller_toml);
+  write_file(plant_config, "[plant]\ncontroller_config = \"" + controller_config.string() +
+                               "\"\nlog = \"" + plant_log.string() + "\"\n" + s.plant_toml);
+
+  std::vector<std::string> plant_args{binary("MRD_PLANT", MRD_PLANT_BINARY), "--config", plant_config.string()};
+  if (s.ephemeral_port) {
+    plant_args.insert(plant_args.end(), {"--port", "0"});
+  }
+  ChildProcess plant(plant_args);
+  if (!plant.started()) {
+    r.failure = "cannot start mrd-plant";
+    return r;
+  }
+  if (s.ephemeral_port) {
+    const auto port = plant.wait_for_line(std::regex(R"(modbus tcp [0-9.]+:(\d+))"), 10s);
+    if (!port) {
+      r.failure = "mrd-plant never listened:\n" + plant.output();
+      return r;
+    }
+    // The controller reads the port the plant got; the rest of its config is unchanged.
+    write_file(controller_config, s.controller_toml + "\n[modbus.tcp]\nport = " + (*port)[1] + "\n");
+  }
+  if (!plant.wait_for_line(std::regex("mrd-plant: ready"), 10s)) {
+    r.failure = "mrd-plant never got ready:\n" + plant.output();
+    return r;
+  }
+
+  ChildProcess controller({binary("MRD_CONTROLLER", MRD_CONTROLLER_BINARY), "--config", controller_config.string(), "--duration",
+                           std::to_string(s.controller_duration), "--telemetry", telemetry.string()});
+  if (s.while_running) r.observed = s.while_running(controller);
+  const auto limit = std::chrono::milliseconds(static_cast<long>(s.controller_duration * 1000.0)) + 20s;
+  const auto controller_exit = controller.wait_exit(limit);
+  plant.signal(SIGTERM);
+  const auto plant_exit = plant.wait_exit(20s);
+  r.controller_output = controller.output();
+  r.plant_output = plant.output();
+  if (!controller_exit || !plant_exit) {
+    r.failure = "a process did not exit in time:\n--- controller\n" + r.controller_output +
+                "--- plant\n" + r.plant_output;
+    return r;
+  }
+  r.controller_exit = *controller_exit;
+  r.plant_exit = *plant_exit;
+  const auto controller_t0 = find_number(r.controller_output, R"(time_s 0 is CLOCK_MONOTONIC ([0-9.]+) s)");
+  const auto plant_t0 = find_number(r.plant_output, R"(time_s 0 is CLOCK_MONOTONIC ([0-9.]+) s)");
+  if (!controller_t0 || !plant_t0) {
+    r.failure = "no time origin in the output:\n--- controller\n" + r.controller_output +
+                "--- plant\n" + r.plant_output;
+    return r;
+  }
+  r.controller_t0 = *controller_t0;
+  r.offset = *controller_t0 - *plant_t0;
+  r.fault_origin = find_number(r.plant_output, R"(plant faults: time 0 is plant log time_s ([0-9.]+) s)").value_or(0.0);
+  try {
+    r.telemetry = tools::read_telemetry_csv(telemetry.string());
+    r.plant_log = tools::read_recorded_run(plant_log.string());
+  } catch (const tools::InputError& e) {
+    r.failure = e.what();
+  }
+  return r;
+}
+
+}  // namespace mrd::test

@@ -1,0 +1,35 @@
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "tools/hil/telemetry_csv.hpp"
+#include "tools/replay/recorded_run.hpp"
+
+namespace mrd::tools {
+
+// The controller's telemetry joined with the plant's log by time: the controller's row at t
+// meets the plant's sample at t + offset + lag, where `offset` is the difference of the two
+// files' time origins (both on CLOCK_MONOTONIC) and `lag` the LVDT's transport delay, found as
+// the shift within +-max_lag that best matches the two displacement records.
+struct ForceJoin {
+  double offset = 0.0;      // [s]
+  double lag = 0.0;         // [s]
+  std::size_t rows = 0;     // rows in control (RUN or DEGRADED) that fall inside the plant log
+  double rms_error = 0.0;   // observer - true [N]
+  double max_error = 0.0;   // max |observer - true| [N]
+  double peak_force = 0.0;  // max |true force| over the joined rows [N]
+  double displacement_rms = 0.0;  // controller - plant displacement after the lag [m]
+  // The joined samples, for plots: plant displacement, true force, observer force.
+  std::vector<double> displacement;
+  std::vector<double> true_force;
+  std::vector<double> observer_force;
+
+  [[nodiscard]] double nrmse() const { return peak_force > 0.0 ? rms_error / peak_force : 0.0; }
+};
+
+// Throws InputError when the plant log has no force or nothing overlaps.
+[[nodiscard]] ForceJoin join_force(const std::vector<TelemetryRow>& telemetry,
+                                   const RecordedRun& plant, double offset, double max_lag = 0.02);
+
+}  // namespace mrd::tools

@@ -1,0 +1,103 @@
+#include "tools/hil/telemetry_csv.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "firmware/csv_telemetry_writer.hpp"
+#include "tools/csv.hpp"
+
+namespace mrd::tools {
+
+namespace {
+
+using firmware::SupervisorState;
+using firmware::Trigger;
+
+template <typename E>
+bool enum_named(std::string_view name, E count, E& out) {
+  for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) {
+    if (firmware::to_string(static_cast<E>(i)) == name) {
+      out = static_cast<E>(i);
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+std::vector<TelemetryRow> parse_telemetry_csv(std::string_view text, const std::string& name) {
+  static const std::vector<std::string_view> kColumns = [] {
+    std::vector<std::string_view> columns;
+    std::string_view header = firmware::CsvTelemetryWriter::header();
+    header.remove_suffix(1);  // '\n'
+    for (const auto c : split_csv_line(header)) columns.push_back(c);
+    return columns;
+  }();
+  LineReader lines(text);
+  const auto first = lines.next();
+  const auto fail = [&](std::string_view column, const std::string& message) {
+    return InputError(input_error_message(name, lines.line_number(), column, message));
+  };
+  if (!first || split_csv_line(*first) != kColumns) {
+    throw fail("", "not an mrd-controller telemetry file: the header must be " +
+                       std::string(firmware::CsvTelemetryWriter::header()).substr(0, 60) + "...");
+  }
+  std::vector<TelemetryRow> rows;
+  while (const auto line = lines.next()) {
+    const auto f = split_csv_line(*line);
+    if (f.size() != kColumns.size()) {
+      throw fail("", "expected " + std::to_string(kColumns.size()) + " fields, got " + std::to_string(f.size()));
+    }
+    const auto number = [&](std::size_t i) {
+      if (f[i] == "nan" || f[i] == "-nan") return std::numeric_limits<double>::quiet_NaN();
+      const auto v = parse_finite(f[i]);
+      if (!v) throw fail(kColumns[i], "'" + std::string(f[i]) + "' is not a number");
+      return *v;
+    };
+    TelemetryRow r;
+    r.cycle = static_cast<std::uint64_t>(number(0));
+    r.time = number(1);
+    r.displacement = number(2) * 1e-3;
+    r.sample = std::string(f[3]);
+    r.measured_current = number(4);
+    r.scheduled_current = number(5);
+    r.law_current = number(6);
+    r.setpoint = number(7);
+    r.target_B = number(8);
+    r.B = number(9);
+    r.velocity = number(10) * 1e-3;
+    r.force = number(11) * 1e3;
+    if (!enum_named(f[12], SupervisorState::kCount, r.state)) throw fail(kColumns[12], "unknown state");
+    if (!enum_named(f[13], Trigger::kCount, r.trigger)) throw fail(kColumns[13], "unknown trigger");
+    r.overruns = static_cast<std::uint32_t>(number(14));
+    r.enable = number(15) != 0.0;
+    rows.push_back(std::move(r));
+  }
+  return rows;
+}
+
+std::vector<TelemetryRow> read_telemetry_csv(const std::string& path) {
+  return parse_telemetry_csv(read_text_file(path), path);
+}
+
+std::vector<StateChange> state_changes(const std::vector<TelemetryRow>& rows) {
+  std::vector<StateChange> out;
+  SupervisorState state = SupervisorState::kInit;
+  for (const auto& r : rows) {
+    if (r.state != state) out.push_back({r.cycle, r.time, state, r.state, r.trigger});
+    state = r.state;
+  }
+  return out;
+}
+
+std::string to_string(const StateChange& c) {
+  char text[160];
+  std::snprintf(text, sizeof text, "%s -> %s (%s) at cycle %llu (%.3f s)",
+                firmware::to_string(c.from).data(), firmware::to_string(c.to).data(),
+                firmware::to_string(c.trigger).data(), static_cast<unsigned long long>(c.cycle), c.time);
+  return text;
+}
+
+}  // namespace mrd::tools
