@@ -112,10 +112,11 @@ ParameterSpace effect_space(const std::string& name, const model::DamperModel& m
     };
   } else if (name == "sensor_delay") {
     const double longest = std::min(model::kMaxSensorDelay, 0.05 * scales.duration);
-    space.parameters = {"delay [s]"};
-    space.bounds = make_bounds({{0.0, std::max(longest, 2.0 * T)}});
+    // Logarithmic, so that a delay below one sample is as easy to find as one of 50 ms.
+    space.parameters = {"log10 delay [s]"};
+    space.bounds = make_bounds({{std::log10(0.1 * T), std::log10(std::max(longest, 2.0 * T))}});
     space.edit = [](model::DamperModel m, const Point& p) {
-      m.effects.sensor_delay = {true, std::min(p[0], model::kMaxSensorDelay)};
+      m.effects.sensor_delay = {true, std::min(std::pow(10.0, p[0]), model::kMaxSensorDelay)};
       return m;
     };
   } else if (name == "thermal_drift") {
@@ -189,7 +190,7 @@ Point effect_coordinates(const std::string& name, const model::DamperModel& m, c
     return p;
   };
   if (name == "coil_lag") return point({std::log10(e.coil_lag.time_constant)});
-  if (name == "sensor_delay") return point({e.sensor_delay.delay});
+  if (name == "sensor_delay") return point({std::log10(e.sensor_delay.delay)});
   if (name == "thermal_drift") {
     const auto& t = e.thermal_drift;
     if (scales.measured_temperature) return point({t.viscosity_coefficient, t.yield_coefficient});

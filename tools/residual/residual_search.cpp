@@ -180,11 +180,15 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
       result.accepted.push_back(trials[best].effect);
       // The next round compares its candidates with this model refined to convergence, so
       // no candidate is credited with what a longer refinement of this one would have found.
+      // Kept only if it validates at least as well: the polish minimises the fitting error.
       std::int64_t polish_evaluations = 0;
-      current = polish(fits[best].model, result.accepted, start, scales, fit_series, polish_evaluations);
+      const model::DamperModel polished =
+          polish(fits[best].model, result.accepted, start, scales, fit_series, polish_evaluations);
       evaluations += polish_evaluations;
-      predict_force(current, fit_series, scratch);
-      current_validation = residual_rms(fit_series, scratch).validation;
+      predict_force(polished, fit_series, scratch);
+      const double polished_validation = residual_rms(fit_series, scratch).validation;
+      current = polished_validation <= trials[best].validation_rms ? polished : fits[best].model;
+      current_validation = std::min(polished_validation, trials[best].validation_rms);
       std::erase(candidates, trials[best].effect);
     }
     for (std::size_t i = 0; i < trials.size(); ++i) {

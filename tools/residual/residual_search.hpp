@@ -15,7 +15,7 @@ namespace mrd::tools {
 
 // The documented acceptance threshold: an effect is accepted only when, fitted on the fitting
 // blocks, it lowers the RMS error on the validation blocks by at least this fraction.
-inline constexpr double kMinimumValidationReduction = 0.25;
+inline constexpr double kMinimumValidationReduction = 0.10;
 
 struct ResidualOptions {
   // The damper the fit starts from: the config's, or the default. Effects enabled here were
