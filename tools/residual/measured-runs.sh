@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# The measured-data tables of docs/CLOSING-THE-LOOP.md, "mrd-residual": Dyke's prototype damper
+# (with Spencer 1997's published model as the reference) and Quiroz's sine tests at all
+# currents fitted together, then their validation record predicted per current.
+# Usage: tools/residual/measured-runs.sh [BUILD_DIR] [OUT_DIR]
+set -euo pipefail
+build=${1:-build/release}
+out=${2:-out/residual}
+mkdir -p "$out/dyke" "$out/quiroz"
+residual="$build/tools/mrd-residual"
+replay="$build/tools/mrd-replay"
+
+echo "== Dyke, ranran_50.csv"
+"$residual" data/damper/dyke-nees-prototype/ranran_50.csv \
+  --columns t=time_s,D=displacement_cm,Y=voltage_V,F=force_N,V=velocity_cm_s --amps-per-volt 0.5 \
+  --reference-spencer-dyke --json "$out/dyke/residual.json" --write-config "$out/dyke/fitted.toml" \
+  --plot "$out/dyke" | tee "$out/dyke/summary.txt"
+
+echo "== Quiroz, the 20 sine tests together"
+"$residual" data/damper/quiroz-utfsm/sine/*.txt \
+  --columns 1=time_s,2=displacement_mm,3=velocity_mm_s,4=force_N --current-from-name \
+  --json "$out/quiroz/residual.json" --write-config "$out/quiroz/fitted.toml" \
+  --plot "$out/quiroz" | tee "$out/quiroz/summary.txt"
+
+echo "== Quiroz, validation.csv predicted with the fitted config, per current"
+for pair in 0p2:0.2 0p4:0.4 0p6:0.6 0p8:0.8 1p0:1.0; do
+  column=${pair%%:*}
+  amps=${pair##*:}
+  for config in etc/mrd/mrd.toml "$out/quiroz/fitted.toml"; do
+    printf '%s A, %s: ' "$amps" "$(basename "$config")"
+    "$replay" data/damper/quiroz-utfsm/validation.csv --columns "x_mm=displacement_mm,F_${column}A_N=force_N" \
+      --current "$amps" --sample-rate 1000 --zero-phase-velocity 0 --config "$config" | grep "force error"
+  done
+done
+"$replay" data/damper/quiroz-utfsm/validation.csv --columns x_mm=displacement_mm,F_0p6A_N=force_N --current 0.6 \
+  --sample-rate 1000 --zero-phase-velocity 0 --config "$out/quiroz/fitted.toml" --plot "$out/quiroz/validation" > /dev/null
