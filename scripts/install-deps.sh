@@ -8,6 +8,7 @@ packages=(
   libpagmo-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox
+  clang-14 libclang-rt-14-dev  # libFuzzer targets (the fuzz preset, scripts/fuzz.sh)
 )
 missing=()
 for p in "${packages[@]}"; do

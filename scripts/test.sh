@@ -8,3 +8,9 @@ stage() { printf '\n=== %s ===\n' "$1"; }
 
 stage "release: build and every fast test"
 cmake --workflow --preset release
+
+stage "asan: build and every fast test under AddressSanitizer + UndefinedBehaviorSanitizer"
+cmake --workflow --preset asan
+
+stage "fuzz: every libFuzzer target for ${MRD_FUZZ_SECONDS:-20} s (clang)"
+FUZZ_JOBS=${FUZZ_JOBS:-2} scripts/fuzz.sh "${MRD_FUZZ_SECONDS:-20}"
