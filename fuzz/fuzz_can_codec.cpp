@@ -35,6 +35,20 @@ void check_round_trip(const Encoded& again, std::span<const std::uint8_t> data,
   if (v.counter != (data[6] & 0x0F)) std::abort();
 }
 
+// Decodes one frame with `decode` (as if from a foreign id when `foreign`) and checks what a
+// frame that carries values must satisfy.
+template <typename Decode, typename Encode, typename Value>
+void check_frame(Decode decode, Encode encode, std::uint32_t id, RollingCounterCheck& counter,
+                 std::span<const std::uint8_t> payload, bool foreign, std::size_t value_bytes,
+                 std::size_t flag_byte, double Value::*signal) {
+  const auto d = decode(foreign ? 0x7FF : id, payload, id, &counter);
+  if (foreign != (d.status == DecodeStatus::kWrongId)) std::abort();
+  if (!carries_values(d.status)) return;
+  check_sealed(payload);
+  if (!std::isfinite(d.value.*signal)) std::abort();
+  check_round_trip(encode(id, d.value), payload, value_bytes, flag_byte, d.value);
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -50,36 +64,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     rest = rest.subspan(dlc);
     const bool foreign = (header & 0x40) != 0;
     switch (header & 0x03) {
-      case 0: {
-        const auto d = decode_lvdt(foreign ? 0x7FF : kDefaultLvdtId, payload, kDefaultLvdtId,
-                                   &lvdt_counter);
-        if (foreign != (d.status == DecodeStatus::kWrongId)) std::abort();
-        if (!carries_values(d.status)) break;
-        check_sealed(payload);
-        if (!std::isfinite(d.value.displacement)) std::abort();
-        check_round_trip(encode_lvdt(kDefaultLvdtId, d.value), payload, 4, 4, d.value);
+      case 0:
+        check_frame(decode_lvdt, encode_lvdt, kDefaultLvdtId, lvdt_counter, payload, foreign, 4, 4,
+                    &LvdtFrame::displacement);
         break;
-      }
-      case 1: {
-        const auto d = decode_command(foreign ? 0x7FF : kDefaultCommandId, payload,
-                                      kDefaultCommandId, &command_counter);
-        if (foreign != (d.status == DecodeStatus::kWrongId)) std::abort();
-        if (!carries_values(d.status)) break;
-        check_sealed(payload);
-        if (!std::isfinite(d.value.setpoint)) std::abort();
-        check_round_trip(encode_command(kDefaultCommandId, d.value), payload, 2, 2, d.value);
+      case 1:
+        check_frame(decode_command, encode_command, kDefaultCommandId, command_counter, payload,
+                    foreign, 2, 2, &CurrentCommandFrame::setpoint);
         break;
-      }
-      default: {
-        const auto d = decode_feedback(foreign ? 0x7FF : kDefaultFeedbackId, payload,
-                                       kDefaultFeedbackId, &feedback_counter);
-        if (foreign != (d.status == DecodeStatus::kWrongId)) std::abort();
-        if (!carries_values(d.status)) break;
-        check_sealed(payload);
-        if (!std::isfinite(d.value.measured)) std::abort();
-        check_round_trip(encode_feedback(kDefaultFeedbackId, d.value), payload, 2, 2, d.value);
+      default:
+        check_frame(decode_feedback, encode_feedback, kDefaultFeedbackId, feedback_counter, payload,
+                    foreign, 2, 2, &CurrentFeedbackFrame::measured);
         break;
-      }
     }
   }
   return 0;

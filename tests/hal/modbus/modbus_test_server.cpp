@@ -89,6 +89,19 @@ void ModbusTestServer::run() {
   }
 }
 
+hal::modbus::ModbusConfig client_config(int port) {
+  using namespace std::chrono_literals;
+  hal::modbus::ModbusConfig c;
+  c.tcp.port = port;
+  c.response_timeout = 100ms;
+  c.poll_period = 1ms;
+  c.reconnect_min = 5ms;
+  c.reconnect_max = 40ms;
+  c.registers.lvdt_address = kLvdtAddress;
+  c.registers.setpoint_address = kSetpointAddress;
+  return c;
+}
+
 std::vector<std::uint8_t> tcp_response(std::span<const std::uint8_t> request,
                                        std::initializer_list<std::uint8_t> pdu) {
   const auto length = static_cast<std::uint16_t>(pdu.size() + 1);  // unit id + PDU

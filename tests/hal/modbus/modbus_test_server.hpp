@@ -11,6 +11,8 @@
 #include <thread>
 #include <vector>
 
+#include "hal/modbus/modbus_config.hpp"
+
 namespace mrd::test {
 
 // A real libmodbus TCP server on 127.0.0.1 for back-end tests, serving one client at a time
@@ -56,6 +58,14 @@ class ModbusTestServer {
   mutable std::mutex map_mutex_;
   std::thread thread_;
 };
+
+// Where the back-end tests keep their registers, and the client config they use against a test
+// server on `port`: short timeouts and back-off, LVDT int32 (high word first, 1 um per count) at
+// kLvdtAddress, setpoint int16 (1 mA per count) at kSetpointAddress.
+inline constexpr int kLvdtAddress = 10;
+inline constexpr int kSetpointAddress = 20;
+inline constexpr int kFeedbackAddress = 30;
+hal::modbus::ModbusConfig client_config(int port);
 
 // A TCP response to `request` carrying `pdu`: the request's transaction and unit ids, a
 // correct length field. For forging replies that are wrong only where a test wants them wrong.

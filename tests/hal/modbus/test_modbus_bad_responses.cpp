@@ -15,10 +15,8 @@
 
 namespace {
 
-using namespace std::chrono_literals;
 using mrd::hal::MonotonicClock;
 using mrd::hal::modbus::ModbusBackend;
-using mrd::hal::modbus::ModbusConfig;
 using mrd::hal::modbus::ModbusEvent;
 using mrd::test::ModbusTestServer;
 using mrd::test::tcp_response;
@@ -27,24 +25,13 @@ using mrd::test::wait_for;
 using Request = std::span<const std::uint8_t>;
 constexpr std::size_t kFunction = 7;  // after the 7-byte MBAP header
 
-ModbusConfig config_for(int port) {
-  ModbusConfig c;
-  c.tcp.port = port;
-  c.response_timeout = 50ms;
-  c.poll_period = 1ms;
-  c.reconnect_min = 2ms;
-  c.reconnect_max = 10ms;
-  c.registers.lvdt_address = 10;  // int32 input registers: two words per read
-  return c;
-}
-
 // Runs the back end against `forge` until it has counted `reads` read errors; returns its
 // counters then, after checking that no sample came through.
 mrd::hal::modbus::ModbusCounters run_against(ModbusTestServer::Forge forge, std::uint64_t reads) {
   ModbusTestServer server(std::move(forge));
   EXPECT_TRUE(server.listening());
   MonotonicClock clock;
-  ModbusBackend backend(config_for(server.port()), clock);
+  ModbusBackend backend(mrd::test::client_config(server.port()), clock);
   EXPECT_TRUE(backend.start().ok);
   EXPECT_TRUE(wait_for([&] { return backend.counters()[ModbusEvent::kReadErrors] >= reads; }));
   EXPECT_FALSE(backend.latest().has_value());
