@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "firmware/default_config_text.hpp"  // generated from etc/mrd/mrd.toml
 #include "firmware/effects_config.hpp"
@@ -28,8 +31,32 @@ hal::ConfigReport SimulationConfig::validate() const {
   return r;
 }
 
+std::string TelemetryConfig::resolved_path() const {
+  return (std::filesystem::path(directory) / path).lexically_normal().string();
+}
+
+namespace {
+
+// The file `path` names once every symbolic link in it is followed, or an error.
+std::filesystem::path real_path(const std::filesystem::path& path, std::error_code& error) {
+  return std::filesystem::weakly_canonical(std::filesystem::absolute(path, error), error);
+}
+
+}  // namespace
+
 hal::ConfigReport TelemetryConfig::validate() const {
   hal::ConfigReport r;
+  r.check(!directory.empty(), "directory", "must name a directory (\".\" for the working one)");
+  if (enabled() && !directory.empty()) {
+    std::error_code error;
+    const auto base = real_path(directory, error);
+    const auto target = error ? std::filesystem::path{} : real_path(resolved_path(), error);
+    const auto inside = target.lexically_relative(base);
+    const bool escapes = error || inside.empty() || inside == "." || *inside.begin() == "..";
+    r.check(!escapes, "path",
+            "'" + path + "' resolves to " + (error ? error.message() : target.string()) +
+                ", not a file below telemetry.directory '" + directory + "'");
+  }
   r.check(decimation >= 1, "decimation", "must be >= 1, got " + std::to_string(decimation));
   r.check(ring_size >= 16 && ring_size <= (1 << 22), "ring_size",
           "must be in 16..4194304 records, got " + std::to_string(ring_size));
@@ -201,6 +228,7 @@ void read_all(TomlReader& in, ControllerConfig& c) {
   in.get("realtime.lock_memory", c.realtime.lock_memory);
   in.get("realtime.io_priority", c.realtime.io_priority);
   in.get("telemetry.path", c.telemetry.path);
+  in.get("telemetry.directory", c.telemetry.directory);
   in.get("telemetry.decimation", c.telemetry.decimation);
   in.get("telemetry.ring_size", c.telemetry.ring_size);
   in.get("telemetry.flush_period", c.telemetry.flush_period);

@@ -32,6 +32,7 @@ class ControlLoop {
   void request_shutdown() { supervisor_.request_shutdown(); }
 
   [[nodiscard]] const Supervisor& supervisor() const { return supervisor_; }
+  [[nodiscard]] const ControlLaw& law() const { return law_; }
   [[nodiscard]] SupervisorState state() const { return supervisor_.state(); }
   [[nodiscard]] const TelemetryRecord& last() const { return record_; }
   [[nodiscard]] std::uint64_t cycles() const { return cycles_; }

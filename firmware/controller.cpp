@@ -53,7 +53,7 @@ int run_controller(const ControllerConfig& config, const RunOptions& options,
   if (config.telemetry.enabled()) {
     queue = std::make_unique<TelemetryQueue>(static_cast<std::size_t>(config.telemetry.ring_size));
     writer = std::make_unique<CsvTelemetryWriter>(*queue, config.telemetry.flush_period);
-    if (const auto started = writer->start(config.telemetry.path); !started.ok) {
+    if (const auto started = writer->start(config.telemetry.resolved_path()); !started.ok) {
       std::fprintf(stderr, "mrd-controller: %s\n", started.error.c_str());
       return 1;
     }
@@ -78,7 +78,7 @@ int run_controller(const ControllerConfig& config, const RunOptions& options,
   std::fprintf(out, "mrd-controller: %.0f Hz, lvdt=%s driver=%s lines=%s%s%s\n", config.rate,
                to_string(config.backends.lvdt).data(), to_string(config.backends.driver).data(),
                to_string(config.backends.lines).data(), rig ? ", simulated rig" : "",
-               config.telemetry.enabled() ? (", telemetry " + config.telemetry.path).c_str() : "");
+               config.telemetry.enabled() ? (", telemetry " + config.telemetry.resolved_path()).c_str() : "");
 
   LoopStatistics stats;
   std::atomic<bool> stop{false};
@@ -128,7 +128,7 @@ int run_controller(const ControllerConfig& config, const RunOptions& options,
     std::fprintf(out, "telemetry: %llu records offered, %llu written, %llu dropped -> %s\n",
                  static_cast<unsigned long long>(queue->offered()),
                  static_cast<unsigned long long>(writer->written()),
-                 static_cast<unsigned long long>(queue->dropped()), config.telemetry.path.c_str());
+                 static_cast<unsigned long long>(queue->dropped()), config.telemetry.resolved_path().c_str());
     if (const auto t0 = writer->start_time()) {
       std::fprintf(out, "telemetry: time_s 0 is CLOCK_MONOTONIC %.9f s\n",
                    std::chrono::duration<double>(*t0).count());

@@ -1,5 +1,8 @@
 #include "firmware/csv_telemetry_writer.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -32,9 +35,14 @@ int CsvTelemetryWriter::format(const TelemetryRecord& r, hal::Timestamp start, c
 }
 
 hal::StartResult CsvTelemetryWriter::start(const std::string& path) {
-  file_ = std::fopen(path.c_str(), "w");
+  // O_NOFOLLOW: a symbolic link put where the file goes after the config was checked must not
+  // redirect the writes out of telemetry.directory.
+  const int fd = open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0640);
+  file_ = fd >= 0 ? fdopen(fd, "w") : nullptr;
   if (file_ == nullptr) {
-    return hal::StartResult::failure("cannot open telemetry file " + path + ": " + std::strerror(errno));
+    const int error = errno;
+    if (fd >= 0) close(fd);
+    return hal::StartResult::failure("cannot open telemetry file " + path + ": " + std::strerror(error));
   }
   std::fputs(header(), file_);
   const auto pause = std::chrono::duration_cast<std::chrono::steady_clock::duration>(

@@ -51,7 +51,7 @@ constexpr PowerTable make_power_table() {
   PowerTable table{};
   for (std::size_t j = 0; j < table.mantissa.size(); ++j) {
     table.mantissa[j].coefficients = compile_time::chebyshev_fit<kPowerCoefficients>(
-        [p](Real m) { return compile_time::exp(p * compile_time::log(m)); },
+        [](Real m) { return compile_time::exp(p * compile_time::log(m)); },
         1.0L + (2.0L * static_cast<Real>(j) + 1.0L) / 32.0L, 1.0L / 32.0L);
   }
   for (int e = kMinBinaryExponent; e <= kMaxBinaryExponent; ++e) {

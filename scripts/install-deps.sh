@@ -11,6 +11,7 @@ packages=(
   # The HIL VM (scripts/hil-vm.sh): qemu, headers to build gpio-sim against, and the CAN and
   # GPIO tools copied into the VM.
   qemu-system-x86 linux-headers-amd64 can-utils gpiod
+  clang-14 libclang-rt-14-dev  # libFuzzer targets (the fuzz preset, scripts/fuzz.sh)
 )
 missing=()
 for p in "${packages[@]}"; do

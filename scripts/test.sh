@@ -13,3 +13,9 @@ stage "hil: controller and plant over vcan0 and gpio-sim, inside a QEMU VM (ctes
 # Builds the VM from Debian's packages in ~/.cache/mrd-hil (cold about 1 min of downloads),
 # boots it once for every VM scenario. Skipped where qemu cannot run, unless MRD_HIL_VM=required.
 ctest --test-dir build/release -L hil -R '^hil\.vm$' --output-on-failure
+
+stage "asan: build and every fast test under AddressSanitizer + UndefinedBehaviorSanitizer"
+cmake --workflow --preset asan
+
+stage "fuzz: every libFuzzer target for ${MRD_FUZZ_SECONDS:-20} s (clang)"
+FUZZ_JOBS=${FUZZ_JOBS:-2} scripts/fuzz.sh "${MRD_FUZZ_SECONDS:-20}"

@@ -3,7 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
-#include <sstream>
+#include <vector>
 
 namespace mrd::tools {
 
@@ -17,7 +17,13 @@ std::string_view trim(std::string_view s) {
 }
 }  // namespace
 
-LineReader::LineReader(std::string_view text) : rest_(text) {
+std::string line_too_long_message(std::string_view file, std::size_t line) {
+  return input_error_message(file, line, "",
+                             "line longer than " + std::to_string(kMaxLineLength) +
+                                 " bytes: not a text file this reader takes");
+}
+
+LineReader::LineReader(std::string_view text, std::string name) : rest_(text), name_(std::move(name)) {
   if (rest_.starts_with("\xEF\xBB\xBF")) rest_.remove_prefix(3);
 }
 
@@ -27,6 +33,7 @@ std::optional<std::string_view> LineReader::next() {
     const std::string_view line = rest_.substr(0, end);
     rest_.remove_prefix(end == std::string_view::npos ? rest_.size() : end + 1);
     ++line_number_;
+    if (line.size() > kMaxLineLength) throw InputError(line_too_long_message(name_, line_number_));
     if (!trim(line).empty()) return line;
   }
   return std::nullopt;
@@ -35,9 +42,24 @@ std::optional<std::string_view> LineReader::next() {
 std::string read_text_file(const std::string& path) {
   std::ifstream file(path, std::ios::binary);
   if (!file) throw InputError(path + ": cannot open the file");
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
+  std::string text;
+  std::vector<char> chunk(std::size_t{64} << 10);
+  std::size_t line = 1;
+  std::size_t line_length = 0;  // bytes of `line` read so far
+  while (file.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || file.gcount() > 0) {
+    const std::string_view got(chunk.data(), static_cast<std::size_t>(file.gcount()));
+    for (std::size_t start = 0;;) {
+      const std::size_t end = got.find('\n', start);
+      line_length += (end == std::string_view::npos ? got.size() : end) - start;
+      if (line_length > kMaxLineLength) throw InputError(line_too_long_message(path, line));
+      if (end == std::string_view::npos) break;
+      ++line;
+      line_length = 0;
+      start = end + 1;
+    }
+    text.append(got);
+  }
+  return text;
 }
 
 std::vector<std::string_view> split_csv_line(std::string_view line, bool whitespace_separated) {

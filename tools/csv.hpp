@@ -14,11 +14,19 @@ class InputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The longest line the readers take. Instrument exports write a few hundred bytes a line; a
+// longer one is a damaged or hostile file, refused before it is held in memory whole.
+inline constexpr std::size_t kMaxLineLength = std::size_t{1} << 20;
+
+// "file:line: line longer than 1048576 bytes: ...", the error for a line over kMaxLineLength.
+std::string line_too_long_message(std::string_view file, std::size_t line);
+
 // Walks text line by line, skipping blank lines and numbering lines from 1 as an editor does.
-// A UTF-8 byte-order mark at the start (spreadsheet exports) is skipped.
+// A UTF-8 byte-order mark at the start (spreadsheet exports) is skipped. A line longer than
+// kMaxLineLength throws InputError naming `name` (the file) and the line.
 class LineReader {
  public:
-  explicit LineReader(std::string_view text);
+  LineReader(std::string_view text, std::string name);
   // The next non-blank line without its end of line, or nullopt at the end of the text.
   std::optional<std::string_view> next();
   // The number of the line next() returned last (0 before the first).
@@ -26,10 +34,13 @@ class LineReader {
 
  private:
   std::string_view rest_;
+  std::string name_;
   std::size_t line_number_ = 0;
 };
 
-// The whole file as text; throws InputError "path: cannot open the file".
+// The whole file as text. Throws InputError "path: cannot open the file", and
+// line_too_long_message as soon as a line passes kMaxLineLength, so a file with a 2 GB line
+// costs 1 MiB of memory, not 2 GB.
 std::string read_text_file(const std::string& path);
 
 // Splits one CSV line on `separator` (',' or, when whitespace_separated, runs of blanks),

@@ -80,13 +80,8 @@ StartResult SocketCanBackend::start() {
   const socklen_t filter_bytes =
       static_cast<socklen_t>(sizeof(can_filter) * (config_.use_feedback ? 2 : 1));
   const can_err_mask_t err_mask = kSubscribedErrors;
-  const auto timeout_us =
-      std::chrono::duration_cast<std::chrono::microseconds>(config_.receive_timeout).count();
-  const timeval tv{static_cast<time_t>(timeout_us / 1'000'000),
-                   static_cast<suseconds_t>(timeout_us % 1'000'000)};
   if (setsockopt(fd, SOL_CAN_RAW, CAN_RAW_FILTER, filters.data(), filter_bytes) != 0 ||
-      setsockopt(fd, SOL_CAN_RAW, CAN_RAW_ERR_FILTER, &err_mask, sizeof err_mask) != 0 ||
-      setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv) != 0) {
+      setsockopt(fd, SOL_CAN_RAW, CAN_RAW_ERR_FILTER, &err_mask, sizeof err_mask) != 0) {
     return fail(where + ": setsockopt failed");
   }
   sockaddr_can addr{};
@@ -94,6 +89,23 @@ StartResult SocketCanBackend::start() {
   addr.can_ifindex = static_cast<int>(ifindex);
   if (bind(fd, reinterpret_cast<const sockaddr*>(&addr), sizeof addr) != 0) {
     return fail(where + ": bind failed");
+  }
+  return start_on(fd);
+}
+
+StartResult SocketCanBackend::start_on(int fd) {
+  if (fd_ >= 0) {
+    close(fd);
+    return StartResult::failure("can: already started");
+  }
+  const auto timeout_us =
+      std::chrono::duration_cast<std::chrono::microseconds>(config_.receive_timeout).count();
+  const timeval tv{static_cast<time_t>(timeout_us / 1'000'000),
+                   static_cast<suseconds_t>(timeout_us % 1'000'000)};
+  if (setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv) != 0) {
+    const StartResult r = StartResult::failure(errno_text("can: setsockopt(SO_RCVTIMEO) failed"));
+    close(fd);
+    return r;
   }
   fd_ = fd;
   thread_.start("mrd-can-rx", [this] { run(); });

@@ -56,6 +56,10 @@ class SocketCanBackend final : public DisplacementSource, public CurrentDriver {
   // Opens and binds the socket and starts the receive thread; on failure says why (no CAN in
   // the kernel, no such interface, ...) and leaves the back end inert.
   [[nodiscard]] StartResult start();
+  // Runs on `fd`, an open datagram socket carrying one struct can_frame per message, instead of
+  // the configured interface: what a test drives the receive thread through (a socketpair
+  // standing in for the bus) where the kernel has no CAN. Takes the descriptor.
+  [[nodiscard]] StartResult start_on(int fd);
   void stop();
 
   [[nodiscard]] std::optional<DisplacementSample> latest() override;

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
-#include <sstream>
 
 #include "tools/csv.hpp"
 
@@ -33,6 +33,16 @@ double BHCurve::rms_B() const {
 }
 
 namespace {
+
+constexpr double kMaxAbsField = 1e9;     // [A/m]: mu0 H = 1257 T
+constexpr double kMaxAbsDensity = 100.0; // [T]
+constexpr double kMaxLoopIndex = 999'999'999.0;
+
+std::string format_si(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
 
 enum class Quantity { kField, kCurrent, kDensity, kLoopIndex, kOther };
 
@@ -77,19 +87,15 @@ struct PairColumns {
 
 BHCurve parse_bh_curve(const std::string& text, const std::string& name,
                        const BHCurveOptions& options) {
-  std::istringstream in(text);
-  std::string line;
-  std::size_t line_no = 0;
+  LineReader lines(text, name);
   auto fail = [&](std::string_view column, const std::string& message) -> InputError {
-    return InputError(input_error_message(name, line_no, column, message));
+    return InputError(input_error_message(name, lines.line_number(), column, message));
   };
 
-  // Header: the first non-empty line.
+  // Header: the first non-blank line.
   std::vector<Column> columns;
-  while (columns.empty() && std::getline(in, line)) {
-    ++line_no;
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    for (const auto field : split_csv_line(line)) columns.push_back(classify(std::string(field)));
+  if (const auto header = lines.next()) {
+    for (const auto field : split_csv_line(*header)) columns.push_back(classify(std::string(field)));
   }
   if (columns.empty()) throw fail("", "empty file: expected a header with H and B columns");
 
@@ -132,10 +138,8 @@ BHCurve parse_bh_curve(const std::string& text, const std::string& name,
   std::vector<bool> ended(pairs.size(), false);
   std::map<long, std::size_t> loop_ids;  // loop column value -> index, in order of appearance
 
-  while (std::getline(in, line)) {
-    ++line_no;
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    const auto cells = split_csv_line(line);
+  while (const auto line = lines.next()) {
+    const auto cells = split_csv_line(*line);
     if (cells.size() > columns.size()) {
       throw fail("", std::to_string(cells.size()) + " fields, but the header has " +
                          std::to_string(columns.size()));
@@ -148,10 +152,21 @@ BHCurve parse_bh_curve(const std::string& text, const std::string& name,
       }
       return *value * columns[i].to_si;
     };
+    // Beyond any material and any lab magnet; also keeps sums of squares (rms_B) finite.
+    auto physical = [&](std::size_t i, double value, double limit, const char* unit) {
+      if (!(std::fabs(value) <= limit)) {
+        throw fail(columns[i].name, "'" + std::string(cell(i)) + "' is " + format_si(value) + " " +
+                                        unit + ", outside physics (at most " + format_si(limit) +
+                                        " " + unit + ")");
+      }
+      return value;
+    };
     std::size_t target_loop = 0;
     if (loop_column) {
       const double id = number(*loop_column);
-      if (id != std::floor(id)) throw fail("loop", "loop index must be an integer");
+      if (id != std::floor(id) || std::fabs(id) > kMaxLoopIndex) {
+        throw fail("loop", "loop index must be an integer of at most 9 digits");
+      }
       target_loop = loop_ids.try_emplace(static_cast<long>(id), loop_ids.size()).first->second;
       if (target_loop >= loops.size()) loops.resize(target_loop + 1);
     }
@@ -168,8 +183,9 @@ BHCurve parse_bh_curve(const std::string& text, const std::string& name,
         throw fail(columns[pairs[p].field].name, "value after the loop ended with an empty cell");
       }
       auto& loop = loops[loop_column ? target_loop : p];
-      loop.H.push_back(number(pairs[p].field) * current_to_field);
-      loop.B.push_back(number(pairs[p].density));
+      loop.H.push_back(physical(pairs[p].field, number(pairs[p].field) * current_to_field,
+                                kMaxAbsField, "A/m"));
+      loop.B.push_back(physical(pairs[p].density, number(pairs[p].density), kMaxAbsDensity, "T"));
     }
   }
   BHCurve curve{name, {}};

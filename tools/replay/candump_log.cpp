@@ -50,7 +50,7 @@ std::optional<std::uint8_t> hex_digit(char c) {
 class CandumpParser {
  public:
   CandumpParser(std::string_view text, const std::string& name, const RunReadOptions& options)
-      : lines_(text), name_(name), options_(options) {}
+      : lines_(text, name), name_(name), options_(options) {}
 
   CandumpLog parse() {
     if (options_.columns)

@@ -25,7 +25,7 @@ std::string seconds(double t) {
 class RunCsvParser {
  public:
   RunCsvParser(std::string_view text, const std::string& name, const RunReadOptions& options)
-      : lines_(text), name_(name), options_(options) {
+      : lines_(text, name), name_(name), options_(options) {
     run_.name = name;
   }
 
@@ -201,6 +201,9 @@ class RunCsvParser {
       const auto value = parse_finite(cell);
       if (!value) throw fail(c.label, "'" + std::string(cell) + "' is not a finite number");
       const double v = c.unit.to_internal(*value);
+      if (!std::isfinite(v)) {
+        throw fail(c.label, "'" + std::string(cell) + "' overflows once converted to SI");
+      }
       if (c.unit.quantity == RunQuantity::kTime && n > 0) {
         const double previous = run_.time.back();
         if (v < previous)

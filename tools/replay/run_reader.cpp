@@ -8,7 +8,7 @@ namespace mrd::tools {
 
 RecordedRun parse_recorded_run(std::string_view text, const std::string& name,
                                const RunReadOptions& options) {
-  LineReader lines(text);
+  LineReader lines(text, name);
   const auto first = lines.next();
   const bool candump = first && first->find_first_not_of(" \t") != std::string_view::npos &&
                        (*first)[first->find_first_not_of(" \t")] == '(';

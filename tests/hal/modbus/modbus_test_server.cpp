@@ -5,11 +5,19 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 
 namespace mrd::test {
 
-ModbusTestServer::ModbusTestServer(Mode mode, int port) : mode_(mode) {
+ModbusTestServer::ModbusTestServer(Mode mode, int port) : mode_(mode) { listen_on(port); }
+
+// The forge is in place before listen_on() starts the thread that calls it.
+ModbusTestServer::ModbusTestServer(Forge forge) : mode_(Mode::kForge), forge_(std::move(forge)) {
+  listen_on(0);
+}
+
+void ModbusTestServer::listen_on(int port) {
   ctx_ = modbus_new_tcp("127.0.0.1", port);
   map_ = modbus_mapping_new(0, 0, kRegisters, kRegisters);
   if (ctx_ == nullptr || map_ == nullptr) return;
@@ -74,8 +82,37 @@ void ModbusTestServer::run() {
     } else if (rc > 0 && mode_ == Mode::kReply) {
       const std::lock_guard lock(map_mutex_);
       modbus_reply(ctx_, query.data(), rc, map_);
+    } else if (rc > 0 && mode_ == Mode::kForge) {
+      const auto bytes = forge_(std::span(query).first(static_cast<std::size_t>(rc)));
+      if (!bytes.empty()) (void)send(client_fd_, bytes.data(), bytes.size(), MSG_NOSIGNAL);
     }
   }
+}
+
+hal::modbus::ModbusConfig client_config(int port) {
+  using namespace std::chrono_literals;
+  hal::modbus::ModbusConfig c;
+  c.tcp.port = port;
+  c.response_timeout = 100ms;
+  c.poll_period = 1ms;
+  c.reconnect_min = 5ms;
+  c.reconnect_max = 40ms;
+  c.registers.lvdt_address = kLvdtAddress;
+  c.registers.setpoint_address = kSetpointAddress;
+  return c;
+}
+
+std::vector<std::uint8_t> tcp_response(std::span<const std::uint8_t> request,
+                                       std::initializer_list<std::uint8_t> pdu) {
+  const auto length = static_cast<std::uint16_t>(pdu.size() + 1);  // unit id + PDU
+  std::vector<std::uint8_t> out(7 + pdu.size());
+  out[0] = request[0];  // transaction id
+  out[1] = request[1];
+  out[4] = static_cast<std::uint8_t>(length >> 8);
+  out[5] = static_cast<std::uint8_t>(length & 0xFF);
+  out[6] = request[6];  // unit id
+  std::copy(pdu.begin(), pdu.end(), out.begin() + 7);
+  return out;
 }
 
 }  // namespace mrd::test

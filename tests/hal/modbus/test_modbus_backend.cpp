@@ -21,21 +21,10 @@ using mrd::hal::modbus::ModbusEvent;
 using mrd::test::ModbusTestServer;
 using mrd::test::wait_for;
 
-constexpr int kLvdtAddress = 10;
-constexpr int kSetpointAddress = 20;
-constexpr int kFeedbackAddress = 30;
-
-ModbusConfig config_for(int port) {
-  ModbusConfig c;
-  c.tcp.port = port;
-  c.response_timeout = 100ms;
-  c.poll_period = 1ms;
-  c.reconnect_min = 5ms;
-  c.reconnect_max = 40ms;
-  c.registers.lvdt_address = kLvdtAddress;  // int32, high word first, 1 um per count
-  c.registers.setpoint_address = kSetpointAddress;  // int16, 1 mA per count
-  return c;
-}
+using mrd::test::kFeedbackAddress;
+using mrd::test::kLvdtAddress;
+using mrd::test::kSetpointAddress;
+ModbusConfig config_for(int port) { return mrd::test::client_config(port); }
 
 // Drains the back end until a sample satisfying `pred` arrives (bounded).
 template <typename Pred>

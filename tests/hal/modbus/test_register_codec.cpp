@@ -55,6 +55,19 @@ TEST(RegisterCodec, DecodesFloatAndAppliesScaleAndOffset) {
               -0.012655, 1e-12);
 }
 
+// Found by fuzz_register_codec (docs/RELIABILITY.md): a float register holding -0 is the value
+// 0, and encoding it gives +0's words, which decode to the same value.
+TEST(RegisterCodec, NegativeZeroFloatIsZeroAndRoundTripsByValue) {
+  const RegisterFormat f = format(RegisterType::kFloat32, WordOrder::kHighFirst, ByteOrder::kSwapped);
+  const std::vector<std::uint16_t> negative_zero{0x0080, 0x0000};  // 0x80000000 byte-swapped
+  const auto d = decode_register(negative_zero, f);
+  ASSERT_EQ(d.status, CodecStatus::kOk);
+  EXPECT_EQ(d.value, 0.0);
+  const auto e = encode_register(d.value, f);
+  ASSERT_EQ(e.status, CodecStatus::kOk);
+  EXPECT_EQ(decode_register(e.view(), f).value, 0.0);
+}
+
 TEST(RegisterCodec, ShortLongAndNonFiniteInputsGiveAStatus) {
   const std::vector<std::uint16_t> one{1};
   const std::vector<std::uint16_t> three{1, 2, 3};

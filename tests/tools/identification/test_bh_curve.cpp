@@ -73,6 +73,27 @@ TEST(BHCurveReader, NonFiniteValuesAreErrors) {
   EXPECT_EQ(error_of(text), "loops.csv:3: column 'B1_T': 'nan' is not a finite number");
 }
 
+// Found by fuzz_bh_curve (docs/RELIABILITY.md): a loop index past the range of long was
+// undefined behaviour, and finite values could become infinite fields once converted.
+TEST(BHCurveReader, HugeLoopIndicesAndValuesOutsidePhysicsAreErrors) {
+  EXPECT_EQ(error_of("loop,H_A_per_m,B_T\n1e300,1,1\n"),
+            "loops.csv:2: column 'loop': loop index must be an integer of at most 9 digits");
+  EXPECT_EQ(error_of("H_kA_per_m,B_T\n1e308,1\n"),
+            "loops.csv:2: column 'H_kA_per_m': '1e308' is inf A/m, outside physics (at most 1e+09 A/m)");
+  EXPECT_EQ(error_of("H_A_per_m,B_mT\n1,2e5\n"),
+            "loops.csv:2: column 'B_mT': '2e5' is 200 T, outside physics (at most 100 T)");
+  BHCurveOptions circuit;
+  circuit.has_circuit = true;
+  EXPECT_NE(error_of("I_A,B_T\n1e300,1\n", circuit).find("outside physics"), std::string::npos);
+}
+
+TEST(BHCurveReader, ALineOverTheLengthCapIsAnError) {
+  std::string text = "H_A_per_m,B_T\n1,";
+  text.append(mrd::tools::kMaxLineLength, '1');
+  EXPECT_EQ(error_of(text),
+            "loops.csv:2: line longer than 1048576 bytes: not a text file this reader takes");
+}
+
 TEST(BHCurveReader, MalformedFilesGetOneClearError) {
   EXPECT_EQ(error_of(""), "loops.csv:0: empty file: expected a header with H and B columns");
   EXPECT_NE(error_of("H_A_per_m,X\n1,2\n").find("column 'X': unknown column"), std::string::npos);

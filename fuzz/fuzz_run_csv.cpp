@@ -1,0 +1,48 @@
+// libFuzzer target: the recorded-run CSV reader (tools/replay/run_csv). Any text, read as the
+// project's own format, through a column mapping by name or by position, or with a constant
+// current and a sample rate. The only acceptable failure is InputError; a run it accepts must
+// pass check_run.
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "fuzz/run_invariants.hpp"
+#include "tools/csv.hpp"
+#include "tools/replay/run_columns.hpp"
+#include "tools/replay/run_csv.hpp"
+
+namespace {
+
+mrd::tools::RunReadOptions options_for(std::uint8_t selector) {
+  mrd::tools::RunReadOptions options;
+  switch (selector % 4) {
+    case 1:
+      options.columns = mrd::tools::parse_column_mapping("t=time_s,D=displacement_cm,Y=voltage_V,F=force_N");
+      break;
+    case 2:
+      options.columns = mrd::tools::parse_column_mapping("1=time_s,2=displacement_mm,3=-force_kN");
+      options.current = 0.5;
+      break;
+    case 3:
+      options.columns = mrd::tools::parse_column_mapping("2=displacement_mm");
+      options.current = 1.0;
+      options.sample_rate = 1000.0;
+      break;
+    default:
+      break;
+  }
+  return options;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size == 0) return 0;
+  const auto options = options_for(data[0]);
+  const std::string_view text(reinterpret_cast<const char*>(data) + 1, size - 1);
+  try {
+    mrd::fuzz::check_run(mrd::tools::parse_run_csv(text, "fuzz.csv", options));
+  } catch (const mrd::tools::InputError&) {
+  }
+  return 0;
+}

@@ -1,0 +1,122 @@
+// Forged and out-of-sequence CAN frames end to end (docs/RELIABILITY.md): frames go through
+// SocketCanBackend's receive thread as they would from the bus, over a socketpair, since the
+// build machine's kernel has no CAN. The documented reaction: a frame with a bad checksum or a
+// wrong DLC becomes a corrupted (unusable) sample and is counted; a repeated counter is a stale
+// copy, counted and never a new sample; a counter jump is counted and its value used, flagged;
+// other ids are counted as unexpected and never decoded, however many.
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "hal/can/socketcan_backend.hpp"
+#include "tests/hal/test_wait.hpp"
+
+namespace {
+
+using mrd::hal::MonotonicClock;
+using mrd::test::wait_for;
+using namespace mrd::hal::can;
+
+class ForgedBus : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    int fds[2];
+    ASSERT_EQ(socketpair(AF_UNIX, SOCK_DGRAM | SOCK_CLOEXEC, 0, fds), 0);
+    bus_ = fds[1];
+    const auto started = backend_.start_on(fds[0]);
+    ASSERT_TRUE(started.ok) << started.error;
+  }
+  void TearDown() override {
+    backend_.stop();
+    close(bus_);
+  }
+
+  void send_frame(canid_t id, std::span<const std::uint8_t> data) {
+    can_frame frame{};
+    frame.can_id = id;
+    frame.len = static_cast<std::uint8_t>(data.size());
+    std::memcpy(frame.data, data.data(), data.size());
+    ASSERT_EQ(send(bus_, &frame, sizeof frame, 0), static_cast<ssize_t>(sizeof frame));
+  }
+  void send_lvdt(double metres, std::uint8_t counter) {
+    send_frame(kDefaultLvdtId, encode_lvdt(kDefaultLvdtId, {metres, false, counter}).frame.data);
+  }
+  // Waits until the receive thread has counted `n` of `event`.
+  bool counted(CanEvent event, std::uint64_t n) {
+    return wait_for([&] { return backend_.counters()[event] == n; });
+  }
+
+  MonotonicClock clock_;
+  SocketCanBackend backend_{SocketCanConfig{}, clock_};
+  int bus_ = -1;
+};
+
+TEST_F(ForgedBus, BadChecksumWrongDlcAndRepeatedCounterAreNeverUsed) {
+  send_lvdt(0.001, 0);
+  ASSERT_TRUE(counted(CanEvent::kLvdtFrames, 1));
+  auto s = backend_.latest();
+  ASSERT_TRUE(s && s->usable());
+  EXPECT_DOUBLE_EQ(s->value, 0.001);
+
+  auto forged = encode_lvdt(kDefaultLvdtId, {0.5, false, 1}).frame;
+  forged.data[7] ^= 0x01;  // checksum off by one bit
+  send_frame(kDefaultLvdtId, forged.data);
+  ASSERT_TRUE(counted(CanEvent::kBadChecksum, 1));
+  s = backend_.latest();
+  ASSERT_TRUE(s);
+  EXPECT_FALSE(s->usable());
+  EXPECT_TRUE(s->flags & mrd::hal::kSampleCorrupted);
+
+  const auto good = encode_lvdt(kDefaultLvdtId, {0.5, false, 1}).frame;
+  send_frame(kDefaultLvdtId, std::span(good.data).first(5));  // DLC 5
+  ASSERT_TRUE(counted(CanEvent::kWrongDlc, 1));
+  s = backend_.latest();
+  ASSERT_TRUE(s);
+  EXPECT_FALSE(s->usable());
+
+  send_lvdt(0.002, 0);  // the last good frame's counter again: a replayed copy
+  ASSERT_TRUE(counted(CanEvent::kRepeatedCounter, 1));
+  EXPECT_FALSE(backend_.latest().has_value());
+
+  send_lvdt(0.003, 5);  // counter jumps 0 -> 5: frames were lost, the value is good
+  ASSERT_TRUE(counted(CanEvent::kSequenceGaps, 1));
+  s = backend_.latest();
+  ASSERT_TRUE(s && s->usable());
+  EXPECT_TRUE(s->flags & mrd::hal::kSampleSequenceGap);
+  EXPECT_DOUBLE_EQ(s->value, 0.003);
+  EXPECT_EQ(backend_.counters()[CanEvent::kLvdtFrames], 2u);
+
+  auto feedback = encode_feedback(kDefaultFeedbackId, {1.5, false, 0}).frame;
+  feedback.data[0] ^= 0x80;  // a flipped bit in the value
+  send_frame(kDefaultFeedbackId, feedback.data);
+  ASSERT_TRUE(counted(CanEvent::kBadChecksum, 2));
+  EXPECT_FALSE(backend_.measured().has_value());
+  EXPECT_EQ(backend_.counters()[CanEvent::kFeedbackFrames], 0u);
+}
+
+TEST_F(ForgedBus, AFloodOfUnexpectedIdsIsCountedAndTheLvdtStillGetsThrough) {
+  constexpr int kFlood = 20000;
+  constexpr int kLvdtEvery = 1000;
+  const std::array<std::uint8_t, 8> junk{0xDE, 0xAD, 0xBE, 0xEF, 0, 0, 0, 0};
+  std::uint8_t counter = 0;
+  for (int i = 0; i < kFlood; ++i) {
+    // Standard ids next to ours, and an extended frame carrying our LVDT id.
+    send_frame(i % 2 == 0 ? kDefaultLvdtId + 1 : (kDefaultLvdtId | CAN_EFF_FLAG), junk);
+    if (i % kLvdtEvery == kLvdtEvery - 1) {
+      send_lvdt(1e-6 * i, counter);
+      counter = static_cast<std::uint8_t>((counter + 1) & 0x0F);
+    }
+  }
+  ASSERT_TRUE(counted(CanEvent::kLvdtFrames, kFlood / kLvdtEvery));
+  ASSERT_TRUE(counted(CanEvent::kUnexpectedFrames, kFlood));
+  const auto c = backend_.counters();
+  EXPECT_EQ(c[CanEvent::kBadChecksum] + c[CanEvent::kWrongDlc] + c[CanEvent::kSequenceGaps], 0u);
+  const auto s = backend_.latest();
+  ASSERT_TRUE(s && s->usable());
+  EXPECT_DOUBLE_EQ(s->value, 1e-6 * (kFlood - 1));
+}
+
+}  // namespace
