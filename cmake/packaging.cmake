@@ -24,7 +24,9 @@ file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/packaging)
 execute_process(COMMAND gzip -9nc ${mrd_deb_dir}/changelog OUTPUT_FILE ${mrd_changelog_gz}
                 COMMAND_ERROR_IS_FATAL ANY)
 set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${mrd_deb_dir}/changelog)
-foreach(component package IN ZIP_LISTS "controller;tools" "mrd-controller;mrd-tools")
+set(mrd_components controller tools)
+set(mrd_packages mrd-controller mrd-tools)
+foreach(component package IN ZIP_LISTS mrd_components mrd_packages)
   install(FILES ${mrd_deb_dir}/copyright ${mrd_changelog_gz}
           DESTINATION ${CMAKE_INSTALL_DATAROOTDIR}/doc/${package} COMPONENT ${component})
 endforeach()
@@ -48,12 +50,15 @@ set(CPACK_PACKAGE_NAME mrd)
 set(CPACK_PACKAGE_VENDOR "the mrd authors")
 set(CPACK_PACKAGE_CONTACT ${MRD_PACKAGE_CONTACT})
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
+# Each package's description starts with its own synopsis line. CPack would put the project's
+# summary above it unless the summary is CPack's default, so it is set to that.
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "${CMAKE_PROJECT_NAME} built using CMake")
 set(CPACK_PACKAGE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/packages)
 set(CPACK_PACKAGING_INSTALL_PREFIX ${CMAKE_INSTALL_PREFIX})
 set(CPACK_SET_DESTDIR ON)  # the config and the unit install to absolute paths
 set(CPACK_STRIP_FILES ON)
 set(CPACK_DEB_COMPONENT_INSTALL ON)
-set(CPACK_COMPONENTS_ALL controller tools)
+set(CPACK_COMPONENTS_ALL ${mrd_components})
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_RELEASE ${mrd_deb_release})
 if(mrd_deb_arch)
@@ -71,19 +76,21 @@ set(CPACK_DEBIAN_CONTROLLER_PACKAGE_CONTROL_EXTRA
     ${CMAKE_CURRENT_BINARY_DIR}/packaging/conffiles)
 set(CPACK_COMPONENT_CONTROLLER_DESCRIPTION
     "real-time controller for a magnetorheological damper
-mrd-controller runs the fixed-rate control loop of an MR damper: a Jiles-Atherton
-hysteresis and Bingham force observer, hysteresis compensation of the coil current
-and a safety supervisor, over Modbus, SocketCAN and GPIO. The package installs
-the default config /etc/mrd/mrd.toml, the systemd unit mrd-controller.service and
-the unprivileged user mrd the service runs as.")
+mrd-controller runs the fixed-rate control loop of an MR damper: a
+Jiles-Atherton hysteresis and Bingham force observer, hysteresis
+compensation of the coil current and a safety supervisor, over Modbus,
+SocketCAN and GPIO. The package installs the default config
+/etc/mrd/mrd.toml, the systemd unit mrd-controller.service and the
+unprivileged user mrd the service runs as.")
 
 set(CPACK_DEBIAN_TOOLS_PACKAGE_NAME mrd-tools)
 set(CPACK_DEBIAN_TOOLS_PACKAGE_RECOMMENDS gnuplot-nox)  # the tools' --plot options
 set(CPACK_COMPONENT_TOOLS_DESCRIPTION
     "host tools for the mrd magnetorheological damper controller
-Programs that check and tune the controller away from the box: mrd-table4-run,
-mrd-ja-scan, mrd-identify (Jiles-Atherton parameters from measured B-H loops,
-where built), mrd-replay (recorded runs through the controller's observer and
-control law) and mrd-simulate-run (runs from the simulated damper).")
+Programs that check and tune the controller away from the box:
+mrd-table4-run, mrd-ja-scan, mrd-identify (Jiles-Atherton parameters
+from measured B-H loops, where built), mrd-replay (recorded runs through
+the controller's observer and control law) and mrd-simulate-run (runs
+from the simulated damper).")
 
 include(CPack)

@@ -8,7 +8,9 @@ packages=(
   libpagmo-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox
+  lintian
 )
+# The arm64 cross-build's packages: scripts/setup-cross-arm64.sh (scripts/test.sh runs it).
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
