@@ -39,11 +39,9 @@ if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(aarch64|arm64)$")
 elseif(CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64)$")
   set(mrd_deb_arch amd64)
 endif()
-# dpkg-shlibdeps looks for a cross build's libraries in the host architecture's multiarch
-# directories (and uses its objdump) only when told the host architecture.
-configure_file(${PROJECT_SOURCE_DIR}/cmake/cpack_project_config.cmake.in
-               ${CMAKE_CURRENT_BINARY_DIR}/packaging/cpack_project_config.cmake @ONLY)
-set(CPACK_PROJECT_CONFIG_FILE ${CMAKE_CURRENT_BINARY_DIR}/packaging/cpack_project_config.cmake)
+# dpkg-shlibdeps reads each binary's architecture from the ELF header and looks in that
+# architecture's multiarch directories, so the arm64 packages need the :arm64 libraries installed
+# (scripts/setup-cross-arm64.sh) and nothing else.
 
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME mrd)

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Sets up the arm64 cross-build on a Debian 12 (amd64) machine, from nothing. Run as root.
 # - the cross compiler (crossbuild-essential-arm64) and qemu-aarch64-static, which runs the arm64
-#   tests with the cross sysroot (-L /usr/aarch64-linux-gnu; no binfmt registration needed);
+#   tests on the arm64 libc of multiarch (no -L, no binfmt registration needed);
 # - the target's libraries from Debian multiarch (:arm64 -dev packages beside the host's).
 # Header-only libraries without an architecture (Eigen, CLI11) come from install-deps.sh. toml++
 # ships a library and a .pc file per architecture, so it needs its :arm64 package too.
