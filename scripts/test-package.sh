@@ -39,8 +39,8 @@ user_existed=$(getent passwd mrd >/dev/null && echo yes || echo no)
 cleanup() {
   if ((${#installed[@]})); then dpkg --purge "${installed[@]}" >/dev/null || true; fi
   # The package keeps its service user on purge (postrm); the test removes the one it made.
-  if [[ $user_existed == no ]] && getent passwd mrd >/dev/null; then deluser --system --quiet mrd || true; fi
-  if [[ $user_existed == no ]] && getent group mrd >/dev/null; then delgroup --system --quiet mrd || true; fi
+  if [[ $user_existed == no ]] && getent passwd mrd >/dev/null; then deluser --system --quiet mrd 2>/dev/null || true; fi
+  if [[ $user_existed == no ]] && getent group mrd >/dev/null; then delgroup --system --quiet mrd 2>/dev/null || true; fi
   rm -rf "$work"
 }
 trap cleanup EXIT
