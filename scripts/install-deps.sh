@@ -12,7 +12,9 @@ packages=(
   # GPIO tools copied into the VM.
   qemu-system-x86 linux-headers-amd64 can-utils gpiod
   clang-14 libclang-rt-14-dev  # libFuzzer targets (the fuzz preset, scripts/fuzz.sh)
+  lintian
 )
+# The arm64 cross-build's packages: scripts/setup-cross-arm64.sh (scripts/test.sh runs it).
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

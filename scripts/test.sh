@@ -19,3 +19,11 @@ cmake --workflow --preset asan
 
 stage "fuzz: every libFuzzer target for ${MRD_FUZZ_SECONDS:-20} s (clang)"
 FUZZ_JOBS=${FUZZ_JOBS:-2} scripts/fuzz.sh "${MRD_FUZZ_SECONDS:-20}"
+
+stage "arm64: cross-build the controller and the model, firmware and hal tests; run them under qemu"
+bash scripts/test-arm64.sh --quick
+
+stage "package: the amd64 .deb packages from the release tree, lint, install, upgrade, purge"
+cmake --workflow --preset deb
+bash scripts/test-package.sh
+cmake --preset release >/dev/null  # the release tree back to its own prefix

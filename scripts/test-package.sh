@@ -1,0 +1,98 @@
+#!/usr/bin/env bash
+# Checks the Debian packages of this machine's architecture (cmake --workflow --preset deb):
+# lintian, the control data, then (as root) a real install on this machine: the service user, the
+# installed mrd-controller checking the installed /etc/mrd/mrd.toml, the tools, an upgrade that
+# keeps a local edit of the conffile, and a purge. Whatever it installed is purged on exit.
+# usage: scripts/test-package.sh [DIR]   (DIR holds the .deb files; default build/release/packages)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+dir=${1:-build/release/packages}
+arch=$(dpkg --print-architecture)
+controller_deb=$(echo "$dir"/mrd-controller_*_"$arch".deb)
+tools_deb=$(echo "$dir"/mrd-tools_*_"$arch".deb)
+config=/etc/mrd/mrd.toml
+passed=0
+failed=0
+
+check() {  # check NAME COMMAND...: runs the command, counts and reports its verdict
+  local name=$1
+  shift
+  if "$@"; then
+    passed=$((passed + 1))
+    echo "ok:   $name"
+  else
+    failed=$((failed + 1))
+    echo "FAIL: $name"
+  fi
+}
+finish() {
+  echo "package: $passed passed, $failed failed"
+  ((failed == 0))
+}
+
+for deb in "$controller_deb" "$tools_deb"; do
+  [[ -f $deb ]] || { echo "test-package: no $deb (build it: cmake --workflow --preset deb)" >&2; exit 1; }
+done
+work=$(mktemp -d)
+installed=()
+user_existed=$(getent passwd mrd >/dev/null && echo yes || echo no)
+cleanup() {
+  if ((${#installed[@]})); then dpkg --purge "${installed[@]}" >/dev/null || true; fi
+  # The package keeps its service user on purge (postrm); the test removes the one it made.
+  if [[ $user_existed == no ]] && getent passwd mrd >/dev/null; then deluser --system --quiet mrd 2>/dev/null || true; fi
+  if [[ $user_existed == no ]] && getent group mrd >/dev/null; then delgroup --system --quiet mrd 2>/dev/null || true; fi
+  rm -rf "$work"
+}
+trap cleanup EXIT
+
+# Lint: an error or a warning fails, but for the accepted tags (reasons in docs/DEPLOY.md).
+check "lintian: no errors or warnings beyond packaging/deb/lintian-accepted" lintian --fail-on error,warning --suppress-tags-from-file packaging/deb/lintian-accepted \
+  "$controller_deb" "$tools_deb"
+
+dpkg-deb -e "$controller_deb" "$work/control"
+check "conffiles lists $config" grep -qx "$config" "$work/control/conffiles"
+check "Depends computed by dpkg-shlibdeps (libmodbus)" \
+  bash -c "dpkg-deb -f '$controller_deb' Depends | grep -q 'libmodbus5'"
+check "unit in /lib/systemd/system" bash -c "dpkg-deb -c '$controller_deb' | grep -q ' ./lib/systemd/system/mrd-controller.service$'"
+
+if [[ $(id -u) -ne 0 ]]; then
+  echo "test-package: the install checks need root; only the package files were checked"
+  finish
+  exit
+fi
+if dpkg-query -W -f='${Status}' mrd-controller mrd-tools 2>/dev/null | grep -q installed; then
+  echo "test-package: mrd-controller or mrd-tools is installed here already; not touching it" >&2
+  exit 1
+fi
+
+installed=(mrd-controller mrd-tools)
+check "dpkg -i both packages" dpkg -i "$controller_deb" "$tools_deb"
+check "service user mrd, no login" bash -c "getent passwd mrd | grep -q ':/nonexistent:/usr/sbin/nologin$'"
+check "installed mrd-controller accepts the installed config" /usr/bin/mrd-controller --check-config "$config"
+check "mrd-controller runs the simulated rig for 0.2 s" /usr/bin/mrd-controller --duration 0.2
+check "mrd-replay starts" /usr/bin/mrd-replay --help
+check "unit names the installed paths" \
+  grep -qx "ExecStart=/usr/bin/mrd-controller --config $config" /lib/systemd/system/mrd-controller.service
+
+# A local edit survives a reinstall and an upgrade whose default config did not change, silently.
+echo "# local edit (test-package.sh)" >>"$config"
+check "reinstall keeps the local edit" bash -c "dpkg -i '$controller_deb' >/dev/null && grep -q 'local edit' $config"
+dpkg-deb -R "$controller_deb" "$work/next"
+version=$(dpkg-deb -f "$controller_deb" Version)
+sed -i "s/^Version: .*/Version: $version+next/" "$work/next/DEBIAN/control"
+dpkg-deb -b "$work/next" "$work/next.deb" >/dev/null
+check "upgrade keeps the local edit" bash -c "dpkg -i '$work/next.deb' >/dev/null && grep -q 'local edit' $config"
+# An upgrade whose default config changed too: dpkg would ask; --force-confold keeps ours and
+# leaves the package's version beside it.
+echo "# changed upstream" >>"$work/next/etc/mrd/mrd.toml"
+sed -i "s/^Version: .*/Version: $version+next2/" "$work/next/DEBIAN/control"
+dpkg-deb -b "$work/next" "$work/next2.deb" >/dev/null
+check "upgrade with a changed default keeps the edit (confold)" \
+  bash -c "dpkg -i --force-confold '$work/next2.deb' </dev/null >/dev/null && grep -q 'local edit' $config && test -f $config.dpkg-dist"
+check "still a valid config" /usr/bin/mrd-controller --check-config "$config"
+
+check "purge" dpkg --purge mrd-controller mrd-tools
+installed=()
+check "purge removed the binary and /etc/mrd" bash -c "! test -e /usr/bin/mrd-controller && ! test -e /etc/mrd"
+check "purge kept the service user" getent passwd mrd
+finish
