@@ -2,6 +2,7 @@
 // runs the simulated rig on the mock HAL), runs the fixed-rate loop on a real-time thread, and
 // prints loop statistics and supervisor transitions at exit and on SIGUSR1.
 #include <CLI/CLI.hpp>
+#include <filesystem>
 
 #include <csignal>
 #include <cstdio>
@@ -52,7 +53,7 @@ int main(int argc, char** argv) {
   app.add_option("--check-config", check_path, "validate FILE, print every problem, exit 0 or 1");
   app.add_option("--duration", options.duration_s, "run this many seconds (0: until SIGTERM/SIGINT)")
       ->check(CLI::Range(0.0, 1e7))->capture_default_str();
-  app.add_option("--telemetry", telemetry_path, "write telemetry CSV here (overrides telemetry.path)");
+  app.add_option("--telemetry", telemetry_path, "write telemetry CSV here (overrides telemetry.path, and telemetry.directory with its directory)");
   app.add_option("--rate", rate, "control rate [Hz] (overrides loop.rate)")->check(CLI::Range(10.0, 20000.0));
   app.add_flag("--bench", options.bench,
                "loop benchmark: mock HAL and simulated rig whatever the config says, no telemetry, "
@@ -78,7 +79,13 @@ int main(int argc, char** argv) {
 
   auto config = loaded.config;
   if (rate > 0.0) config.rate = rate;
-  if (!telemetry_path.empty()) config.telemetry.path = telemetry_path;
+  if (!telemetry_path.empty()) {
+    // The operator named the file on the command line, and so its directory: the config's
+    // telemetry.directory confines the paths a config file may give, not this one.
+    const std::filesystem::path file(telemetry_path);
+    config.telemetry.directory = file.has_parent_path() ? file.parent_path().string() : ".";
+    config.telemetry.path = file.filename().string();
+  }
   if (options.bench) {
     config.backends = {};  // all mock
     config.telemetry.path.clear();

@@ -35,7 +35,7 @@ std::vector<TelemetryRow> parse_telemetry_csv(std::string_view text, const std::
     for (const auto c : split_csv_line(header)) columns.push_back(c);
     return columns;
   }();
-  LineReader lines(text);
+  LineReader lines(text, name);
   const auto first = lines.next();
   const auto fail = [&](std::string_view column, const std::string& message) {
     return InputError(input_error_message(name, lines.line_number(), column, message));
