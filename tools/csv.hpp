@@ -43,6 +43,9 @@ class LineReader {
 // costs 1 MiB of memory, not 2 GB.
 std::string read_text_file(const std::string& path);
 
+// Writes `text` to `path`, replacing the file; false when it cannot.
+bool write_text_file(const std::string& path, const std::string& text);
+
 // Splits one CSV line on `separator` (',' or, when whitespace_separated, runs of blanks),
 // trimming blanks and a trailing '\r'. A trailing separator yields no extra empty field,
 // since some instruments end every line with one.

@@ -4,11 +4,11 @@
 // See docs/CLOSING-THE-LOOP.md, "mrd-residual".
 #include <CLI/CLI.hpp>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 
 #include "firmware/config_loader.hpp"
 #include "tools/csv.hpp"
+#include "tools/replay/run_options_cli.hpp"
 #include "tools/replay/run_reader.hpp"
 #include "tools/residual/residual_report.hpp"
 #include "tools/residual/residual_search.hpp"
@@ -17,12 +17,6 @@
 namespace {
 
 using namespace mrd::tools;
-
-bool write_file(const std::string& path, const std::string& text) {
-  std::ofstream out(path);
-  out << text;
-  return static_cast<bool>(out);
-}
 
 std::vector<std::string> split_names(const std::string& text) {
   std::vector<std::string> names;
@@ -37,25 +31,14 @@ std::vector<std::string> split_names(const std::string& text) {
 int main(int argc, char** argv) {
   CLI::App app{"Fit the damper model to a recorded run, trace the residual to missing effects, add them"};
   std::vector<std::string> run_paths;
-  std::string columns_text, config_path, json_path, plot_dir, config_out, candidates_text;
-  double current = 0.0, sample_rate = 0.0, amps_per_volt = 0.0;
-  RunReadOptions read;
+  std::string json_path, plot_dir, config_out, candidates_text;
   FitSeriesOptions series_options;
   ResidualOptions options;
   app.add_option("runs", run_paths,
                  "one run, or several analysed together (one model for all, e.g. tests at several currents)")
       ->required();
-  app.add_option("--columns", columns_text, "map a foreign file's columns (as mrd-replay); units: " + known_unit_names());
-  auto* current_option = app.add_option("--current", current, "constant coil current of the run [A]");
-  auto* from_name = app.add_flag("--current-from-name", read.current_from_name,
-                                 "read each run's constant current from its file name (25mm0x25Hz0x5A.txt: 0.5 A)");
-  current_option->excludes(from_name);
-  auto* rate_option = app.add_option("--sample-rate", sample_rate, "[Hz], for files without a time column");
-  auto* gain_option = app.add_option("--amps-per-volt", amps_per_volt,
-                                     "current driver gain [A/V], for runs that logged its command voltage");
-  app.add_option("--config", config_path,
-                 "the controller's TOML config: the damper to start from and the effects it declares "
-                 "(default: the embedded one)");
+  RunOptionsCli run_options;
+  run_options.add_to(app);
   app.add_option("--json", json_path, "write the result as JSON");
   app.add_option("--write-config", config_out, "write the updated config (the fitted damper, accepted effects on)");
   app.add_option("--plot", plot_dir, "write force-displacement, residual-time and residual-phase PNGs here");
@@ -76,13 +59,9 @@ int main(int argc, char** argv) {
   app.add_option("--seed", options.seed, "seed of the swarms")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
-  const auto config = config_path.empty() ? mrd::firmware::load_default_config()
-                                          : mrd::firmware::load_config_file(config_path);
-  if (!config.ok()) {
-    std::fprintf(stderr, "%s", config.report().c_str());
-    return 1;
-  }
-  options.start = config.config.law.damper;
+  const auto config = run_options.load_config();
+  if (!config) return 1;
+  options.start = config->config.law.damper;
   options.candidates = split_names(candidates_text);
   for (const auto& name : options.candidates) {
     if (std::find(mrd::model::kEffectNames.begin(), mrd::model::kEffectNames.end(), name) ==
@@ -91,12 +70,9 @@ int main(int argc, char** argv) {
       return 1;
     }
   }
-  read.can = config.config.can;
   try {
-    if (!columns_text.empty()) read.columns = parse_column_mapping(columns_text);
-    if (current_option->count() > 0) read.current = current;
-    if (rate_option->count() > 0) read.sample_rate = sample_rate;
-    if (gain_option->count() > 0) series_options.amps_per_volt = amps_per_volt;
+    const RunReadOptions read = run_options.read_options(*config);
+    series_options.amps_per_volt = run_options.amps_per_volt();
     std::vector<RecordedRun> runs;
     for (const auto& path : run_paths) runs.push_back(read_recorded_run(path, read));
     const FitSeries series = make_fit_series(runs, series_options);
@@ -112,21 +88,15 @@ int main(int argc, char** argv) {
                   s.rms, s.max, s.nrmse, result.before.all / ours.measured_range, ours.nrmse);
     }
     int status = 0;
-    if (!json_path.empty() && !write_file(json_path, residual_json(result))) {
+    if (!json_path.empty() && !write_text_file(json_path, residual_json(result))) {
       std::fprintf(stderr, "mrd-residual: cannot write %s\n", json_path.c_str());
       status = 1;
     }
     if (!config_out.empty()) {
       std::string text;
-      if (config_path.empty()) {
-        text = std::string(mrd::firmware::default_config_text());
-      } else {
-        std::ifstream in(config_path);
-        std::ostringstream all;
-        all << in.rdbuf();
-        text = all.str();
-      }
-      if (!write_file(config_out, updated_config(text, result))) {
+      text = run_options.config_path().empty() ? std::string(mrd::firmware::default_config_text())
+                                               : read_text_file(run_options.config_path());
+      if (!write_text_file(config_out, updated_config(text, result))) {
         std::fprintf(stderr, "mrd-residual: cannot write %s\n", config_out.c_str());
         status = 1;
       }

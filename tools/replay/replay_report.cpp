@@ -9,19 +9,11 @@
 
 #include "tools/gnuplot.hpp"
 #include "tools/json.hpp"
+#include "tools/text_format.hpp"
 
 namespace mrd::tools {
 
 namespace {
-
-// printf into a std::string, for the fixed-format lines of the reports.
-template <typename... Args>
-std::string format(const char* pattern, Args... args) {
-  const int n = std::snprintf(nullptr, 0, pattern, args...);
-  std::string out(static_cast<std::size_t>(std::max(n, 0)), '\0');
-  std::snprintf(out.data(), out.size() + 1, pattern, args...);
-  return out;
-}
 
 struct Range {
   double min = 0.0, max = 0.0, mean = 0.0;

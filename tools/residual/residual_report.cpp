@@ -13,18 +13,11 @@
 #include "tools/gnuplot.hpp"
 #include "tools/json.hpp"
 #include "tools/residual/candidate_effects.hpp"
+#include "tools/text_format.hpp"
 
 namespace mrd::tools {
 
 namespace {
-
-template <typename... Args>
-std::string format(const char* pattern, Args... args) {
-  const int n = std::snprintf(nullptr, 0, pattern, args...);
-  std::string out(static_cast<std::size_t>(std::max(n, 0)), '\0');
-  std::snprintf(out.data(), out.size() + 1, pattern, args...);
-  return out;
-}
 
 // Each candidate once: the trial of the round it was accepted in, else its last.
 std::vector<const CandidateTrial*> final_trials(const ResidualResult& r) {

@@ -6,17 +6,11 @@
 #include <cstdio>
 
 #include "tools/residual/candidate_effects.hpp"
+#include "tools/text_format.hpp"
 
 namespace mrd::tools {
 
 namespace {
-
-template <typename... Args>
-std::string format(const char* pattern, Args... args) {
-  char buffer[512];
-  std::snprintf(buffer, sizeof buffer, pattern, args...);
-  return buffer;
-}
 
 std::vector<double> residual_of(const FitSeries& s, const std::vector<double>& predicted) {
   std::vector<double> r(s.size());

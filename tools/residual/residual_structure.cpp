@@ -5,17 +5,11 @@
 #include <cstdio>
 
 #include "tools/spectrum.hpp"
+#include "tools/text_format.hpp"
 
 namespace mrd::tools {
 
 namespace {
-
-template <typename... Args>
-std::string format(const char* pattern, Args... args) {
-  char buffer[512];
-  std::snprintf(buffer, sizeof buffer, pattern, args...);
-  return buffer;
-}
 
 double median(std::vector<double> v) {
   if (v.empty()) return 0.0;

@@ -1,0 +1,49 @@
+#include "tools/replay/run_options_cli.hpp"
+
+#include <cstdio>
+
+#include "tools/replay/run_columns.hpp"
+
+namespace mrd::tools {
+
+void RunOptionsCli::add_to(CLI::App& app) {
+  app.add_option("--columns", columns_,
+                 "map a foreign file's columns: t=time_s,D=displacement_cm,... by header name, or "
+                 "1=time_s,2=displacement_mm,... by position (no header); units: " +
+                     known_unit_names());
+  current_option_ = app.add_option("--current", current_, "constant coil current of the run [A]");
+  auto* from_name = app.add_flag("--current-from-name", current_from_name_,
+                                 "read the constant current from the file name (25mm0x25Hz0x5A.txt: 0.5 A)");
+  current_option_->excludes(from_name);
+  rate_option_ = app.add_option("--sample-rate", sample_rate_, "[Hz], for files without a time column");
+  app.add_option("--config", config_path_, "the controller's TOML config (default: the embedded one)");
+  gain_option_ = app.add_option("--amps-per-volt", amps_per_volt_,
+                                "current driver gain [A/V], for runs that logged its command voltage");
+}
+
+std::optional<firmware::LoadedConfig> RunOptionsCli::load_config() const {
+  auto config = config_path_.empty() ? firmware::load_default_config() : firmware::load_config_file(config_path_);
+  if (!config.ok()) {
+    std::fprintf(stderr, "%s", config.report().c_str());
+    return std::nullopt;
+  }
+  for (const auto& warning : config.warnings) std::fprintf(stderr, "%s\n", warning.to_string().c_str());
+  return config;
+}
+
+RunReadOptions RunOptionsCli::read_options(const firmware::LoadedConfig& config) const {
+  RunReadOptions read;
+  read.can = config.config.can;
+  read.current_from_name = current_from_name_;
+  if (!columns_.empty()) read.columns = parse_column_mapping(columns_);
+  if (current_option_ != nullptr && current_option_->count() > 0) read.current = current_;
+  if (rate_option_ != nullptr && rate_option_->count() > 0) read.sample_rate = sample_rate_;
+  return read;
+}
+
+std::optional<double> RunOptionsCli::amps_per_volt() const {
+  if (gain_option_ != nullptr && gain_option_->count() > 0) return amps_per_volt_;
+  return std::nullopt;
+}
+
+}  // namespace mrd::tools
