@@ -4,18 +4,11 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "tools/residual/residual_structure.hpp"
+
 namespace mrd::tools {
 
 namespace {
-
-double percentile_abs(const std::vector<double>& v, double q) {
-  if (v.empty()) return 0.0;
-  std::vector<double> a(v.size());
-  std::transform(v.begin(), v.end(), a.begin(), [](double x) { return std::fabs(x); });
-  const auto k = static_cast<std::size_t>(q * static_cast<double>(a.size() - 1));
-  std::nth_element(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(k), a.end());
-  return a[k];
-}
 
 Bounds make_bounds(std::initializer_list<std::pair<double, double>> ranges) {
   Bounds b{Point(static_cast<Eigen::Index>(ranges.size())), Point(static_cast<Eigen::Index>(ranges.size()))};
@@ -246,6 +239,20 @@ std::vector<Point> stroke_threshold_trials(const FitSeries& s, const SeriesScale
     if (std::none_of(trials.begin(), trials.end(), [&](const Point& q) { return q[0] == p[0]; })) trials.push_back(p);
   }
   return trials;
+}
+
+FittedModel scan_stroke_threshold(const ParameterSpace& space, const FitSeries& series, const SeriesScales& scales,
+                                  const Point& theta, std::int64_t& evaluations) {
+  const auto coarse = stroke_threshold_trials(series, scales, theta);
+  const FittedModel best = best_of(space, series, coarse);
+  double lower = 0.0, upper = 1.0;
+  for (const Point& p : coarse) {
+    if (p[0] < best.theta[0]) lower = std::max(lower, p[0]);
+    if (p[0] > best.theta[0]) upper = std::min(upper, p[0]);
+  }
+  FittedModel fine = best_of(space, series, stroke_threshold_trials(series, scales, best.theta, lower, upper, 32));
+  evaluations += best.evaluations + fine.evaluations;
+  return fine;
 }
 
 std::optional<std::string> implausible(const std::string& name, const FittedModel& fit,

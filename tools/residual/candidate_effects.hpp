@@ -50,6 +50,12 @@ Point effect_coordinates(const std::string& name, const model::DamperModel& mode
 std::vector<Point> stroke_threshold_trials(const FitSeries& series, const SeriesScales& scales, const Point& fit,
                                            double lower = 0.3, double upper = 1.0, std::size_t count = 24);
 
+// The stroke_end_air fit from `theta` with the threshold chosen among the trials above: coarse
+// by rank over every reversal, then every reversal between the best coarse one's neighbours.
+// Adds the observer passes it spent to `evaluations`.
+FittedModel scan_stroke_threshold(const ParameterSpace& space, const FitSeries& series, const SeriesScales& scales,
+                                  const Point& theta, std::int64_t& evaluations);
+
 // Why a fitted effect is not a physical, non-trivial instance of itself (negative spring
 // stiffness, a lag shorter than a sample, ...); nullopt when it is one.
 std::optional<std::string> implausible(const std::string& name, const FittedModel& fit,

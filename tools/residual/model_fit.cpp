@@ -94,8 +94,11 @@ double linear_fit_rms(const FitSeries& series, const std::vector<double>& predic
   std::size_t count = 0;
   for (std::size_t i = 0; i < series.size(); ++i) {
     if (series.validation[i] != 0) continue;
-    double f = t.force_scale * predicted[i] + t.extra_viscous * series.velocity[i];
-    if (t.with_spring) f += t.preload + t.stiffness * series.displacement[i];
+    double column[4];
+    const int n = fill_columns(series, predicted, t.with_spring, i, column);
+    const double coefficients[4] = {t.force_scale, t.extra_viscous, t.preload, t.stiffness};
+    double f = 0.0;
+    for (int c = 0; c < n; ++c) f += coefficients[c] * column[c];
     const double r = series.force[i] - f;
     sum += r * r;
     ++count;

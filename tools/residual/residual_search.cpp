@@ -37,30 +37,49 @@ std::vector<std::string> describe_base(const ParameterSpace& space, const Fitted
   return lines;
 }
 
-// Nelder-Mead over the base parameters and those of every accepted effect together, three
-// times (each from the last one's model, so the linear terms come close to identity).
-model::DamperModel polish(const model::DamperModel& model, const std::vector<std::string>& accepted,
-                          const model::DamperModel& start, const SeriesScales& scales, const FitSeries& series,
-                          std::int64_t& evaluations) {
-  model::DamperModel out = model;
-  std::int64_t count = 0;
-  for (int pass = 0; pass < 3; ++pass) {
-    ParameterSpace joint = base_space(out, start, scales);
-    Point coordinates = base_coordinates(out, scales);
-    for (const auto& name : accepted) {
-      joint = combine(joint, effect_space(name, out, scales));
-      const Point more = effect_coordinates(name, out, scales);
-      Point both(coordinates.size() + more.size());
-      both << coordinates, more;
-      coordinates = both;
-    }
+struct RefinePass {
+  int evaluations_per_coordinate;
+  double step;  // Nelder-Mead's first simplex, as a fraction of each coordinate's range
+};
+
+// Nelder-Mead over the base coordinates and those of `effects` together (an effect changes
+// what the base absorbed, as a coil lag does the field gain), once per pass, each pass from the
+// last one's model, so that its linear terms come close to identity and what the search saw is
+// what the observer runs (the linear terms scale the viscous force past a thermal or stroke-end
+// factor only approximately). The first pass starts on `origin` at `effect_start`; its theta
+// holds the effects' coordinates.
+FittedModel refine_jointly(const model::DamperModel& origin, const std::vector<std::string>& effects,
+                           const Point& effect_start, std::initializer_list<RefinePass> passes,
+                           const model::DamperModel& start, const SeriesScales& scales, const FitSeries& series,
+                           std::int64_t& evaluations) {
+  FittedModel fit;
+  fit.model = origin;
+  fit.theta = effect_start;
+  for (const RefinePass& pass : passes) {
+    ParameterSpace joint = base_space(fit.model, start, scales);
+    for (const auto& name : effects) joint = combine(joint, effect_space(name, fit.model, scales));
+    const Point base = base_coordinates(fit.model, scales);
+    Point from(joint.bounds.dimension());
+    from << base, fit.theta;
     const auto dimension = static_cast<int>(joint.bounds.dimension());
-    const FittedModel fit = refine_space(joint, series, coordinates, 10 + 20 * dimension, pass == 0 ? 0.02 : 0.005);
-    out = fit.model;
-    count += fit.evaluations;
+    fit = refine_space(joint, series, from, 10 + pass.evaluations_per_coordinate * dimension, pass.step);
+    evaluations += fit.evaluations;
+    fit.theta = fit.theta.tail(fit.theta.size() - base.size()).eval();
   }
-  evaluations += count;
-  return out;
+  return fit;
+}
+
+// The coordinates of every effect of `names` in `model`, in that order.
+Point effect_coordinates(const std::vector<std::string>& names, const model::DamperModel& model,
+                         const SeriesScales& scales) {
+  Point all(0);
+  for (const auto& name : names) {
+    const Point more = effect_coordinates(name, model, scales);
+    Point both(all.size() + more.size());
+    both << all, more;
+    all = both;
+  }
+  return all;
 }
 
 }  // namespace
@@ -113,33 +132,9 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
           fit_space(effect, fit_series, nullptr, round_seed + k, options.evaluations_per_parameter);
       std::int64_t spent = alone.evaluations;
       FittedModel fit = alone;
-      if (name == "stroke_end_air") {
-        // Coarse by rank over every reversal, then every reversal between the best's neighbours.
-        const auto coarse = stroke_threshold_trials(fit_series, scales, alone.theta);
-        fit = best_of(effect, fit_series, coarse);
-        spent += fit.evaluations;
-        double lower = 0.0, upper = 1.0;
-        for (const Point& p : coarse) {
-          if (p[0] < fit.theta[0]) lower = std::max(lower, p[0]);
-          if (p[0] > fit.theta[0]) upper = std::min(upper, p[0]);
-        }
-        fit = best_of(effect, fit_series, stroke_threshold_trials(fit_series, scales, fit.theta, lower, upper, 32));
-        spent += fit.evaluations;
-      }
-      // Twice: the second time from the first's model, whose linear terms are then close to
-      // identity, so what the search saw and what the observer runs agree (the linear terms
-      // scale the viscous force past a thermal or stroke-end factor only approximately).
-      for (const int evaluations_per_coordinate : {15, 8}) {
-        const model::DamperModel& origin = evaluations_per_coordinate == 15 ? current : fit.model;
-        const ParameterSpace joint =
-            combine(base_space(origin, options.start, scales), effect_space(name, origin, scales));
-        Point from(joint.bounds.dimension());
-        from << base_coordinates(origin, scales), fit.theta;
-        const auto dimension = static_cast<int>(joint.bounds.dimension());
-        fit = refine_space(joint, fit_series, from, 10 + evaluations_per_coordinate * dimension, 0.02);
-        spent += fit.evaluations;
-        fit.theta = fit.theta.tail(effect.bounds.dimension()).eval();
-      }
+      if (name == "stroke_end_air") fit = scan_stroke_threshold(effect, fit_series, scales, alone.theta, spent);
+      fit = refine_jointly(current, {name}, fit.theta, {{15, 0.02}, {8, 0.02}}, options.start, scales, fit_series,
+                           spent);
       std::vector<double> force;
       CandidateTrial& trial = trials[k];
       trial.effect = name;
@@ -176,12 +171,15 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
       // no candidate is credited with what a longer refinement of this one would have found.
       // Kept only if it validates at least as well: the polish minimises the fitting error.
       std::int64_t polish_evaluations = 0;
+      const model::DamperModel& accepted = fits[best].model;
       const model::DamperModel polished =
-          polish(fits[best].model, result.accepted, start, scales, fit_series, polish_evaluations);
+          refine_jointly(accepted, result.accepted, effect_coordinates(result.accepted, accepted, scales),
+                         {{20, 0.02}, {20, 0.005}, {20, 0.005}}, start, scales, fit_series, polish_evaluations)
+              .model;
       evaluations += polish_evaluations;
       predict_force(polished, fit_series, scratch);
       const double polished_validation = residual_rms(fit_series, scratch).validation;
-      current = polished_validation <= trials[best].validation_rms ? polished : fits[best].model;
+      current = polished_validation <= trials[best].validation_rms ? polished : accepted;
       current_validation = std::min(polished_validation, trials[best].validation_rms);
       std::erase(candidates, trials[best].effect);
     }

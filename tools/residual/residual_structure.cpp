@@ -18,15 +18,6 @@ double median(std::vector<double> v) {
   return *mid;
 }
 
-double percentile_abs(const std::vector<double>& v, double q) {
-  std::vector<double> a(v.size());
-  std::transform(v.begin(), v.end(), a.begin(), [](double x) { return std::fabs(x); });
-  if (a.empty()) return 0.0;
-  const auto k = static_cast<std::size_t>(q * static_cast<double>(a.size() - 1));
-  std::nth_element(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(k), a.end());
-  return a[k];
-}
-
 // Energy share of the masked samples over their sample share; 0 when the mask is empty.
 double concentration(const std::vector<double>& r, const std::vector<std::uint8_t>& mask) {
   double in = 0.0, all = 0.0;
@@ -61,6 +52,15 @@ double correlation(const std::vector<double>& a, const std::vector<double>& b) {
 }
 
 }  // namespace
+
+double percentile_abs(const std::vector<double>& v, double q) {
+  std::vector<double> a(v.size());
+  std::transform(v.begin(), v.end(), a.begin(), [](double x) { return std::fabs(x); });
+  if (a.empty()) return 0.0;
+  const auto k = static_cast<std::size_t>(q * static_cast<double>(a.size() - 1));
+  std::nth_element(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(k), a.end());
+  return a[k];
+}
 
 double noise_floor(const std::vector<double>& r) {
   if (r.size() < 3) return 0.0;

@@ -30,6 +30,9 @@ ResidualStructure analyse_residual(const FitSeries& series, const std::vector<do
 // threshold (docs/CLOSING-THE-LOOP.md); "white, at the noise floor" when nothing stands out.
 std::string describe(const ResidualStructure& s);
 
+// The q-quantile (0..1) of |v|; 0 for an empty sequence.
+double percentile_abs(const std::vector<double>& v, double q);
+
 // The white-noise RMS of a sequence: 1.4826 MAD of its first differences / sqrt(2). Smooth
 // model error hardly moves from one sample to the next; steps are outliers the median ignores.
 double noise_floor(const std::vector<double>& residual);
