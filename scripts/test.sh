@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-stage() { printf '\n=== %s ===\n' "$1"; }
+stage() { printf '\n=== %s (at %d s) ===\n' "$1" "$SECONDS"; }
 
 stage "release: build and every fast test"
 cmake --workflow --preset release
@@ -29,3 +29,4 @@ stage "package: the amd64 .deb packages from the release tree, lint, install, up
 cmake --workflow --preset deb
 bash scripts/test-package.sh
 cmake --preset release >/dev/null  # the release tree back to its own prefix
+printf '\n=== every stage passed in %d s ===\n' "$SECONDS"
