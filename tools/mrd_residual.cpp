@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
   app.add_option("--velocity-cutoff", series_options.velocity_cutoff,
                  "[Hz] zero-phase velocity filter, for runs without a velocity column (0: from the motion's spectrum)")
       ->capture_default_str();
-  app.add_option("--max-fit-samples", options.max_fit_samples, "fits run on the run averaged down to this")
+  app.add_option("--max-fit-samples", options.max_fit_samples, "fits run on every k-th sample of the runs, at most this many")
       ->capture_default_str();
   app.add_option("--threads", options.threads, "worker threads (0: every core)")->capture_default_str();
   app.add_option("--seed", options.seed, "seed of the swarms")->capture_default_str();

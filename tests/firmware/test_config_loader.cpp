@@ -10,6 +10,8 @@
 #include <sstream>
 #include <string>
 
+#include "tests/firmware/config_errors.hpp"
+
 namespace {
 
 using mrd::firmware::DeviceBackend;
@@ -26,13 +28,7 @@ std::string read(const std::string& path) {
 
 std::string lines_of(const LoadedConfig& c) { return c.report(); }
 
-// True when one error line is exactly `line`.
-bool has_error(const LoadedConfig& c, const std::string& line) {
-  for (const auto& e : c.errors) {
-    if (e.to_string() == line) return true;
-  }
-  return false;
-}
+using mrd::test::has_error;
 
 bool has_error_containing(const LoadedConfig& c, const std::string& key, const std::string& text) {
   for (const auto& e : c.errors) {

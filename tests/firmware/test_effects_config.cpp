@@ -8,6 +8,7 @@
 #include <string>
 
 #include "firmware/config_loader.hpp"
+#include "tests/firmware/config_errors.hpp"
 #include "firmware/control_law.hpp"
 
 namespace {
@@ -15,12 +16,7 @@ namespace {
 using mrd::firmware::LoadedConfig;
 using mrd::firmware::load_config_text;
 
-bool has_error(const LoadedConfig& c, const std::string& line) {
-  for (const auto& e : c.errors) {
-    if (e.to_string() == line) return true;
-  }
-  return false;
-}
+using mrd::test::has_error;
 
 TEST(EffectsConfig, TheDefaultConfigHasEveryEffectOff) {
   const LoadedConfig c = mrd::firmware::load_default_config();

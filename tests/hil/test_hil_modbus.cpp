@@ -1,6 +1,9 @@
 // Hardware-in-the-loop on the host: mrd-controller and mrd-plant as two processes over Modbus
 // TCP on 127.0.0.1, the Table 4 sine at 0.5 Hz, with and without the server misbehaving.
 // Reactions and their timing in control periods are the supervisor's (docs/FIRMWARE.md).
+// The loop runs at 50 Hz: on a shared 2-core virtual machine a sleeping thread wakes up to
+// 7 ms late at the 99th percentile (even SCHED_FIFO, even idle), which at 1 kHz or 200 Hz
+// breaks the counts asserted here (docs/HIL.md).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -19,12 +22,24 @@ using mrd::firmware::SupervisorState;
 using mrd::firmware::Trigger;
 using namespace mrd::test;
 
-// The shipped HIL config, with the overrun trip off: these tests are about the bus, and a
-// shared CI machine overruns now and then.
-std::string controller_toml() {
-  return "[backends]\nlvdt = \"modbus\"\ndriver = \"modbus\"\nlines = \"mock\"\n"
-         "[modbus]\npoll_period = 0.0005\n[safety]\noverrun_limit = 1000000\n";
+constexpr double kRate = 50.0;  // [Hz]
+constexpr double kPeriod = 1.0 / kRate;
+constexpr double kPoll = 0.5 * kPeriod;  // [s], the Modbus I/O thread's
+constexpr double kPeakSpeed = 2.0 * 3.141592653589793 * 0.5 * 0.040;  // [m/s], of the 0.5 Hz sine
+
+// The loop, Modbus and safety settings of every run here, for `transport`.
+std::string loop_toml(const std::string& transport) {
+  return "[loop]\nrate = " + std::to_string(kRate) +
+         "\n[backends]\nlvdt = \"modbus\"\ndriver = \"modbus\"\nlines = \"mock\"\n"
+         "[modbus]\ntransport = \"" + transport + "\"\npoll_period = " + std::to_string(kPoll) +
+         "\nresponse_timeout = 0.1\n[safety]\noverrun_limit = 1000000\nrecovery_periods = 50\n";
 }
+
+// The shipped HIL config at kRate, polling twice a period, with the overrun trip off, 50 good
+// periods to leave INIT or SAFE and a 0.1 s response timeout: these tests are about the bus's
+// faults, and on a shared CI machine a process can wait 20 ms for a core now and then (an
+// overrun breaks a run of good periods; a late answer would fail a write).
+std::string controller_toml() { return loop_toml("tcp"); }
 
 const mrd::firmware::SupervisorConfig& safety() {
   static const auto config = mrd::firmware::load_config_text(controller_toml(), "hil").config.safety;
@@ -39,13 +54,14 @@ HilResult run(const std::string& name, const std::string& faults, double duratio
 
 TEST(HilModbus, Table4SineRunsWithTheScheduleFollowedAndNoRecordLost) {
   const HilResult r = run("nominal", "");
-  expect_clean_run(r, 4.0);
+  expect_clean_run(r, 4.0, kRate);
   const std::size_t run_at = expect_first_run(r, safety());
 
   // No SAFE but the final shutdown; the current command follows Table 4 in control, within the
   // driver's 1.5 A.
   expect_never_safe_before_shutdown(r);
-  EXPECT_GT(expect_table4_followed(r), 3000u);
+  // INIT holds recovery_periods of the 4 s.
+  EXPECT_GT(expect_table4_followed(r), static_cast<std::size_t>(2.0 * kRate));
   for (const auto& row : r.telemetry) EXPECT_LE(row.setpoint, 1.5);
   EXPECT_GT(run_at, 0u);
 
@@ -56,10 +72,24 @@ TEST(HilModbus, Table4SineRunsWithTheScheduleFollowedAndNoRecordLost) {
 
   // The observer against the plant's true force.
   const auto j = mrd::tools::join_force(r.telemetry, r.plant_log, r.offset);
-  EXPECT_GT(j.rows, 3000u);
-  EXPECT_LT(j.displacement_rms, 2e-4) << "the join is off: lag " << j.lag;
-  EXPECT_LT(j.nrmse(), 0.10) << "RMS " << j.rms_error << " N of " << j.peak_force << " N";
+  EXPECT_GT(j.rows, static_cast<std::size_t>(2.0 * kRate));
+  // A sample is up to a poll period old when the loop takes it.
+  EXPECT_LT(j.displacement_rms, 2e-4 + kPeakSpeed * kPoll / std::sqrt(3.0)) << "the join is off: lag " << j.lag;
+  // Within 4 mm of a stroke end the true force flips sign in a fraction of a millisecond
+  // (Eq. 11's sign term at the reversal), and a row that lands there, phase-locked to the sine
+  // at this rate, measures its own timing rather than the observer: those rows are left out.
+  double sum = 0.0;
+  std::size_t away = 0;
+  for (std::size_t i = 0; i < j.rows; ++i) {
+    if (std::fabs(j.displacement[i]) > 0.036) continue;
+    sum += (j.observer_force[i] - j.true_force[i]) * (j.observer_force[i] - j.true_force[i]);
+    ++away;
+  }
+  ASSERT_GT(away, static_cast<std::size_t>(kRate));
+  const double rms_away = std::sqrt(sum / static_cast<double>(away));
+  EXPECT_LT(rms_away, 0.05 * j.peak_force) << "RMS " << rms_away << " N of " << j.peak_force << " N";
   RecordProperty("force_rms_N", std::to_string(j.rms_error));
+  RecordProperty("force_rms_away_from_reversals_N", std::to_string(rms_away));
   RecordProperty("lag_ms", std::to_string(j.lag * 1e3));
 }
 
@@ -68,7 +98,7 @@ TEST(HilModbus, Table4SineRunsWithTheScheduleFollowedAndNoRecordLost) {
 // recovery_periods good periods after the answers return.
 TEST(HilModbus, ServerStallTripsSafeAfterStalePeriodsAndRecovers) {
   const HilResult r = run("stall", "[faults.stall]\nkind = \"server_stall\"\nstart = 2.0\nduration = 0.5\n", 5.0);
-  expect_clean_run(r, 5.0);
+  expect_clean_run(r, 5.0, kRate);
   expect_first_run(r, safety());
   const std::size_t safe = first_in(r, SupervisorState::kSafe, 2.0);
   ASSERT_LT(safe, r.telemetry.size()) << "never went SAFE";
@@ -78,20 +108,20 @@ TEST(HilModbus, ServerStallTripsSafeAfterStalePeriodsAndRecovers) {
   EXPECT_EQ(r.telemetry[safe - static_cast<std::size_t>(safety().stale_periods)].state, SupervisorState::kDegraded);
   // The last answer came before the stall began.
   const double last_fresh = r.fault_time(r.telemetry[safe - static_cast<std::size_t>(safety().stale_periods) - 1]);
-  EXPECT_NEAR(last_fresh, 2.0, 0.01);
+  EXPECT_NEAR(last_fresh, 2.0, 2 * kPeriod);
 
   const std::size_t back = first_in(r, SupervisorState::kRun, 2.5);
   ASSERT_LT(back, r.telemetry.size()) << "never recovered";
   EXPECT_EQ(r.telemetry[back].trigger, Trigger::kGoodPeriods);
   expect_recovery_length(r, back, safety());
-  EXPECT_GE(r.fault_time(r.telemetry[back]), 2.5 + safety().recovery_periods * 1e-3);
+  EXPECT_GE(r.fault_time(r.telemetry[back]), 2.5 + safety().recovery_periods * kPeriod);
 }
 
 // The server drops every connection and is gone for 0.3 s: the link fails, setpoint writes
 // fail and samples stop; SAFE within stale_periods + 1 periods, RUN again after the reconnect.
 TEST(HilModbus, ServerRestartTripsSafeAndTheControllerReconnects) {
   const HilResult r = run("restart", "[faults.restart]\nkind = \"server_restart\"\nstart = 2.0\nduration = 0.3\n", 5.0);
-  expect_clean_run(r, 5.0);
+  expect_clean_run(r, 5.0, kRate);
   expect_first_run(r, safety());
   const std::size_t safe = first_in(r, SupervisorState::kSafe, 2.0);
   ASSERT_LT(safe, r.telemetry.size()) << "never went SAFE";
@@ -99,7 +129,7 @@ TEST(HilModbus, ServerRestartTripsSafeAndTheControllerReconnects) {
   EXPECT_TRUE(why == Trigger::kSetpointWriteFailed || why == Trigger::kSensorStale) << to_string(why);
   EXPECT_LE(run_length_before(r.telemetry, safe, no_sample),
             static_cast<std::size_t>(safety().stale_periods + 1));
-  EXPECT_NEAR(r.fault_time(r.telemetry[safe]), 2.0, 0.02);
+  EXPECT_NEAR(r.fault_time(r.telemetry[safe]), 2.0, (safety().stale_periods + 2) * kPeriod);
   const std::size_t back = first_in(r, SupervisorState::kRun, 2.3);
   ASSERT_LT(back, r.telemetry.size()) << "never reconnected:\n" << r.controller_output;
   expect_recovery_length(r, back, safety());
@@ -107,12 +137,12 @@ TEST(HilModbus, ServerRestartTripsSafeAndTheControllerReconnects) {
   EXPECT_NE(r.controller_output.find("connects=2"), std::string::npos) << r.controller_output;
 }
 
-// Answers 1.5 ms late for 1 s: a sample every two transactions (write, read), about every
-// 3 ms, so periods go by without one and the loop is DEGRADED on and off, but never more than
-// stale_periods in a row: no SAFE.
+// Answers 1.5 periods late for 1 s: a sample every two transactions (write, read), about every
+// 3 periods, so periods go by without one and the loop is DEGRADED on and off, but never more
+// than stale_periods in a row: no SAFE.
 TEST(HilModbus, SlowResponsesDegradeWithoutTrippingSafe) {
-  const HilResult r = run("slow", "[faults.slow]\nkind = \"delay\"\nvalue = 0.0015\nstart = 2.0\nduration = 1.0\n", 4.5);
-  expect_clean_run(r, 4.5);
+  const HilResult r = run("slow", "[faults.slow]\nkind = \"delay\"\nvalue = " + std::to_string(1.5 * kPeriod) + "\nstart = 2.0\nduration = 1.0\n", 4.5);
+  expect_clean_run(r, 4.5, kRate);
   expect_first_run(r, safety());
   std::size_t degraded = 0;
   std::size_t longest_gap = 0;
@@ -124,8 +154,8 @@ TEST(HilModbus, SlowResponsesDegradeWithoutTrippingSafe) {
     if (row.state == SupervisorState::kDegraded) ++degraded;
     longest_gap = std::max(longest_gap, run_length_before(r.telemetry, i, no_sample));
   }
-  EXPECT_GT(degraded, 100u) << "the slow answers went unnoticed";
-  EXPECT_GE(longest_gap, 3u);
+  EXPECT_GT(degraded, static_cast<std::size_t>(0.4 * kRate)) << "the slow answers went unnoticed";
+  EXPECT_GE(longest_gap, 2u);  // a sample every 3 periods or so
   EXPECT_LE(longest_gap, static_cast<std::size_t>(safety().stale_periods));
   EXPECT_EQ(r.telemetry[r.telemetry.size() - 2].state, SupervisorState::kRun) << "did not settle back";
 }
@@ -133,7 +163,7 @@ TEST(HilModbus, SlowResponsesDegradeWithoutTrippingSafe) {
 // An out-of-range LVDT value trips SAFE after bad_sample_periods periods.
 TEST(HilModbus, OutOfRangeLvdtTripsSafeAfterBadSamplePeriods) {
   const HilResult r = run("range", "[faults.range]\nkind = \"lvdt_out_of_range\"\nvalue = 0.060\nstart = 2.0\nduration = 0.2\n", 4.0);
-  expect_clean_run(r, 4.0);
+  expect_clean_run(r, 4.0, kRate);
   expect_first_run(r, safety());
   const std::size_t safe = first_in(r, SupervisorState::kSafe, 2.0);
   ASSERT_LT(safe, r.telemetry.size());
@@ -143,23 +173,20 @@ TEST(HilModbus, OutOfRangeLvdtTripsSafeAfterBadSamplePeriods) {
 }
 
 // Modbus RTU: the plant's libmodbus RTU server on a pty, the controller on the symlink to its
-// other end, as on a serial line (docs/HIL.md). At 200 Hz, a rate a 115200 baud line carries
-// (a write and a read, about 3 ms on the wire).
+// other end, as on a serial line (docs/HIL.md). A 115200 baud line carries a write and a read
+// in about 3 ms, so up to about 200 Hz.
 TEST(HilModbus, Table4SineOverRtuOnAPty) {
   const auto device = std::filesystem::temp_directory_path() / "mrd_hil_rtu" / "ttyPLANT";
-  const std::string toml = "[loop]\nrate = 200.0\n[backends]\nlvdt = \"modbus\"\ndriver = \"modbus\"\n"
-                           "lines = \"mock\"\n[modbus]\ntransport = \"rtu\"\npoll_period = 0.0025\n"
-                           "[modbus.rtu]\ndevice = \"" + device.string() + "\"\n"
-                           "[safety]\noverrun_limit = 1000000\n";
+  const std::string toml = loop_toml("rtu") + "[modbus.rtu]\ndevice = \"" + device.string() + "\"\n";
   const HilResult r = mrd::test::run_hil(
       {"rtu", toml, "rate = 1000.0\n[profile]\nkind = \"sine\"\namplitude = 0.040\nfrequency = 0.5\n", 4.0, false, {}});
-  expect_clean_run(r, 4.0, 200.0);
+  expect_clean_run(r, 4.0, kRate);
   const auto rtu_safety = mrd::firmware::load_config_text(toml, "rtu").config.safety;
   expect_first_run(r, rtu_safety);
   EXPECT_NE(r.plant_output.find("modbus rtu " + device.string() + " -> /dev/pts/"), std::string::npos)
       << r.plant_output;
   expect_never_safe_before_shutdown(r);
-  EXPECT_GT(expect_table4_followed(r), 400u);
+  EXPECT_GT(expect_table4_followed(r), static_cast<std::size_t>(2.0 * kRate));
   const auto setpoints = find_number(r.plant_output, R"(setpoints=(\d+))");
   ASSERT_TRUE(setpoints) << r.plant_output;
   EXPECT_GE(*setpoints, 0.9 * static_cast<double>(r.telemetry.size())) << r.plant_output;

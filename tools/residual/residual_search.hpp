@@ -23,7 +23,7 @@ struct ResidualOptions {
   model::DamperModel start;
   std::vector<std::string> candidates;  // default: every name of model::kEffectNames
   double minimum_reduction = kMinimumValidationReduction;
-  // The fits run on the series averaged down to at most this many samples (never below
+  // The fits run on every k-th sample of the series, at most this many samples (never below
   // min_fit_rate); every reported error is evaluated on the full series.
   std::size_t max_fit_samples = 100000;
   double min_fit_rate = 200.0;  // [Hz]

@@ -12,7 +12,7 @@ namespace {
 using mrd::model::StrokeEndAir;
 using mrd::model::StrokeEndAirParams;
 
-StrokeEndAirParams on() {
+StrokeEndAirParams stroke_end_on() {
   StrokeEndAirParams p;
   p.enabled = true;
   return p;  // threshold 30 mm, depth 0.9, length 5 mm
@@ -21,17 +21,17 @@ StrokeEndAirParams on() {
 double sine(double amplitude, int k) { return amplitude * std::sin(2.0 * std::numbers::pi * 0.5 * k * 1e-3); }
 
 TEST(StrokeEndAir, CollapsesAfterReversalsBeyondTheThresholdOnly) {
-  StrokeEndAir air(on());
+  StrokeEndAir air(stroke_end_on());
   double min_factor = 1.0;
   for (int k = 0; k < 4000; ++k) min_factor = std::min(min_factor, air.step(sine(0.040, k)));
   EXPECT_LT(min_factor, 0.12);  // just after the +-40 mm reversals
 
-  StrokeEndAir inside(on());
+  StrokeEndAir inside(stroke_end_on());
   for (int k = 0; k < 4000; ++k) EXPECT_EQ(inside.step(sine(0.025, k)), 1.0) << k;
 }
 
 TEST(StrokeEndAir, RecoversWithTheTravelSinceTheReversal) {
-  const auto p = on();
+  const auto p = stroke_end_on();
   StrokeEndAir air(p);
   // Up to +40 mm, then down in 0.1 mm steps.
   for (double x = 0.0; x <= 0.040 + 1e-12; x += 1e-4) air.step(x);
@@ -50,7 +50,7 @@ TEST(StrokeEndAir, RecoversWithTheTravelSinceTheReversal) {
 }
 
 TEST(StrokeEndAir, LvdtNoiseDoesNotFakeReversalsMidStroke) {
-  StrokeEndAir air(on());
+  StrokeEndAir air(stroke_end_on());
   std::mt19937_64 rng(3);
   std::normal_distribution<double> noise(0.0, 5e-6);
   double smallest = 1.0;
@@ -60,8 +60,8 @@ TEST(StrokeEndAir, LvdtNoiseDoesNotFakeReversalsMidStroke) {
 }
 
 TEST(StrokeEndAir, ValidateNamesTheBadField) {
-  EXPECT_TRUE(validate(on()).ok());
-  auto p = on();
+  EXPECT_TRUE(validate(stroke_end_on()).ok());
+  auto p = stroke_end_on();
   p.depth = 1.2;
   const auto report = validate(p);
   ASSERT_FALSE(report.ok());

@@ -12,7 +12,7 @@ using mrd::model::TemperatureLaw;
 using mrd::model::ThermalDrift;
 using mrd::model::ThermalDriftParams;
 
-ThermalDriftParams on() {
+ThermalDriftParams thermal_on() {
   ThermalDriftParams p;
   p.enabled = true;
   p.heat_capacity = 1000.0;        // J/K
@@ -21,7 +21,7 @@ ThermalDriftParams on() {
 }
 
 TEST(ThermalDrift, HeatsTowardsTheBalanceOfPowerAndCoolingExactly) {
-  const auto p = on();
+  const auto p = thermal_on();
   const double T = 1e-2;
   ThermalDrift d(p, T);
   const double power = 50.0;  // W: settles at 20 + 50 * 100 / 1000 = 25 degC
@@ -35,7 +35,7 @@ TEST(ThermalDrift, HeatsTowardsTheBalanceOfPowerAndCoolingExactly) {
 }
 
 TEST(ThermalDrift, FactorsFallWhenHeatingAndRecoverWhenCooling) {
-  const auto p = on();
+  const auto p = thermal_on();
   ThermalDrift d(p, 1e-2);
   EXPECT_EQ(d.viscosity_factor(), 1.0);
   EXPECT_EQ(d.yield_factor(), 1.0);
@@ -52,7 +52,7 @@ TEST(ThermalDrift, FactorsFallWhenHeatingAndRecoverWhenCooling) {
 }
 
 TEST(ThermalDrift, LinearLawStopsAtTheFloor) {
-  auto p = on();
+  auto p = thermal_on();
   p.viscosity_law = TemperatureLaw::kLinear;
   p.viscosity_coefficient = 0.05;
   ThermalDrift d(p, 1.0);
@@ -61,7 +61,7 @@ TEST(ThermalDrift, LinearLawStopsAtTheFloor) {
 }
 
 TEST(ThermalDrift, AMeasuredTemperatureReplacesTheModelUntilNaN) {
-  ThermalDrift d(on(), 1e-2);
+  ThermalDrift d(thermal_on(), 1e-2);
   d.set_measured_temperature(45.0);
   d.heat(1e6);
   EXPECT_EQ(d.temperature(), 45.0);

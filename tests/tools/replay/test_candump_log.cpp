@@ -44,7 +44,7 @@ class LogWriter {
   std::uint8_t lvdt_counter_ = 0, command_counter_ = 0, feedback_counter_ = 0;
 };
 
-std::string error_of(const std::string& text, const RunReadOptions& options = {}) {
+std::string candump_error_of(const std::string& text, const RunReadOptions& options = {}) {
   return mrd::tools::testing::input_error_of(
       [&] { (void)parse_candump(text, "bus.log", options); });
 }
@@ -183,20 +183,20 @@ TEST(CandumpLog, ConstantCurrentForALogWithoutCurrentFrames) {
   LogWriter w;
   w.lvdt(0.0, 0.0);
   w.lvdt(0.001, 0.001);
-  EXPECT_EQ(error_of(w.text),
+  EXPECT_EQ(candump_error_of(w.text),
             "bus.log: no current frames (command 0x210, feedback 0x211); give --current");
   RunReadOptions o;
   o.current = 0.6;
   EXPECT_DOUBLE_EQ(parse_candump(w.text, "bus.log", o).run.coil[1], 0.6);
   w.command(0.002, 0.1);
-  EXPECT_EQ(error_of(w.text, o),
+  EXPECT_EQ(candump_error_of(w.text, o),
             "bus.log: the log has current frames; --current and --current-from-name are for logs "
             "without them");
 }
 
 TEST(CandumpLogErrors, SyntaxErrorsNameLineAndColumn) {
   const std::string ok = "(1700000000.000000) vcan0 210#0000000000000000\n";
-  auto second = [&](const std::string& line) { return error_of(ok + line + "\n"); };
+  auto second = [&](const std::string& line) { return candump_error_of(ok + line + "\n"); };
   EXPECT_EQ(second("1700000000.1 vcan0 110#00"),
             "bus.log:2: column 'timestamp': expected '(seconds.microseconds)', got '1700000000.1'");
   EXPECT_EQ(second("(17000x.1) vcan0 110#00"),
@@ -224,23 +224,23 @@ TEST(CandumpLogErrors, SyntaxErrorsNameLineAndColumn) {
 }
 
 TEST(CandumpLogErrors, TimeGoingBackwards) {
-  EXPECT_EQ(error_of("(1700000000.000002) vcan0 123#00\n(1700000000.000001) vcan0 123#00\n"),
+  EXPECT_EQ(candump_error_of("(1700000000.000002) vcan0 123#00\n(1700000000.000001) vcan0 123#00\n"),
             "bus.log:2: column 'timestamp': time goes backwards: 1700000000.000001 after "
             "1700000000.000002");
   LogWriter w;
   w.command(0.0, 0.1);
   w.lvdt(0.001, 0.0);
   w.add(0.001, can::encode_lvdt(can::kDefaultLvdtId, {0.0, false, 1}).frame);
-  EXPECT_EQ(error_of(w.text),
+  EXPECT_EQ(candump_error_of(w.text),
             "bus.log:3: column 'timestamp': LVDT time does not increase: 1700000000.001000 again");
 }
 
 TEST(CandumpLogErrors, WholeLogProblems) {
-  EXPECT_EQ(error_of("(1700000000.000000) vcan0 123#00\n"),
+  EXPECT_EQ(candump_error_of("(1700000000.000000) vcan0 123#00\n"),
             "bus.log: no usable LVDT frames (id 0x110)");
   RunReadOptions o;
   o.columns = mrd::tools::parse_column_mapping("t=time_s");
-  EXPECT_EQ(error_of("(1.0) vcan0 123#00\n", o),
+  EXPECT_EQ(candump_error_of("(1.0) vcan0 123#00\n", o),
             "bus.log: --columns is for CSV files, not candump logs");
 }
 

@@ -15,7 +15,7 @@ using mrd::tools::parse_run_csv;
 using mrd::tools::RunReadOptions;
 
 // The error message, or "" when the text parses.
-std::string error_of(const std::string& text, const RunReadOptions& options = {},
+std::string csv_error_of(const std::string& text, const RunReadOptions& options = {},
                      const std::string& name = "run.csv") {
   return mrd::tools::testing::input_error_of([&] { (void)parse_run_csv(text, name, options); });
 }
@@ -129,93 +129,93 @@ TEST(RunCsv, SampleRateStandsInForAMissingTimeColumn) {
 TEST(RunCsvErrors, NonFiniteValuesNameLineAndColumn) {
   std::string text = kGood;
   text.replace(text.find("0.001,2"), 7, "0.001,nan");
-  EXPECT_EQ(error_of(text), "run.csv:3: column 'displacement_mm': 'nan' is not a finite number");
+  EXPECT_EQ(csv_error_of(text), "run.csv:3: column 'displacement_mm': 'nan' is not a finite number");
   text = kGood;
   text.replace(text.find("1.2"), 3, "inf");
-  EXPECT_EQ(error_of(text), "run.csv:4: column 'force_kN': 'inf' is not a finite number");
+  EXPECT_EQ(csv_error_of(text), "run.csv:4: column 'force_kN': 'inf' is not a finite number");
   text = kGood;
   text.replace(text.find("0.5,1.1"), 3, "abc");
-  EXPECT_EQ(error_of(text), "run.csv:3: column 'current_A': 'abc' is not a finite number");
-  EXPECT_EQ(error_of("time_s,displacement_mm,current_A\n0,,1\n1,1,1\n"),
+  EXPECT_EQ(csv_error_of(text), "run.csv:3: column 'current_A': 'abc' is not a finite number");
+  EXPECT_EQ(csv_error_of("time_s,displacement_mm,current_A\n0,,1\n1,1,1\n"),
             "run.csv:2: column 'displacement_mm': empty cell");
 }
 
 TEST(RunCsvErrors, TimeMustIncrease) {
-  EXPECT_EQ(error_of("time_s,displacement_mm,current_A\n0,1,0\n0.002,1,0\n0.001,1,0\n"),
+  EXPECT_EQ(csv_error_of("time_s,displacement_mm,current_A\n0,1,0\n0.002,1,0\n0.001,1,0\n"),
             "run.csv:4: column 'time_s': time goes backwards: 0.001 s after 0.002 s");
-  EXPECT_EQ(error_of("time_s,displacement_mm,current_A\n0,1,0\n\n0.001,1,0\n0.001,1,0\n"),
+  EXPECT_EQ(csv_error_of("time_s,displacement_mm,current_A\n0,1,0\n\n0.001,1,0\n0.001,1,0\n"),
             "run.csv:5: column 'time_s': time does not increase: 0.001 s twice");
 }
 
 TEST(RunCsvErrors, MissingColumns) {
-  EXPECT_EQ(error_of("displacement_mm,current_A\n1,0\n2,0\n"),
+  EXPECT_EQ(csv_error_of("displacement_mm,current_A\n1,0\n2,0\n"),
             "run.csv:1: no time column: expected time_s or time_ms (or give --sample-rate)");
-  EXPECT_EQ(error_of("time_s,current_A\n1,0\n2,0\n"),
+  EXPECT_EQ(csv_error_of("time_s,current_A\n1,0\n2,0\n"),
             "run.csv:1: no displacement column: expected displacement_m, displacement_mm or "
             "displacement_cm");
-  EXPECT_EQ(error_of("time_s,displacement_mm,force_N\n1,0,0\n2,0,0\n"),
+  EXPECT_EQ(csv_error_of("time_s,displacement_mm,force_N\n1,0,0\n2,0,0\n"),
             "run.csv:1: no coil current: expected a current_A or current_mA column, a voltage_V "
             "column, or --current / --current-from-name");
-  EXPECT_EQ(error_of("\"t\",\"D\",\n0,1,\n", mapped("t=time_s,D=displacement_cm,F=force_N"),
+  EXPECT_EQ(csv_error_of("\"t\",\"D\",\n0,1,\n", mapped("t=time_s,D=displacement_cm,F=force_N"),
                      "ranran_50.csv"),
             "ranran_50.csv:1: column 'F': mapped by --columns but not in the header (t, D)");
-  EXPECT_EQ(error_of("0 1 2 3\n1 1 2 3\n", mapped("1=time_s,2=displacement_mm,5=force_N"), "q.txt"),
+  EXPECT_EQ(csv_error_of("0 1 2 3\n1 1 2 3\n", mapped("1=time_s,2=displacement_mm,5=force_N"), "q.txt"),
             "q.txt:1: column '5': no such column: the first row has 4");
 }
 
 TEST(RunCsvErrors, UnknownUnitsAndColumns) {
-  EXPECT_EQ(error_of("time_s,displacement_in,current_A\n0,1,0\n"),
+  EXPECT_EQ(csv_error_of("time_s,displacement_in,current_A\n0,1,0\n"),
             "run.csv:1: column 'displacement_in': unknown unit 'in' for displacement; expected "
             "displacement_m, displacement_mm or displacement_cm");
-  EXPECT_EQ(error_of("time_s,displacement_mm,current_A,pressure_bar\n0,1,0,1\n")
+  EXPECT_EQ(csv_error_of("time_s,displacement_mm,current_A,pressure_bar\n0,1,0,1\n")
                 .rfind("run.csv:1: column 'pressure_bar': unknown column; expected time_s, ", 0),
             0u);
-  EXPECT_EQ(error_of("time_s,displacement_mm,displacement_m,current_A\n0,1,1,0\n"),
+  EXPECT_EQ(csv_error_of("time_s,displacement_mm,displacement_m,current_A\n0,1,1,0\n"),
             "run.csv:1: column 'displacement_m': a second displacement column (the first is "
             "'displacement_mm')");
-  EXPECT_EQ(error_of("time_s,,current_A\n0,1,0\n"), "run.csv:1: column '2': empty column name");
+  EXPECT_EQ(csv_error_of("time_s,,current_A\n0,1,0\n"), "run.csv:1: column '2': empty column name");
 }
 
 TEST(RunCsvErrors, RaggedRows) {
-  EXPECT_EQ(error_of("time_s,displacement_mm,current_A,force_kN\n0,1,0.5,1\n0.001,2,0.5\n"),
+  EXPECT_EQ(csv_error_of("time_s,displacement_mm,current_A,force_kN\n0,1,0.5,1\n0.001,2,0.5\n"),
             "run.csv:3: column 'force_kN': ragged row: 3 fields, but the header has 4");
-  EXPECT_EQ(error_of("time_s,displacement_mm,current_A,force_kN\n0,1,0.5,1,7\n"),
+  EXPECT_EQ(csv_error_of("time_s,displacement_mm,current_A,force_kN\n0,1,0.5,1,7\n"),
             "run.csv:2: column '5': ragged row: 5 fields, but the header has 4");
-  EXPECT_EQ(error_of("0 1 2\n1 1\n", mapped("1=time_s,2=displacement_mm,3=current_A"), "q.txt"),
+  EXPECT_EQ(csv_error_of("0 1 2\n1 1\n", mapped("1=time_s,2=displacement_mm,3=current_A"), "q.txt"),
             "q.txt:2: column '3': ragged row: 2 fields, but the first row has 3");
 }
 
 TEST(RunCsvErrors, OptionsThatContradictTheFile) {
   RunReadOptions current;
   current.current = 0.5;
-  EXPECT_EQ(error_of(kGood, current),
+  EXPECT_EQ(csv_error_of(kGood, current),
             "run.csv:1: column 'current_A': the file has a coil column; --current and "
             "--current-from-name are for files without one");
   RunReadOptions rate;
   rate.sample_rate = 100.0;
-  EXPECT_EQ(error_of(kGood, rate),
+  EXPECT_EQ(csv_error_of(kGood, rate),
             "run.csv:1: column 'time_s': --sample-rate is for files without a time column");
   rate.sample_rate = std::numeric_limits<double>::infinity();
-  EXPECT_EQ(error_of("displacement_mm,current_A\n1,0\n2,0\n", rate),
+  EXPECT_EQ(csv_error_of("displacement_mm,current_A\n1,0\n2,0\n", rate),
             "run.csv:1: --sample-rate must be a finite number > 0");
   current.current = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(error_of("time_s,displacement_mm\n0,1\n1,1\n", current),
+  EXPECT_EQ(csv_error_of("time_s,displacement_mm\n0,1\n1,1\n", current),
             "--current must be a finite number");
   RunReadOptions from_name;
   from_name.current_from_name = true;
-  EXPECT_EQ(error_of("time_s,displacement_mm\n0,1\n1,1\n", from_name),
+  EXPECT_EQ(csv_error_of("time_s,displacement_mm\n0,1\n1,1\n", from_name),
             "run.csv: no coil current in the file name: expected it to end in <current>A, with x "
             "for the decimal point, as in 25mm0x25Hz0x5A.txt");
 }
 
 TEST(RunCsvErrors, TooShortEmptyOrAHeaderWhereDataBelongs) {
-  EXPECT_EQ(error_of(""),
+  EXPECT_EQ(csv_error_of(""),
             "run.csv:0: empty file: expected a header (time_s, displacement_mm, ...)");
-  EXPECT_EQ(error_of("time_s,displacement_mm,current_A\n0,1,0\n"),
+  EXPECT_EQ(csv_error_of("time_s,displacement_mm,current_A\n0,1,0\n"),
             "run.csv:1: a run needs at least 2 samples, got 1");
   auto positional = mapped("1=time_s,2=displacement_mm");
   positional.current = 1.0;
-  EXPECT_EQ(error_of("t D\n0 1\n", positional, "q.txt"),
+  EXPECT_EQ(csv_error_of("t D\n0 1\n", positional, "q.txt"),
             "q.txt:1: column '1': 't' is not a finite number");
 }
 
