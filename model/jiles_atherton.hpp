@@ -32,6 +32,8 @@ struct JilesAthertonSettings {
   double denominator_floor = 1e-2;
   Integrator integrator = Integrator::kRk4;
   LangevinEvaluation langevin = LangevinEvaluation::kTabulated;
+
+  bool operator==(const JilesAthertonSettings&) const = default;
 };
 
 // Where the material is on its B-H plane. H is the field the state was integrated to.

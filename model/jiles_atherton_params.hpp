@@ -15,6 +15,8 @@ struct JilesAthertonParams {
   // alpha*Ms/(3a): the slope of alpha*Man at He = 0. At or above 1 the anhysteretic curve
   // folds back on itself and Eq. 10 can run away (see docs/MODEL.md).
   [[nodiscard]] double mean_field_gain() const { return alpha * Ms / (3.0 * a); }
+
+  bool operator==(const JilesAthertonParams&) const = default;
 };
 
 // Eq. 9: H = N I / Le, a lumped magnetic circuit.
@@ -28,6 +30,8 @@ struct MagneticCircuit {
   [[nodiscard]] double current_from_field(double field) const {
     return field * effective_length / turns;
   }
+
+  bool operator==(const MagneticCircuit&) const = default;
 };
 
 // Errors for values outside physics, a warning for alpha*Ms/(3a) >= 1.

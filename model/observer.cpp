@@ -22,8 +22,17 @@ ObserverEstimate Observer::step(double displacement, double velocity, double coi
   if (effects_.active()) [[unlikely]] {
     return step_with_effects(displacement, velocity, coil_current, false);
   }
-  estimate_.B = magnetics_.apply_current(coil_current);
-  estimate_.yield_stress = yield_stress_(estimate_.B);
+  return base_force(velocity, magnetics_.apply_current(coil_current));
+}
+
+ObserverEstimate Observer::step_at_induction(double displacement, double velocity, double B) {
+  if (effects_.active()) return force_with_effects(motion_now(displacement, velocity, false), B);
+  return base_force(velocity, B);
+}
+
+ObserverEstimate Observer::base_force(double velocity, double B) {
+  estimate_.B = B;
+  estimate_.yield_stress = yield_stress_(B);
   estimate_.velocity = velocity;
   estimate_.force = damper_.force(velocity, estimate_.yield_stress);
   return estimate_;
@@ -31,14 +40,22 @@ ObserverEstimate Observer::step(double displacement, double velocity, double coi
 
 ObserverEstimate Observer::step_with_effects(double displacement, double velocity,
                                              double coil_current, bool filtered) {
+  const PredictedMotion now = motion_now(displacement, velocity, filtered);
+  return force_with_effects(now, magnetics_.apply_current(effects_.coil_current(coil_current)));
+}
+
+PredictedMotion Observer::motion_now(double displacement, double velocity, bool filtered) {
   double acceleration = 0.0;
   if (effects_.config().sensor_delay.enabled) {
     // The prediction needs the acceleration, which only the tracker on the displacement has.
     if (!filtered) velocity_filter_.update(displacement);
     acceleration = velocity_filter_.acceleration();
   }
-  const PredictedMotion now = effects_.motion(displacement, velocity, acceleration);
-  estimate_.B = magnetics_.apply_current(effects_.coil_current(coil_current));
+  return effects_.motion(displacement, velocity, acceleration);
+}
+
+ObserverEstimate Observer::force_with_effects(const PredictedMotion& now, double B) {
+  estimate_.B = B;
   estimate_.yield_stress = yield_stress_(estimate_.B) * effects_.yield_factor();
   estimate_.velocity = now.velocity;
   const double fluid = effects_.fluid_force(damper_, estimate_.yield_stress, now.velocity) *

@@ -33,6 +33,11 @@ class Observer {
   ObserverEstimate step(double displacement, double coil_current);
   // With a velocity sensor.
   ObserverEstimate step(double displacement, double velocity, double coil_current);
+  // With the gap induction B [T] known instead of the current: Eq. 13 and 11-12 and the effects
+  // that act after B. For a damper with a field probe in its gap, and for fits that vary only
+  // what acts after B and so can reuse one J-A run's B (tools/residual). The J-A state and the
+  // coil lag are left as they are.
+  ObserverEstimate step_at_induction(double displacement, double velocity, double B);
 
   // A measured fluid temperature [degC] for thermal_drift (NaN: back to its lumped model).
   void set_measured_temperature(double celsius) { effects_.set_measured_temperature(celsius); }
@@ -49,6 +54,12 @@ class Observer {
   // already seen this displacement (the displacement-only path).
   ObserverEstimate step_with_effects(double displacement, double velocity, double coil_current,
                                      bool filtered);
+  // The motion the effects see: sensor_delay's prediction, or the reading.
+  PredictedMotion motion_now(double displacement, double velocity, bool filtered);
+  // Everything after B with every effect off (Eq. 13, 11-12).
+  ObserverEstimate base_force(double velocity, double B);
+  // Everything after B with at least one effect on.
+  ObserverEstimate force_with_effects(const PredictedMotion& now, double B);
 
   JilesAtherton magnetics_;
   YieldStress yield_stress_;

@@ -12,6 +12,8 @@ namespace mrd::model {
 struct CoilLagParams {
   bool enabled = false;
   double time_constant = 5e-3;  // tau [s]; 0 means no lag
+
+  bool operator==(const CoilLagParams&) const = default;
 };
 
 ParameterReport validate(const CoilLagParams& params);

@@ -10,9 +10,11 @@
 
 namespace mrd::tools {
 
-void predict_force(const model::DamperModel& model, const FitSeries& series,
-                   std::vector<double>& force) {
-  force.resize(series.size());
+namespace {
+
+// One observer per run, from a demagnetised core, fed each sample; `step` returns the estimate.
+template <typename Step>
+void run_observer(const model::DamperModel& model, const FitSeries& series, Step step) {
   const bool with_temperature = !series.temperature.empty();
   model::ObserverSettings settings;
   for (std::size_t r = 0; r < series.run_starts.size(); ++r) {
@@ -22,9 +24,38 @@ void predict_force(const model::DamperModel& model, const FitSeries& series,
     model::Observer observer(model, settings);
     for (std::size_t i = from; i < to; ++i) {
       if (with_temperature) observer.set_measured_temperature(series.temperature[i]);
-      force[i] = observer.step(series.displacement[i], series.velocity[i], series.current[i]).force;
+      step(observer, i);
     }
   }
+}
+
+}  // namespace
+
+InductionTrace::InductionTrace(const model::DamperModel& model, const FitSeries& series)
+    : magnetics_(model), B_(series.size()) {
+  run_observer(model, series, [&](model::Observer& o, std::size_t i) {
+    B_[i] = o.step(series.displacement[i], series.velocity[i], series.current[i]).B;
+  });
+}
+
+bool InductionTrace::serves(const model::DamperModel& m) const {
+  return m.jiles_atherton == magnetics_.jiles_atherton && m.circuit == magnetics_.circuit &&
+         m.integration == magnetics_.integration && m.effects.coil_lag == magnetics_.effects.coil_lag;
+}
+
+void predict_force(const model::DamperModel& model, const FitSeries& series,
+                   std::vector<double>& force, const InductionTrace* trace) {
+  force.resize(series.size());
+  if (trace != nullptr && trace->serves(model)) {
+    const std::vector<double>& B = trace->induction();
+    run_observer(model, series, [&](model::Observer& o, std::size_t i) {
+      force[i] = o.step_at_induction(series.displacement[i], series.velocity[i], B[i]).force;
+    });
+    return;
+  }
+  run_observer(model, series, [&](model::Observer& o, std::size_t i) {
+    force[i] = o.step(series.displacement[i], series.velocity[i], series.current[i]).force;
+  });
 }
 
 ResidualRms residual_rms(const FitSeries& series, const std::vector<double>& predicted) {
@@ -135,7 +166,7 @@ double fitness_at(const ParameterSpace& space, const FitSeries& series, const Po
                   std::vector<double>& buffer) {
   const model::DamperModel model = space.build(theta);
   if (!model::validate(model).ok()) return 1e300;
-  predict_force(model, series, buffer);
+  predict_force(model, series, buffer, space.induction.get());
   const LinearTerms terms = fit_linear_terms(series, buffer, space.with_spring);
   const double rms = linear_fit_rms(series, buffer, terms);
   return std::isfinite(rms) ? rms : 1e300;
@@ -173,7 +204,7 @@ FittedModel finish(const ParameterSpace& space, const FitSeries& series, const P
   out.evaluations = evaluations;
   std::vector<double> force;
   const model::DamperModel model = space.build(theta);
-  predict_force(model, series, force);
+  predict_force(model, series, force, space.induction.get());
   out.linear = fit_linear_terms(series, force, space.with_spring);
   out.fitting_rms = linear_fit_rms(series, force, out.linear);
   out.model = apply_linear_terms(model, out.linear);

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -12,11 +13,28 @@
 
 namespace mrd::tools {
 
+// The gap induction B [T] of one model over a series (Eq. 1-10 after its coil lag). Most of a
+// fit's trials vary only what acts after B (every effect but coil_lag): they reuse this B and
+// skip the J-A integration, which is most of an observer pass on a switched current.
+class InductionTrace {
+ public:
+  InductionTrace(const model::DamperModel& model, const FitSeries& series);
+  // Whether `model`'s B over the series is this one: the same J-A parameters, circuit,
+  // integration and coil lag.
+  [[nodiscard]] bool serves(const model::DamperModel& model) const;
+  [[nodiscard]] const std::vector<double>& induction() const { return B_; }
+
+ private:
+  model::DamperModel magnetics_;
+  std::vector<double> B_;
+};
+
 // The force [N] the observer predicts over the series: model::Observer with the series'
 // velocity as its velocity sensor, from a demagnetised core at each run start. A recorded
-// temperature is handed to the observer (it matters only with thermal_drift on).
+// temperature is handed to the observer (it matters only with thermal_drift on). With a trace
+// that serves the model, B comes from it; the force is the same to the last bit.
 void predict_force(const model::DamperModel& model, const FitSeries& series,
-                   std::vector<double>& force);
+                   std::vector<double>& force, const InductionTrace* trace = nullptr);
 
 // RMS [N] of measured - predicted over the fitting samples, the validation samples and all.
 struct ResidualRms {
@@ -64,6 +82,8 @@ struct ParameterSpace {
   model::DamperModel origin;
   ModelEdit edit;
   bool with_spring = false;  // fit F0 + k x among the linear terms
+  // B of the origin over the fitting series, for the trials whose magnetics equal the origin's.
+  std::shared_ptr<const InductionTrace> induction;
 
   [[nodiscard]] model::DamperModel build(const Point& p) const { return edit(origin, p); }
 };

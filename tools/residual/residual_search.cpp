@@ -125,9 +125,12 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
     std::vector<FittedModel> fits(candidates.size());
     const std::uint64_t round_seed = seed;
     seed += candidates.size();
+    // The round model's B: every candidate but coil_lag leaves it as it is during its swarm.
+    const auto round_induction = std::make_shared<const InductionTrace>(current, fit_series);
     pool.run(candidates.size(), [&](std::size_t k, unsigned /*worker*/) {
       const std::string& name = candidates[k];
-      const ParameterSpace effect = effect_space(name, current, scales);
+      ParameterSpace effect = effect_space(name, current, scales);
+      effect.induction = round_induction;
       const FittedModel alone =
           fit_space(effect, fit_series, nullptr, round_seed + k, options.evaluations_per_parameter);
       std::int64_t spent = alone.evaluations;

@@ -53,6 +53,29 @@ TEST(ObserverEffects, AllOffIsTheBaseModelBitForBit) {
   }
 }
 
+// The force from a known B is the force of the step that computed that B, for the base model
+// and with every effect after B on (the J-A state and the coil lag are left alone).
+TEST(ObserverEffects, StepAtInductionGivesTheStepsForceForItsB) {
+  for (const bool effects : {false, true}) {
+    DamperModel m;
+    if (effects) {
+      m.effects.thermal_drift.enabled = true;
+      m.effects.preyield_hysteresis.enabled = true;
+      m.effects.gas_spring.enabled = true;
+      m.effects.stroke_end_air.enabled = true;
+      m.effects.sensor_delay.enabled = true;
+    }
+    Observer full(m), at_B(m);
+    for (int k = 0; k < 3000; ++k) {
+      const auto e = full.step(x_at(k), v_at(k), i_at(k));
+      const auto f = at_B.step_at_induction(x_at(k), v_at(k), e.B);
+      ASSERT_EQ(f.force, e.force) << "effects " << effects << ", step " << k;
+      ASSERT_EQ(f.yield_stress, e.yield_stress);
+    }
+    EXPECT_EQ(at_B.magnetics().B(), 0.0) << "the J-A state is not touched";
+  }
+}
+
 TEST(ObserverEffects, GasSpringAddsExactlyItsForce) {
   const auto m = with([](EffectSet& e) { e.gas_spring = {true, 1500.0, 3e4}; });
   Observer base(DamperModel{}), sprung(m);

@@ -35,6 +35,32 @@ TEST(ModelFit, LinearTermsAreTheModelTheyDescribe) {
   EXPECT_LT(worst, 1e-9 * largest);
 }
 
+// B from a trace serves a model with the same magnetics (here, more viscosity and a gas
+// spring), bit for bit; a changed field gain or coil lag is not served.
+TEST(ModelFit, InductionTraceServesOnlyTheSameMagnetics) {
+  const FitSeries s = table4_series();
+  mrd::model::DamperModel base;
+  const InductionTrace trace(base, s);
+  mrd::model::DamperModel after_B = base;
+  after_B.fluid.viscosity *= 1.3;
+  after_B.effects.gas_spring.enabled = true;
+  ASSERT_TRUE(trace.serves(after_B));
+  std::vector<double> direct, traced;
+  predict_force(after_B, s, direct);
+  predict_force(after_B, s, traced, &trace);
+  EXPECT_EQ(direct, traced);
+
+  mrd::model::DamperModel gain = base;
+  gain.circuit.turns *= 1.01;
+  EXPECT_FALSE(trace.serves(gain));
+  mrd::model::DamperModel lag = base;
+  lag.effects.coil_lag.enabled = true;
+  EXPECT_FALSE(trace.serves(lag));
+  predict_force(gain, s, direct);
+  predict_force(gain, s, traced, &trace);  // not served: J-A runs
+  EXPECT_EQ(direct, traced);
+}
+
 TEST(ModelFit, LinearTermsComeBackFromAScaledForce) {
   const FitSeries truth = table4_series();
   std::vector<double> f;
