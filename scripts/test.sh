@@ -13,7 +13,7 @@ stage "hil: controller and plant over vcan0 and gpio-sim, inside a QEMU VM (hil.
 # Builds the VM from Debian's packages in ~/.cache/mrd-hil (cold about 1 min of downloads) and
 # boots it once for every VM scenario; skipped where qemu cannot run, unless MRD_HIL_VM=required.
 # The host HIL tests (the rest of label hil) are not run here: on a shared 2-core virtual machine
-# their 1 kHz processes miss too many periods to hold their assertions (docs/HIL.md).
+# late wake-ups still break their counts now and then (docs/HIL.md, "In the test suite").
 ctest --test-dir build/release -L hil -R '^hil\.vm$' --output-on-failure
 
 stage "asan: build and every fast test under AddressSanitizer + UndefinedBehaviorSanitizer"

@@ -93,9 +93,9 @@ int main(int argc, char** argv) {
       status = 1;
     }
     if (!config_out.empty()) {
-      std::string text;
-      text = run_options.config_path().empty() ? std::string(mrd::firmware::default_config_text())
-                                               : read_text_file(run_options.config_path());
+      const std::string text = run_options.config_path().empty()
+                                   ? std::string(mrd::firmware::default_config_text())
+                                   : read_text_file(run_options.config_path());
       if (!write_text_file(config_out, updated_config(text, result))) {
         std::fprintf(stderr, "mrd-residual: cannot write %s\n", config_out.c_str());
         status = 1;

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <regex>
 
 #include "firmware/config_loader.hpp"
@@ -25,9 +26,12 @@ using namespace mrd::test;
 constexpr double kRate = 50.0;  // [Hz]
 constexpr double kPeriod = 1.0 / kRate;
 constexpr double kPoll = 0.5 * kPeriod;  // [s], the Modbus I/O thread's
-constexpr double kPeakSpeed = 2.0 * 3.141592653589793 * 0.5 * 0.040;  // [m/s], of the 0.5 Hz sine
+constexpr double kPeakSpeed = 2.0 * std::numbers::pi * 0.5 * 0.040;  // [m/s], of the 0.5 Hz sine
 
-// The loop, Modbus and safety settings of every run here, for `transport`.
+// The shipped HIL config over `transport` at kRate, polling twice a period, with the overrun
+// trip off, 50 good periods to leave INIT or SAFE and a 0.1 s response timeout: these tests are
+// about the bus's faults, and on a shared CI machine a process can wait 20 ms for a core now and
+// then (an overrun breaks a run of good periods; a late answer would fail a write).
 std::string loop_toml(const std::string& transport) {
   return "[loop]\nrate = " + std::to_string(kRate) +
          "\n[backends]\nlvdt = \"modbus\"\ndriver = \"modbus\"\nlines = \"mock\"\n"
@@ -35,10 +39,6 @@ std::string loop_toml(const std::string& transport) {
          "\nresponse_timeout = 0.1\n[safety]\noverrun_limit = 1000000\nrecovery_periods = 50\n";
 }
 
-// The shipped HIL config at kRate, polling twice a period, with the overrun trip off, 50 good
-// periods to leave INIT or SAFE and a 0.1 s response timeout: these tests are about the bus's
-// faults, and on a shared CI machine a process can wait 20 ms for a core now and then (an
-// overrun breaks a run of good periods; a late answer would fail a write).
 std::string controller_toml() { return loop_toml("tcp"); }
 
 const mrd::firmware::SupervisorConfig& safety() {
