@@ -193,6 +193,7 @@ void read_safety(TomlReader& in, SupervisorConfig& s) {
   in.get("safety.displacement_max", s.displacement_max);
   in.get("safety.stale_periods", s.stale_periods);
   in.get("safety.bad_sample_periods", s.bad_sample_periods);
+  in.get("safety.frozen_periods", s.frozen_periods);
   in.get("safety.current_tolerance", s.current_tolerance);
   in.get("safety.current_disagreement_periods", s.current_disagreement_periods);
   in.get("safety.write_failure_periods", s.write_failure_periods);

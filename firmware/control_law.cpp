@@ -36,6 +36,11 @@ ControlOutput ControlLaw::step(double displacement, double coil_current) {
   return decide(scheduled, observer_.step(displacement, coil_current));
 }
 
+ControlOutput ControlLaw::step(double displacement, const model::SampleTiming& timing, double coil_current) {
+  const double scheduled = schedule_.update(displacement);
+  return decide(scheduled, observer_.step(displacement, timing, coil_current));
+}
+
 ControlOutput ControlLaw::step(double displacement, double velocity, double coil_current) {
   const double scheduled = schedule_.update(displacement);
   return decide(scheduled, observer_.step(displacement, velocity, coil_current));

@@ -36,6 +36,8 @@ class ControlLaw {
   // `coil_current` is the current that flowed this period (measured, or the last command).
   // With `velocity` the observer uses it; otherwise it filters the displacement.
   ControlOutput step(double displacement, double coil_current);
+  // The same for a sample read over a bus, at its own timing (model::SampleTiming).
+  ControlOutput step(double displacement, const model::SampleTiming& timing, double coil_current);
   ControlOutput step(double displacement, double velocity, double coil_current);
 
   // While the supervisor drives the coil itself (INIT, SAFE), restarts the slew limiters from

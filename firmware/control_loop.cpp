@@ -17,7 +17,7 @@ ControlLoop::ControlLoop(const ControlLawConfig& law, const SupervisorConfig& sa
     : law_(law),
       supervisor_(safety),
       checker_(safety.displacement_min, safety.displacement_max,
-               safety.stale_periods * to_period(law.observer.sample_period)),
+               safety.stale_periods * to_period(law.observer.sample_period), safety.frozen_periods),
       hal_(devices),
       telemetry_(telemetry),
       decimation_(telemetry_decimation > 0 ? static_cast<std::uint64_t>(telemetry_decimation) : 1u),
@@ -52,7 +52,7 @@ const TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
   }
 
   // 3-4. Schedule, observer, compensator, on the last good displacement.
-  const ControlOutput out = law_.step(checker_.held_value(), coil);
+  const ControlOutput out = law_.step(checker_.held_value(), checker_.timing(check, now), coil);
 
   // 5. The supervisor.
   const SupervisorDecision d =

@@ -1,5 +1,6 @@
 #include "firmware/sample_check.hpp"
 
+#include <chrono>
 #include <cmath>
 
 namespace mrd::firmware {
@@ -12,6 +13,7 @@ std::string_view to_string(SampleCheck c) {
     case SampleCheck::kCorrupted: return "corrupted";
     case SampleCheck::kNotFinite: return "not_finite";
     case SampleCheck::kOutOfRange: return "out_of_range";
+    case SampleCheck::kFrozen: return "frozen";
   }
   return "unknown";
 }
@@ -26,9 +28,20 @@ SampleCheck SampleChecker::check(const std::optional<hal::DisplacementSample>& s
   if (!sample->usable()) return SampleCheck::kCorrupted;
   if (!std::isfinite(sample->value)) return SampleCheck::kNotFinite;
   if (sample->value < min_ || sample->value > max_) return SampleCheck::kOutOfRange;
+  if (frozen_periods_ > 0) {
+    repeats_ = has_value_ && sample->value == held_ ? repeats_ + 1 : 0;
+    if (repeats_ > frozen_periods_) return SampleCheck::kFrozen;
+  }
+  held_interval_ = has_value_ ? sample->timestamp - held_at_ : hal::Timestamp{};
+  held_at_ = sample->timestamp;
   held_ = sample->value;
   has_value_ = true;
   return SampleCheck::kFresh;
+}
+
+model::SampleTiming SampleChecker::timing(SampleCheck check, hal::Timestamp now) const {
+  using Seconds = std::chrono::duration<double>;
+  return {check == SampleCheck::kFresh, Seconds(held_interval_).count(), Seconds(now - held_at_).count()};
 }
 
 }  // namespace mrd::firmware

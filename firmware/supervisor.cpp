@@ -25,6 +25,7 @@ std::string_view to_string(Trigger t) {
     case Trigger::kSampleOutOfRange: return "sample_out_of_range";
     case Trigger::kSampleNotFinite: return "sample_not_finite";
     case Trigger::kSampleCorrupted: return "sample_corrupted";
+    case Trigger::kSampleFrozen: return "sample_frozen";
     case Trigger::kDriverFault: return "driver_fault";
     case Trigger::kFaultLineUnreadable: return "fault_line_unreadable";
     case Trigger::kCurrentDisagreement: return "current_disagreement";
@@ -49,6 +50,7 @@ hal::ConfigReport SupervisorConfig::validate() const {
   }
   at_least("stale_periods", stale_periods, 1);
   at_least("bad_sample_periods", bad_sample_periods, 1);
+  at_least("frozen_periods", frozen_periods, 0);
   r.check(std::isfinite(current_tolerance) && current_tolerance > 0.0, "current_tolerance",
           "must be a finite value > 0 A");
   at_least("current_disagreement_periods", current_disagreement_periods, 1);
@@ -87,6 +89,7 @@ Trigger trigger_of(SampleCheck c) {
     case SampleCheck::kOutOfRange: return Trigger::kSampleOutOfRange;
     case SampleCheck::kNotFinite: return Trigger::kSampleNotFinite;
     case SampleCheck::kCorrupted: return Trigger::kSampleCorrupted;
+    case SampleCheck::kFrozen: return Trigger::kSampleFrozen;
     case SampleCheck::kMissing:
     case SampleCheck::kStale: return Trigger::kSampleMissing;
     case SampleCheck::kFresh: break;

@@ -26,6 +26,7 @@ enum class Trigger : std::uint8_t {
   kSampleOutOfRange,      // outside [displacement_min, displacement_max]
   kSampleNotFinite,       // NaN or infinite
   kSampleCorrupted,       // checksum/decode failure or sensor fault flag
+  kSampleFrozen,          // new samples repeating one value for more than frozen_periods
   kDriverFault,           // the driver fault line is set
   kFaultLineUnreadable,   // the driver fault line cannot be read
   kCurrentDisagreement,   // measured current differs from the setpoint by more than the tolerance
@@ -44,7 +45,9 @@ struct SupervisorConfig {
   double displacement_min = -0.050;  // [m]
   double displacement_max = 0.050;   // [m]
   int stale_periods = 5;             // SAFE after more than this many periods without a fresh sample
-  int bad_sample_periods = 3;        // SAFE after this many consecutive NaN/out-of-range/corrupted
+  int bad_sample_periods = 3;        // SAFE after this many consecutive NaN/out-of-range/corrupted/frozen
+  int frozen_periods = 0;            // a sample repeating its value exactly more than this often in a
+                                     // row is frozen (0: no check; a rig at rest reads one value)
   double current_tolerance = 0.1;    // [A] |measured - setpoint| above this disagrees
   int current_disagreement_periods = 10;  // SAFE after this many consecutive disagreeing periods
   int write_failure_periods = 3;     // SAFE after this many consecutive failed setpoint writes

@@ -1,9 +1,12 @@
 #include "model/observer.hpp"
 
+#include <algorithm>
+
 namespace mrd::model {
 
 Observer::Observer(const DamperModel& model, const ObserverSettings& settings)
-    : magnetics_(model.jiles_atherton, model.circuit, model.integration),
+    : max_extrapolation_(2.0 * settings.sample_period),
+      magnetics_(model.jiles_atherton, model.circuit, model.integration),
       yield_stress_(model.fluid),
       damper_(model.geometry, model.fluid.viscosity),
       velocity_filter_(settings.sample_period, settings.velocity_cutoff_frequency),
@@ -11,6 +14,15 @@ Observer::Observer(const DamperModel& model, const ObserverSettings& settings)
 
 ObserverEstimate Observer::step(double displacement, double coil_current) {
   const double velocity = velocity_filter_.update(displacement);
+  if (effects_.active()) [[unlikely]] {
+    return step_with_effects(displacement, velocity, coil_current, true);
+  }
+  return step(displacement, velocity, coil_current);
+}
+
+ObserverEstimate Observer::step(double displacement, const SampleTiming& timing, double coil_current) {
+  if (timing.fresh) velocity_filter_.update(displacement, timing.interval);
+  const double velocity = velocity_filter_.velocity_after(std::clamp(timing.age, 0.0, max_extrapolation_));
   if (effects_.active()) [[unlikely]] {
     return step_with_effects(displacement, velocity, coil_current, true);
   }

@@ -14,6 +14,14 @@ struct ObserverSettings {
   double velocity_cutoff_frequency = 20.0;  // [Hz], used only without a velocity sensor
 };
 
+// When a displacement sample was taken, on the loop's clock: an LVDT read over a bus delivers
+// its samples at the bus's pace, not the loop's.
+struct SampleTiming {
+  bool fresh = true;      // a new sample, not one held from an earlier period
+  double interval = 0.0;  // [s] since the previous new sample
+  double age = 0.0;       // [s] from the sample to this step
+};
+
 struct ObserverEstimate {
   double B = 0.0;             // gap induction [T]
   double yield_stress = 0.0;  // [Pa], after the thermal factor when thermal_drift is on
@@ -31,6 +39,10 @@ class Observer {
 
   // Displacement only: velocity comes from the VelocityFilter.
   ObserverEstimate step(double displacement, double coil_current);
+  // Displacement only, at its own timing: the VelocityFilter tracks each new sample at its real
+  // interval and the velocity is carried to this step by the sample's age (at most two
+  // periods, so that a silent sensor cannot extrapolate far).
+  ObserverEstimate step(double displacement, const SampleTiming& timing, double coil_current);
   // With a velocity sensor.
   ObserverEstimate step(double displacement, double velocity, double coil_current);
   // With the gap induction B [T] known instead of the current: Eq. 13 and 11-12 and the effects
@@ -61,6 +73,7 @@ class Observer {
   // Everything after B with at least one effect on.
   ObserverEstimate force_with_effects(const PredictedMotion& now, double B);
 
+  double max_extrapolation_;  // [s]
   JilesAtherton magnetics_;
   YieldStress yield_stress_;
   BinghamDamper damper_;

@@ -5,28 +5,44 @@
 
 namespace mrd::model {
 
-VelocityFilter::VelocityFilter(double sample_period, double cutoff_frequency)
-    : period_(sample_period) {
-  const double theta = std::exp(-2.0 * std::numbers::pi * cutoff_frequency * sample_period);
+VelocityFilter::Gains VelocityFilter::gains_for(double cutoff_frequency, double interval) {
+  const double theta = std::exp(-2.0 * std::numbers::pi * cutoff_frequency * interval);
   const double one_minus = 1.0 - theta;
-  g_ = 1.0 - theta * theta * theta;
-  h_over_T_ = 1.5 * one_minus * one_minus * (1.0 + theta) / sample_period;
-  two_k_over_T2_ = one_minus * one_minus * one_minus / (sample_period * sample_period);
+  return {1.0 - theta * theta * theta, 1.5 * one_minus * one_minus * (1.0 + theta) / interval,
+          one_minus * one_minus * one_minus / (interval * interval)};
 }
 
-double VelocityFilter::update(double displacement) {
+VelocityFilter::VelocityFilter(double sample_period, double cutoff_frequency)
+    : period_(sample_period),
+      cutoff_(cutoff_frequency),
+      nominal_(gains_for(cutoff_frequency, sample_period)),
+      last_interval_(sample_period),
+      last_(nominal_) {}
+
+double VelocityFilter::update(double displacement) { return track(displacement, period_, nominal_); }
+
+double VelocityFilter::update(double displacement, double interval) {
+  if (!primed_ || interval == period_) return track(displacement, period_, nominal_);
+  if (!(interval > 0.0)) return velocity_;
+  if (interval != last_interval_) {  // one exp per changed interval
+    last_ = gains_for(cutoff_, interval);
+    last_interval_ = interval;
+  }
+  return track(displacement, interval, last_);
+}
+
+double VelocityFilter::track(double displacement, double T, const Gains& gains) {
   if (!primed_) {  // the first sample has no history: assume the rig was at rest
     position_ = displacement;
     primed_ = true;
     return velocity_;
   }
-  const double T = period_;
   const double predicted_position = position_ + T * (velocity_ + 0.5 * T * acceleration_);
   const double predicted_velocity = velocity_ + T * acceleration_;
   const double residual = displacement - predicted_position;
-  position_ = predicted_position + g_ * residual;
-  velocity_ = predicted_velocity + h_over_T_ * residual;
-  acceleration_ += two_k_over_T2_ * residual;
+  position_ = predicted_position + gains.g * residual;
+  velocity_ = predicted_velocity + gains.h_over_T * residual;
+  acceleration_ += gains.two_k_over_T2 * residual;
   return velocity_;
 }
 

@@ -9,20 +9,36 @@ namespace mrd::model {
 // late velocity sign costs twice the yield force. With theta = exp(-2 pi f_c T):
 //   g = 1 - theta^3, h = 1.5 (1 - theta)^2 (1 + theta), k = 0.5 (1 - theta)^3
 // The cutoff f_c sets the trade between LVDT noise and response to jerk (default 20 Hz).
+// Samples that arrive at uneven intervals (a bus polled on its own clock) are tracked with the
+// gains of their own interval; the velocity is then carried to the moment it is needed.
 class VelocityFilter {
  public:
   VelocityFilter(double sample_period, double cutoff_frequency);
 
-  double update(double displacement);  // returns velocity [m/s]
+  double update(double displacement);  // one sample period after the last; returns velocity [m/s]
+  // A sample taken `interval` [s] after the previous one (> 0; otherwise only a first sample
+  // counts, which primes the tracker).
+  double update(double displacement, double interval);
   [[nodiscard]] double velocity() const { return velocity_; }
+  // The velocity `elapsed` [s] after the last sample, at its tracked acceleration.
+  [[nodiscard]] double velocity_after(double elapsed) const { return velocity_ + acceleration_ * elapsed; }
   [[nodiscard]] double acceleration() const { return acceleration_; }  // [m/s^2]
   void reset() { primed_ = false; position_ = velocity_ = acceleration_ = 0.0; }
 
  private:
+  struct Gains {
+    double g;
+    double h_over_T;
+    double two_k_over_T2;
+  };
+  static Gains gains_for(double cutoff_frequency, double interval);
+  double track(double displacement, double interval, const Gains& gains);
+
   double period_;
-  double g_;
-  double h_over_T_;
-  double two_k_over_T2_;
+  double cutoff_;
+  Gains nominal_;
+  double last_interval_;  // of `last_`, the gains of the latest uneven interval
+  Gains last_;
   double position_ = 0.0;
   double velocity_ = 0.0;
   double acceleration_ = 0.0;

@@ -9,6 +9,7 @@ std::string_view to_string(FaultKind k) {
   switch (k) {
     case FaultKind::kSensorTimeout: return "sensor_timeout";
     case FaultKind::kStaleValue: return "stale_value";
+    case FaultKind::kFrozenValue: return "frozen_value";
     case FaultKind::kNotANumber: return "nan";
     case FaultKind::kOutOfRange: return "out_of_range";
     case FaultKind::kCorruptedFrame: return "corrupted_frame";

@@ -30,6 +30,12 @@ std::optional<DisplacementSample> MockDisplacementSource::latest() {
   }
   if (const ScriptedFault* f = script_.active(FaultKind::kOutOfRange, now)) s.value = f->parameter;
   if (script_.is_active(FaultKind::kCorruptedFrame, now)) s.flags = kSampleCorrupted;
+  if (script_.is_active(FaultKind::kFrozenValue, now)) {
+    if (!frozen_) frozen_ = last_ ? last_->value : s.value;
+    s.value = *frozen_;
+  } else {
+    frozen_.reset();
+  }
   last_ = s;
   return s;
 }

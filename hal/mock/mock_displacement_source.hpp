@@ -28,6 +28,7 @@ class MockDisplacementSource final : public DisplacementSource {
   const FaultScript& script_;
   double truth_ = 0.0;
   std::optional<DisplacementSample> last_;
+  std::optional<double> frozen_;  // the value a frozen sensor keeps
   std::uint32_t sequence_ = 0;
   std::uint64_t dropped_ = 0;
   std::uint64_t drop_phase_ = 0;

@@ -87,6 +87,30 @@ TEST(SupervisorReaction, StaleRepeatedSampleIsTreatedLikeNoSample) {
   expect_recovery(r);
 }
 
+// A frozen LVDT: new frames, one value (the sensor or its converter stuck).
+TEST(SupervisorReaction, FrozenValueIsABadSampleAfterFrozenPeriodsRepeatsWhenChecked) {
+  SupervisorConfig limits;
+  limits.frozen_periods = 20;
+  LoopRig rig(script_of(FaultKind::kFrozenValue), limits);
+  const Reaction r = react(rig);
+  EXPECT_EQ(r.degraded, kFaultStart + limits.frozen_periods);  // its 21st repeat
+  EXPECT_EQ(r.safe, kFaultStart + limits.frozen_periods + limits.bad_sample_periods - 1);
+  expect_recovery(r);
+  const auto& t = rig.loop().supervisor().transitions();
+  EXPECT_EQ(t.get(kRun, kDegraded, Trigger::kSampleFrozen), 1u);
+  EXPECT_EQ(t.get(kDegraded, kSafe, Trigger::kSampleFrozen), 1u);
+}
+
+TEST(SupervisorReaction, FrozenValueGoesUnseenWithTheCheckOff) {
+  LoopRig rig(script_of(FaultKind::kFrozenValue));
+  rig.run_to(kFaultStart);
+  const double frozen = rig.loop().last().displacement;
+  while (rig.cycle() < kFaultEnd) {
+    EXPECT_EQ(rig.step(), kRun);
+    EXPECT_EQ(rig.loop().last().displacement, frozen);
+  }
+}
+
 class BadSampleReaction : public ::testing::TestWithParam<std::pair<FaultKind, Trigger>> {};
 
 TEST_P(BadSampleReaction, SafeAfterBadSamplePeriodsConsecutiveBadSamples) {

@@ -87,7 +87,7 @@ const std::string& heartbeat_line() {
 std::string controller_toml() {
   return "[loop]\nrate = 25.0\n[backends]\nlvdt = \"can\"\ndriver = \"can\"\nlines = \"gpio\"\n"
          "[can]\ninterface = \"vcan0\"\n[gpio]\nchip = \"gpiochip0\"\n"
-         "[safety]\noverrun_limit = 1000000\nrecovery_periods = 10\n";
+         "[safety]\noverrun_limit = 1000000\nrecovery_periods = 10\nfrozen_periods = 4\n";
 }
 
 const mrd::firmware::ControllerConfig& controller() {
@@ -256,8 +256,8 @@ TEST_F(HilVm, CanFaultsTripTheDocumentedReactions) {
                           "[faults.counter]\nkind = \"bad_counter\"\nstart = 6.5\nduration = 0.4\n"
                           "[faults.busoff]\nkind = \"bus_off\"\nstart = 8.0\nduration = 0.1\n"
                           "[faults.frozen]\nkind = \"lvdt_frozen\"\nstart = 9.8\nduration = 0.5\n",
-                          10.9);
-  expect_clean_run(r, 10.9, kRate);
+                          11.3);
+  expect_clean_run(r, 11.3, kRate);
   expect_first_run(r, safety());
   ASSERT_NE(r.plant_output.find("the first command"), std::string::npos) << r.plant_output;
   // RUN again after recovery_periods good periods from the fault's end (a driver fault leaves
@@ -323,24 +323,26 @@ TEST_F(HilVm, CanFaultsTripTheDocumentedReactions) {
   EXPECT_GE(r.fault_time(r.telemetry[resumed]), 8.0 + hold_off + (safety().recovery_periods - 1) * kPeriod)
       << transitions(r);
 
-  // A frozen LVDT: its frames keep coming, fresh, with one value. The firmware has no
-  // plausibility check, so it stays in control on the frozen displacement while the rig moves.
-  std::size_t frozen_rows = 0;
-  double frozen_value = 0.0;
-  for (const auto& row : r.telemetry) {
-    const double t = r.fault_time(row);
-    if (t < 9.8 + static_cast<double>(kSlack) * kPeriod || t >= 10.3) continue;
-    EXPECT_TRUE(row.in_control()) << transitions(r);
-    if (frozen_rows++ == 0) frozen_value = row.displacement;
-    EXPECT_EQ(row.displacement, frozen_value);
-  }
-  EXPECT_GE(frozen_rows, 8u);
+  // A frozen LVDT: its frames keep coming, fresh, with one value. With frozen_periods = 4 the
+  // 5th repeat is frozen, a bad sample: SAFE (sample_frozen) at the bad_sample_periods-th.
+  const int repeats = safety().frozen_periods;
+  const std::size_t frozen = entry_into(r, SupervisorState::kSafe, 9.8);
+  ASSERT_LT(frozen, r.telemetry.size()) << transitions(r);
+  EXPECT_EQ(r.telemetry[frozen].trigger, Trigger::kSampleFrozen) << transitions(r);
+  EXPECT_EQ(run_length_before(r.telemetry, frozen, [](const TelemetryRow& x) { return x.sample == "frozen"; }),
+            static_cast<std::size_t>(safety().bad_sample_periods));
+  // The first frozen frame still differs from the value the loop held: it is no repeat.
+  EXPECT_LE(rows_since(r, 9.8, frozen), static_cast<std::size_t>(1 + repeats + safety().bad_sample_periods) + kSlack)
+      << transitions(r);
+  // The value it froze at is the one the loop held; the rig went on moving.
+  const double frozen_value = r.telemetry[frozen].displacement;
   double moved = 0.0;
   for (std::size_t i = 0; i < r.plant_log.time.size(); ++i) {
     const double t = r.plant_log.time[i] - r.fault_origin;
     if (t >= 9.8 && t < 10.3) moved = std::max(moved, std::fabs(r.plant_log.displacement[i] - frozen_value));
   }
   EXPECT_GT(moved, 0.005) << "the rig did not move while the LVDT was frozen";
+  expect_back_in_run(frozen, 10.3);
 
   expect_table4_followed(r);
 }

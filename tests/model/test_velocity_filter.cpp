@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -15,6 +16,46 @@ TEST(VelocityFilter, TracksARampWithoutLag) {
   double v = 0.0;
   for (int i = 0; i < 2000; ++i) v = f.update(0.05 * i * 1e-3);
   EXPECT_NEAR(v, 0.05, 1e-9);
+}
+
+// A bus polled on its own clock delivers samples 0.6 or 1.2 ms apart to a 1 ms loop.
+TEST(VelocityFilter, TracksARampSampledAtUnevenIntervalsAtTheirOwnIntervals) {
+  VelocityFilter own(1e-3, 20.0), fixed(1e-3, 20.0);
+  double t = 0.0, v_own = 0.0, v_fixed = 0.0, fixed_lo = 1.0, fixed_hi = -1.0;
+  for (int i = 0; i < 3000; ++i) {
+    const double interval = i % 2 == 0 ? 0.6e-3 : 1.2e-3;
+    t += interval;
+    v_own = own.update(0.05 * t, interval);
+    v_fixed = fixed.update(0.05 * t);
+    if (i > 2000) {
+      fixed_lo = std::min(fixed_lo, v_fixed);
+      fixed_hi = std::max(fixed_hi, v_fixed);
+    }
+  }
+  EXPECT_NEAR(v_own, 0.05, 1e-9);
+  EXPECT_NEAR(own.velocity_after(0.5e-3), 0.05, 1e-9);  // no acceleration on a ramp
+  // The loop period's gains take the 0.9 ms mean interval for 1 ms: 10 % slow, and wavering.
+  EXPECT_NEAR(0.5 * (fixed_lo + fixed_hi), 0.045, 0.001);
+  EXPECT_GT(fixed_hi - fixed_lo, 1e-4);
+}
+
+TEST(VelocityFilter, CarriesTheVelocityForwardAtTheTrackedAcceleration) {
+  VelocityFilter f(1e-3, 20.0);
+  for (int i = 0; i < 3000; ++i) {
+    const double t = i * 1e-3;
+    f.update(0.5 * 2.0 * t * t);  // 2 m/s^2 from rest
+  }
+  EXPECT_NEAR(f.acceleration(), 2.0, 1e-6);
+  EXPECT_NEAR(f.velocity_after(1e-3) - f.velocity(), 2e-3, 1e-8);
+}
+
+TEST(VelocityFilter, IgnoresANonPositiveIntervalOnceItIsPrimed) {
+  VelocityFilter f(1e-3, 20.0);
+  f.update(0.0, 0.0);  // a first sample primes the tracker whatever its interval
+  const double v = f.update(1e-4, 1e-3);
+  EXPECT_GT(v, 0.0);
+  EXPECT_EQ(f.update(5.0, 0.0), v);
+  EXPECT_EQ(f.update(5.0, -1e-3), v);
 }
 
 TEST(VelocityFilter, TracksThePapersSineWithSmallErrorUnderLvdtNoise) {

@@ -25,6 +25,16 @@ Bounds make_bounds(std::initializer_list<std::pair<double, double>> ranges) {
 // fitted coefficients say what that does to viscosity and yield.
 constexpr double kNominalRise = 20.0;  // [K]
 
+// log10 of the field gain [turns/m]: within 1.5 decades of the starting coil's.
+std::pair<double, double> field_gain_range(const model::DamperModel& start) {
+  const double g = std::log10(start.circuit.turns / start.circuit.effective_length);
+  return {g - 1.5, g + 1.5};
+}
+
+void set_field_gain(model::DamperModel& m, double log10_gain) {
+  m.circuit.turns = std::pow(10.0, log10_gain) * m.circuit.effective_length;
+}
+
 }  // namespace
 
 SeriesScales series_scales(const FitSeries& s) {
@@ -56,18 +66,18 @@ SeriesScales series_scales(const FitSeries& s) {
 }
 
 ParameterSpace base_space(const model::DamperModel& origin, const model::DamperModel& start,
-                          const SeriesScales& scales) {
+                          const SeriesScales& scales, FieldGain gain) {
   ParameterSpace space;
   space.name = "base";
   space.origin = origin;
   const double v_lo = std::log10(1e-3 * scales.speed);
   const double v_hi = std::log10(0.5 * scales.speed);
-  if (scales.current_varies) {
-    const double gain = std::log10(start.circuit.turns / start.circuit.effective_length);
+  if (scales.current_varies && gain == FieldGain::kFitted) {
+    const auto g = field_gain_range(start);
     space.parameters = {"log10 field gain [turns/m]", "log10 sign velocity [m/s]"};
-    space.bounds = make_bounds({{gain - 1.5, gain + 1.5}, {v_lo, v_hi}});
+    space.bounds = make_bounds({g, {v_lo, v_hi}});
     space.edit = [](model::DamperModel m, const Point& p) {
-      m.circuit.turns = std::pow(10.0, p[0]) * m.circuit.effective_length;
+      set_field_gain(m, p[0]);
       m.geometry.sign_velocity_scale = std::pow(10.0, p[1]);
       return m;
     };
@@ -82,13 +92,29 @@ ParameterSpace base_space(const model::DamperModel& origin, const model::DamperM
   return space;
 }
 
-Point base_coordinates(const model::DamperModel& m, const SeriesScales& scales) {
+Point base_coordinates(const model::DamperModel& m, const SeriesScales& scales, FieldGain gain) {
   const double v = std::log10(m.geometry.sign_velocity_scale);
-  if (!scales.current_varies) return Point::Constant(1, v);
+  if (!scales.current_varies || gain == FieldGain::kKept) return Point::Constant(1, v);
   Point p(2);
   p << std::log10(m.circuit.turns / m.circuit.effective_length), v;
   return p;
 }
+
+ParameterSpace field_gain_space(const model::DamperModel& origin, const model::DamperModel& start) {
+  ParameterSpace space;
+  space.name = "field gain";
+  space.origin = origin;
+  space.parameters = {"log10 field gain [turns/m]"};
+  space.bounds = make_bounds({field_gain_range(start)});
+  space.with_spring = origin.effects.gas_spring.enabled;
+  space.edit = [](model::DamperModel m, const Point& p) {
+    set_field_gain(m, p[0]);
+    return m;
+  };
+  return space;
+}
+
+bool changes_induction(std::string_view effect) { return effect == "coil_lag"; }
 
 ParameterSpace effect_space(const std::string& name, const model::DamperModel& model,
                             const SeriesScales& scales) {

@@ -2,6 +2,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "model/damper_model.hpp"
@@ -29,10 +30,21 @@ SeriesScales series_scales(const FitSeries& series);
 //   log10 of the sign regularisation velocity v_s [m/s] of Eq. 11.
 // With the linear terms (force scale, viscous coefficient) this is the lumped equivalent the
 // docs describe: the J-A material's shape is kept, its scale in current and force is fitted.
+// With FieldGain::kKept the gain stays the origin's, so every point shares the origin's B.
+enum class FieldGain { kFitted, kKept };
 ParameterSpace base_space(const model::DamperModel& origin, const model::DamperModel& start,
-                          const SeriesScales& scales);
+                          const SeriesScales& scales, FieldGain gain = FieldGain::kFitted);
 // The base coordinates of `model` in that space.
-Point base_coordinates(const model::DamperModel& model, const SeriesScales& scales);
+Point base_coordinates(const model::DamperModel& model, const SeriesScales& scales,
+                       FieldGain gain = FieldGain::kFitted);
+
+// The field gain alone, the rest of `origin` kept (its gas spring's F0 + k x refitted among the
+// linear terms when it has one): the magnetic step of a refinement that otherwise shares B.
+ParameterSpace field_gain_space(const model::DamperModel& origin, const model::DamperModel& start);
+
+// Whether the effect changes the gap induction B for a given current (only a coil lag does):
+// such an effect moves what the field gain absorbed, and its trials cannot share a B trace.
+bool changes_induction(std::string_view effect);
 
 // The candidate effect `name` (model::kEffectNames) added to `model`, over the parameters
 // identifiable from a run (docs/CLOSING-THE-LOOP.md lists them and their ranges).

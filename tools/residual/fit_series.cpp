@@ -22,6 +22,16 @@ void check_run(const RecordedRun& run, const FitSeriesOptions& options) {
                      "give the driver gain (--amps-per-volt)");
 }
 
+// Sample i of `from`, every channel, at the end of `to`.
+void append_sample(FitSeries& to, const FitSeries& from, std::size_t i) {
+  to.displacement.push_back(from.displacement[i]);
+  to.velocity.push_back(from.velocity[i]);
+  to.current.push_back(from.current[i]);
+  to.force.push_back(from.force[i]);
+  if (!from.temperature.empty()) to.temperature.push_back(from.temperature[i]);
+  to.validation.push_back(from.validation[i]);
+}
+
 }  // namespace
 
 FitSeries make_fit_series(const std::vector<RecordedRun>& runs, const FitSeriesOptions& options) {
@@ -76,7 +86,6 @@ FitSeries decimate(const FitSeries& series, std::size_t wanted, double min_rate)
   out.notes = series.notes;
   std::vector<std::size_t> ends(series.run_starts.begin() + 1, series.run_starts.end());
   ends.push_back(series.size());
-  const bool with_temperature = !series.temperature.empty();
   for (std::size_t r = 0; r < ends.size(); ++r) {
     const double rate = 1.0 / series.run_periods[r];
     const std::size_t factor = std::clamp<std::size_t>(
@@ -87,12 +96,31 @@ FitSeries decimate(const FitSeries& series, std::size_t wanted, double min_rate)
     for (std::size_t from = series.run_starts[r]; from < ends[r]; from += factor) {
       const std::size_t to = std::min(from + factor, ends[r]);
       const std::size_t mid = from + (to - from) / 2;
-      out.displacement.push_back(series.displacement[mid]);
-      out.velocity.push_back(series.velocity[mid]);
-      out.current.push_back(series.current[mid]);
-      out.force.push_back(series.force[mid]);
-      if (with_temperature) out.temperature.push_back(series.temperature[mid]);
-      out.validation.push_back(series.validation[mid]);
+      append_sample(out, series, mid);
+    }
+  }
+  return out;
+}
+
+FitSeries spread_windows(const FitSeries& series, std::size_t max_samples, std::size_t count) {
+  count = std::max<std::size_t>(count, 1);
+  if (series.size() <= max_samples || max_samples < count) return series;
+  FitSeries out;
+  out.notes = series.notes;
+  const std::size_t length = max_samples / count;
+  for (std::size_t w = 0; w < count; ++w) {
+    const std::size_t centre = (2 * w + 1) * series.size() / (2 * count);
+    const auto run = static_cast<std::size_t>(
+        std::upper_bound(series.run_starts.begin(), series.run_starts.end(), centre) - series.run_starts.begin() - 1);
+    const std::size_t run_begin = series.run_starts[run];
+    const std::size_t run_end = run + 1 < series.run_starts.size() ? series.run_starts[run + 1] : series.size();
+    const std::size_t span = std::min(length, run_end - run_begin);
+    const std::size_t from = std::clamp(centre - std::min(centre, span / 2), run_begin, run_end - span);
+    out.run_starts.push_back(out.size());
+    out.run_periods.push_back(series.run_periods[run]);
+    out.sample_period = w == 0 ? series.run_periods[run] : std::min(out.sample_period, series.run_periods[run]);
+    for (std::size_t i = from; i < from + span; ++i) {
+      append_sample(out, series, i);
     }
   }
   return out;

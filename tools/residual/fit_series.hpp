@@ -51,6 +51,13 @@ FitSeries make_fit_series(const std::vector<RecordedRun>& runs, const FitSeriesO
 // switched current more than the samples left out do.
 FitSeries decimate(const FitSeries& series, std::size_t factor, double min_rate);
 
+// At most `max_samples` of the series as `count` windows spread evenly over it, each a run of
+// its own (inside one source run, with that run's period and validation flags): where a global
+// search explores before a local one refines on the whole series. A J-A pass costs per current
+// switch, not per sample, so only fewer switches make it cheaper; decimation keeps them all.
+// The series itself when it is no longer than `max_samples`.
+FitSeries spread_windows(const FitSeries& series, std::size_t max_samples, std::size_t count = 8);
+
 // The factor that brings the series to at most `max_samples`.
 std::size_t decimation_factor(const FitSeries& series, std::size_t max_samples);
 

@@ -46,7 +46,7 @@ bool InductionTrace::serves(const model::DamperModel& m) const {
 void predict_force(const model::DamperModel& model, const FitSeries& series,
                    std::vector<double>& force, const InductionTrace* trace) {
   force.resize(series.size());
-  if (trace != nullptr && trace->serves(model)) {
+  if (trace != nullptr && trace->induction().size() == series.size() && trace->serves(model)) {
     const std::vector<double>& B = trace->induction();
     run_observer(model, series, [&](model::Observer& o, std::size_t i) {
       force[i] = o.step_at_induction(series.displacement[i], series.velocity[i], B[i]).force;
@@ -287,7 +287,7 @@ FittedModel refine_space(const ParameterSpace& space, const FitSeries& series, c
     std::iota(order.begin(), order.end(), std::size_t{0});
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return fx[a] < fx[b]; });
     const std::size_t best = order.front(), worst = order.back(), second = order[order.size() - 2];
-    if (fx[worst] - fx[best] <= 1e-7 * std::fabs(fx[best])) break;
+    if (fx[worst] - fx[best] <= 1e-5 * std::fabs(fx[best])) break;
     Point centroid = Point::Zero(n);
     for (std::size_t i = 0; i + 1 < order.size(); ++i) centroid += x[order[i]];
     centroid /= static_cast<double>(n);

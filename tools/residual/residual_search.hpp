@@ -27,6 +27,10 @@ struct ResidualOptions {
   // min_fit_rate); every reported error is evaluated on the full series.
   std::size_t max_fit_samples = 100000;
   double min_fit_rate = 200.0;  // [Hz]
+  // The swarms whose trials integrate J-A (the base model's, coil_lag's) explore on at most this
+  // many samples of the fitting series, in windows spread over it (spread_windows); the
+  // Nelder-Mead after each refines on the whole fitting series.
+  std::size_t max_swarm_samples = 24000;
   int evaluations_per_parameter = 40;
   unsigned threads = 0;  // 0: every core
   std::uint64_t seed = 1;
