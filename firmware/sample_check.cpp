@@ -1,5 +1,6 @@
 #include "firmware/sample_check.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -29,7 +30,8 @@ SampleCheck SampleChecker::check(const std::optional<hal::DisplacementSample>& s
   if (!std::isfinite(sample->value)) return SampleCheck::kNotFinite;
   if (sample->value < min_ || sample->value > max_) return SampleCheck::kOutOfRange;
   if (frozen_periods_ > 0) {
-    repeats_ = has_value_ && sample->value == held_ ? repeats_ + 1 : 0;
+    // Capped: a sensor frozen for weeks must not count its way back to fresh.
+    repeats_ = has_value_ && sample->value == held_ ? std::min(repeats_ + 1, frozen_periods_ + 1) : 0;
     if (repeats_ > frozen_periods_) return SampleCheck::kFrozen;
   }
   held_interval_ = has_value_ ? sample->timestamp - held_at_ : hal::Timestamp{};

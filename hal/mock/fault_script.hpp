@@ -13,7 +13,7 @@ namespace mrd::hal::mock {
 enum class FaultKind : std::uint8_t {
   kSensorTimeout,      // no sample at all
   kStaleValue,         // the previous sample again: same value, timestamp and sequence
-  kFrozenValue,        // new samples (sequence, timestamp) that keep the value from the fault's start
+  kFrozenValue,        // new samples (sequence, timestamp) that keep the last value before the fault
   kNotANumber,         // value NaN, flagged valid (the sensor does not know)
   kOutOfRange,         // value = parameter [m], flagged valid
   kCorruptedFrame,     // flagged corrupted (bad checksum/decode), not valid

@@ -70,6 +70,9 @@ class RandomFaults {
 
 SoakFigures run_soak(std::uint64_t cycles, std::uint32_t seed) {
   auto config = firmware::load_default_config().config;
+  // The default leaves the frozen check off; the simulated rig never rests, so a frozen-value
+  // fault trips it here like any other bad sample.
+  config.safety.frozen_periods = 50;
   const hal::Timestamp period = config.period();
   const auto& safety = config.safety;
   // The supervisor may need a few periods past recovery_periods: the first fresh sample after

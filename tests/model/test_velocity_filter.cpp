@@ -1,5 +1,7 @@
 #include "model/velocity_filter.hpp"
 
+#include "model/observer.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -56,6 +58,25 @@ TEST(VelocityFilter, IgnoresANonPositiveIntervalOnceItIsPrimed) {
   EXPECT_GT(v, 0.0);
   EXPECT_EQ(f.update(5.0, 0.0), v);
   EXPECT_EQ(f.update(5.0, -1e-3), v);
+}
+
+// The observer on bus samples: each new sample tracked at its interval, the velocity carried
+// to the step by the sample's age at the tracked acceleration, never more than two periods.
+TEST(ObserverSampleTiming, CarriesTheVelocityByTheSampleAgeUpToTwoPeriods) {
+  const double T = 1e-3, a = 2.0;
+  mrd::model::Observer o(mrd::model::DamperModel{}, {T, 20.0});
+  EXPECT_EQ(o.step(0.0, {false, 0.0, 1e6}, 0.0).velocity, 0.0);  // no sample yet: nothing to carry
+  double x = 0.0;
+  for (int i = 0; i < 3000; ++i) {
+    const double t = i * T;
+    x = 0.5 * a * t * t;
+    o.step(x, {true, T, 0.0}, 0.0);
+  }
+  const double tracked = o.estimate().velocity;
+  EXPECT_NEAR(tracked, a * 2999 * T, 1e-6);
+  EXPECT_NEAR(o.step(x, {false, 0.0, 0.5 * T}, 0.0).velocity, tracked + a * 0.5 * T, 1e-6);
+  EXPECT_NEAR(o.step(x, {false, 0.0, 10.0 * T}, 0.0).velocity, tracked + a * 2.0 * T, 1e-6);
+  EXPECT_NEAR(o.step(x, {false, 0.0, -T}, 0.0).velocity, tracked, 1e-6);  // stamped after the step
 }
 
 TEST(VelocityFilter, TracksThePapersSineWithSmallErrorUnderLvdtNoise) {

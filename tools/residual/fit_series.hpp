@@ -55,7 +55,8 @@ FitSeries decimate(const FitSeries& series, std::size_t factor, double min_rate)
 // its own (inside one source run, with that run's period and validation flags): where a global
 // search explores before a local one refines on the whole series. A J-A pass costs per current
 // switch, not per sample, so only fewer switches make it cheaper; decimation keeps them all.
-// The series itself when it is no longer than `max_samples`.
+// The series itself when it is no longer than `max_samples` (or `max_samples` < `count`). A run
+// shorter than a window is taken whole, so two windows can repeat one short run.
 FitSeries spread_windows(const FitSeries& series, std::size_t max_samples, std::size_t count = 8);
 
 // The factor that brings the series to at most `max_samples`.

@@ -160,7 +160,9 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
     const auto round_induction = std::make_shared<const InductionTrace>(current, fit_series);
     // Those that change B first: each is one long serial chain of J-A passes, which the other
     // workers' candidates then fill around. The last task is the null candidate: the round's
-    // model refined exactly as a candidate is, with no effect added.
+    // model refined as a candidate that leaves B alone is, with no effect added. (coil_lag's
+    // refinement moves the gain jointly with more evaluations; on a model without a lag it is
+    // judged against this lighter refinement.)
     const RefinePass kCandidatePasses[] = {{15, 0.02, 12}, {8, 0.02}};
     const auto refine_candidate = [&](const std::vector<std::string>& effects, const Point& from,
                                       std::int64_t& spent) {
