@@ -5,7 +5,7 @@
 namespace mrd::model {
 
 Observer::Observer(const DamperModel& model, const ObserverSettings& settings)
-    : max_extrapolation_(2.0 * settings.sample_period),
+    : sample_period_(settings.sample_period),
       magnetics_(model.jiles_atherton, model.circuit, model.integration),
       yield_stress_(model.fluid),
       damper_(model.geometry, model.fluid.viscosity),
@@ -13,16 +13,12 @@ Observer::Observer(const DamperModel& model, const ObserverSettings& settings)
       effects_(model.effects, settings.sample_period) {}
 
 ObserverEstimate Observer::step(double displacement, double coil_current) {
-  const double velocity = velocity_filter_.update(displacement);
-  if (effects_.active()) [[unlikely]] {
-    return step_with_effects(displacement, velocity, coil_current, true);
-  }
-  return step(displacement, velocity, coil_current);
+  return step(displacement, SampleTiming{true, sample_period_, 0.0}, coil_current);
 }
 
 ObserverEstimate Observer::step(double displacement, const SampleTiming& timing, double coil_current) {
   if (timing.fresh) velocity_filter_.update(displacement, timing.interval);
-  const double velocity = velocity_filter_.velocity_after(std::clamp(timing.age, 0.0, max_extrapolation_));
+  const double velocity = velocity_filter_.velocity_after(std::clamp(timing.age, 0.0, 2.0 * sample_period_));
   if (effects_.active()) [[unlikely]] {
     return step_with_effects(displacement, velocity, coil_current, true);
   }

@@ -37,7 +37,7 @@ class Observer {
  public:
   Observer(const DamperModel& model, const ObserverSettings& settings = {});
 
-  // Displacement only: velocity comes from the VelocityFilter.
+  // Displacement only, one sample a period: velocity comes from the VelocityFilter.
   ObserverEstimate step(double displacement, double coil_current);
   // Displacement only, at its own timing: the VelocityFilter tracks each new sample at its real
   // interval and the velocity is carried to this step by the sample's age (at most two
@@ -73,7 +73,7 @@ class Observer {
   // Everything after B with at least one effect on.
   ObserverEstimate force_with_effects(const PredictedMotion& now, double B);
 
-  double max_extrapolation_;  // [s]
+  double sample_period_;  // [s]
   JilesAtherton magnetics_;
   YieldStress yield_stress_;
   BinghamDamper damper_;

@@ -15,20 +15,14 @@ VelocityFilter::Gains VelocityFilter::gains_for(double cutoff_frequency, double 
 VelocityFilter::VelocityFilter(double sample_period, double cutoff_frequency)
     : period_(sample_period),
       cutoff_(cutoff_frequency),
-      nominal_(gains_for(cutoff_frequency, sample_period)),
-      last_interval_(sample_period),
-      last_(nominal_) {}
+      nominal_(gains_for(cutoff_frequency, sample_period)) {}
 
 double VelocityFilter::update(double displacement) { return track(displacement, period_, nominal_); }
 
 double VelocityFilter::update(double displacement, double interval) {
   if (!primed_ || interval == period_) return track(displacement, period_, nominal_);
   if (!(interval > 0.0)) return velocity_;
-  if (interval != last_interval_) {  // one exp per changed interval
-    last_ = gains_for(cutoff_, interval);
-    last_interval_ = interval;
-  }
-  return track(displacement, interval, last_);
+  return track(displacement, interval, gains_for(cutoff_, interval));
 }
 
 double VelocityFilter::track(double displacement, double T, const Gains& gains) {

@@ -36,9 +36,7 @@ class VelocityFilter {
 
   double period_;
   double cutoff_;
-  Gains nominal_;
-  double last_interval_;  // of `last_`, the gains of the latest uneven interval
-  Gains last_;
+  Gains nominal_;  // of the sample period
   double position_ = 0.0;
   double velocity_ = 0.0;
   double acceleration_ = 0.0;

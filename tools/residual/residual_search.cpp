@@ -60,11 +60,11 @@ struct RefinePass {
 // model without a lag leave B alone: their trials share one B trace, and the gain is refined
 // on its own between passes, since such an effect can still take over force the gain had
 // absorbed (on the Table 4 schedule the current follows the displacement, so a spring's k x
-// looks like a field).
+// looks like a field). `induction`, when given, is a B trace the first pass may already use.
 FittedModel refine_jointly(const model::DamperModel& origin, const std::vector<std::string>& effects,
                            const Point& effect_start, std::initializer_list<RefinePass> passes,
                            const model::DamperModel& start, const SeriesScales& scales, const FitSeries& series,
-                           std::int64_t& evaluations) {
+                           std::int64_t& evaluations, std::shared_ptr<const InductionTrace> induction = nullptr) {
   const auto lags = [&](std::string_view name) {
     return changes_induction(name) && model::is_enabled(origin.effects, name);
   };
@@ -77,7 +77,12 @@ FittedModel refine_jointly(const model::DamperModel& origin, const std::vector<s
   for (const RefinePass& pass : passes) {
     ParameterSpace joint = base_space(fit.model, start, scales, gain);
     for (const auto& name : effects) joint = combine(joint, effect_space(name, fit.model, scales));
-    if (gain == FieldGain::kKept) joint.induction = std::make_shared<const InductionTrace>(fit.model, series);
+    if (gain == FieldGain::kKept) {
+      // A new trace only when the gain step moved the magnetics.
+      if (!induction || !induction->serves(fit.model))
+        induction = std::make_shared<const InductionTrace>(fit.model, series);
+      joint.induction = induction;
+    }
     const Point base = base_coordinates(fit.model, scales, gain);
     Point from(joint.bounds.dimension());
     from << base, fit.theta;
@@ -167,7 +172,7 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
     const auto refine_candidate = [&](const std::vector<std::string>& effects, const Point& from,
                                       std::int64_t& spent) {
       return refine_jointly(current, effects, from, {kCandidatePasses[0], kCandidatePasses[1]}, options.start,
-                            scales, fit_series, spent);
+                            scales, fit_series, spent, round_induction);
     };
     std::vector<std::size_t> order(candidates.size() + 1);
     std::iota(order.begin(), order.end(), std::size_t{0});
