@@ -3,21 +3,21 @@
 // seconds of data replayed per second.
 #include <benchmark/benchmark.h>
 
-#include "firmware/config_loader.hpp"
+#include "config/config_loader.hpp"
 #include "tools/replay/replay.hpp"
-#include "tools/replay/run_reader.hpp"
+#include "record/run_reader.hpp"
 
 namespace {
 
 using namespace mrd::tools;
 
 void replay_file(benchmark::State& state, const char* file, const char* columns, bool from_name) {
-  RunReadOptions read;
-  read.columns = parse_column_mapping(columns);
+  mrd::record::RunReadOptions read;
+  read.columns = mrd::record::parse_column_mapping(columns);
   read.current_from_name = from_name;
-  const RecordedRun run = read_recorded_run(std::string(MRD_DATA_DIR) + "/" + file, read);
+  const mrd::record::RecordedRun run = mrd::record::read_recorded_run(std::string(MRD_DATA_DIR) + "/" + file, read);
   ReplayOptions options;
-  options.law = mrd::firmware::load_default_config().config.law;
+  options.law = mrd::config::load_default_config().config.law;
   options.amps_per_volt = 0.5;
   for (auto _ : state) benchmark::DoNotOptimize(replay(run, options));
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(run.size()));

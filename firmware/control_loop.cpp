@@ -12,8 +12,8 @@ hal::Timestamp to_period(double seconds) {
 }
 }  // namespace
 
-ControlLoop::ControlLoop(const ControlLawConfig& law, const SupervisorConfig& safety,
-                         HalDevices devices, TelemetryQueue* telemetry, int telemetry_decimation)
+ControlLoop::ControlLoop(const control::ControlLawConfig& law, const control::SupervisorConfig& safety,
+                         HalDevices devices, runtime::TelemetryQueue* telemetry, int telemetry_decimation)
     : law_(law),
       supervisor_(safety),
       checker_(safety.displacement_min, safety.displacement_max,
@@ -34,13 +34,13 @@ std::uint32_t ControlLoop::skipped_periods(hal::Timestamp now) const {
   return periods > 1 ? static_cast<std::uint32_t>(periods - 1) : 0u;
 }
 
-const TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
+const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
   const std::uint32_t skipped = skipped_periods(now);
   overruns_ += skipped;
   last_release_ = now;
 
   // 1-2. The newest sample, judged.
-  const SampleCheck check = checker_.check(hal_.lvdt.latest(), now);
+  const control::SampleCheck check = checker_.check(hal_.lvdt.latest(), now);
   const std::optional<bool> fault = hal_.lines.driver_fault();
   const std::optional<hal::CurrentReading> measured = hal_.driver.measured();
   double coil = last_setpoint_;
@@ -52,10 +52,10 @@ const TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
   }
 
   // 3-4. Schedule, observer, compensator, on the last good displacement.
-  const ControlOutput out = law_.step(checker_.held_value(), checker_.timing(check, now), coil);
+  const control::ControlOutput out = law_.step(checker_.held_value(), checker_.timing(check, now), coil);
 
   // 5. The supervisor.
-  const SupervisorDecision d =
+  const control::SupervisorDecision d =
       supervisor_.step({check, fault, disagrees, write_failed_, skipped}, now);
 
   // 6. Setpoint and lines.
@@ -64,7 +64,7 @@ const TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
   write_outputs(d, setpoint);
 
   // 7. Telemetry.
-  record_ = TelemetryRecord{cycles_,
+  record_ = runtime::TelemetryRecord{cycles_,
                             now,
                             checker_.held_value(),
                             measured ? measured->value : std::numeric_limits<double>::quiet_NaN(),
@@ -85,7 +85,7 @@ const TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
   return record_;
 }
 
-void ControlLoop::write_outputs(const SupervisorDecision& d, double setpoint) {
+void ControlLoop::write_outputs(const control::SupervisorDecision& d, double setpoint) {
   const hal::IoStatus written = hal_.driver.write_setpoint(setpoint);
   write_failed_ = written != hal::IoStatus::kOk;
   if (write_failed_) {

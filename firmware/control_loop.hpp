@@ -2,12 +2,12 @@
 
 #include <cstdint>
 
-#include "firmware/control_law.hpp"
+#include "control/control_law.hpp"
 #include "firmware/hal_devices.hpp"
-#include "firmware/sample_check.hpp"
-#include "firmware/supervisor.hpp"
-#include "firmware/telemetry_queue.hpp"
-#include "firmware/telemetry_record.hpp"
+#include "control/sample_check.hpp"
+#include "control/supervisor.hpp"
+#include "runtime/telemetry_queue.hpp"
+#include "runtime/telemetry_record.hpp"
 #include "hal/clock.hpp"
 #include "hal/status.hpp"
 
@@ -24,17 +24,17 @@ namespace mrd::firmware {
 class ControlLoop {
  public:
   // The period is the control law's sample period. `telemetry` may be null (no telemetry).
-  ControlLoop(const ControlLawConfig& law, const SupervisorConfig& safety, HalDevices devices,
-              TelemetryQueue* telemetry = nullptr, int telemetry_decimation = 1);
+  ControlLoop(const control::ControlLawConfig& law, const control::SupervisorConfig& safety, HalDevices devices,
+              runtime::TelemetryQueue* telemetry = nullptr, int telemetry_decimation = 1);
 
-  const TelemetryRecord& step(hal::Timestamp now);
+  const runtime::TelemetryRecord& step(hal::Timestamp now);
   // The next cycle goes to SAFE (fail-safe current, enable as configured) and stays there.
   void request_shutdown() { supervisor_.request_shutdown(); }
 
-  [[nodiscard]] const Supervisor& supervisor() const { return supervisor_; }
-  [[nodiscard]] const ControlLaw& law() const { return law_; }
-  [[nodiscard]] SupervisorState state() const { return supervisor_.state(); }
-  [[nodiscard]] const TelemetryRecord& last() const { return record_; }
+  [[nodiscard]] const control::Supervisor& supervisor() const { return supervisor_; }
+  [[nodiscard]] const control::ControlLaw& law() const { return law_; }
+  [[nodiscard]] control::SupervisorState state() const { return supervisor_.state(); }
+  [[nodiscard]] const runtime::TelemetryRecord& last() const { return record_; }
   [[nodiscard]] std::uint64_t cycles() const { return cycles_; }
   [[nodiscard]] std::uint64_t overruns() const { return overruns_; }
   [[nodiscard]] std::uint64_t failed_setpoint_writes() const { return failed_setpoint_writes_; }
@@ -43,19 +43,19 @@ class ControlLoop {
 
  private:
   std::uint32_t skipped_periods(hal::Timestamp now) const;
-  void write_outputs(const SupervisorDecision& d, double setpoint);
+  void write_outputs(const control::SupervisorDecision& d, double setpoint);
 
-  ControlLaw law_;
-  Supervisor supervisor_;
-  SampleChecker checker_;
+  control::ControlLaw law_;
+  control::Supervisor supervisor_;
+  control::SampleChecker checker_;
   HalDevices hal_;
-  TelemetryQueue* telemetry_;
+  runtime::TelemetryQueue* telemetry_;
   std::uint64_t decimation_;
   hal::Timestamp period_;
   double fail_safe_current_;
   double current_tolerance_;
 
-  TelemetryRecord record_;
+  runtime::TelemetryRecord record_;
   std::uint64_t cycles_ = 0;
   std::uint64_t overruns_ = 0;
   std::uint64_t failed_setpoint_writes_ = 0;

@@ -7,26 +7,26 @@
 #include <vector>
 
 #include "firmware/control_loop.hpp"
-#include "firmware/csv_telemetry_writer.hpp"
+#include "runtime/csv_telemetry_writer.hpp"
 #include "firmware/hal_set.hpp"
-#include "firmware/loop_report.hpp"
-#include "firmware/rt_runner.hpp"
-#include "firmware/rt_setup.hpp"
-#include "firmware/simulated_rig.hpp"
+#include "hal/mock/mock_motion.hpp"
+#include "runtime/loop_report.hpp"
+#include "runtime/rt_runner.hpp"
+#include "runtime/rt_setup.hpp"
 
 namespace mrd::firmware {
 
 namespace {
 
-void print_stats(std::FILE* out, const LoopStatistics& stats, const ControlLoop& loop,
+void print_stats(std::FILE* out, const runtime::LoopStatistics& stats, const ControlLoop& loop,
                  const HalSet& hal, bool histograms) {
-  std::string text = "--- mrd-controller statistics ---\n" + format_loop_statistics(stats);
+  std::string text = "--- mrd-controller statistics ---\n" + runtime::format_loop_statistics(stats);
   if (histograms) {
-    text += format_histogram("wake-up latency", stats.wake_latency);
-    text += format_histogram("execution time", stats.execution);
+    text += runtime::format_histogram("wake-up latency", stats.wake_latency);
+    text += runtime::format_histogram("execution time", stats.execution);
   }
   text += "supervisor: " + std::string(to_string(loop.state())) + ", transitions:\n";
-  text += format_transitions(loop.supervisor().transitions());
+  text += runtime::format_transitions(loop.supervisor().transitions());
   text += hal.counters();
   std::fputs(text.c_str(), out);
   std::fflush(out);
@@ -34,10 +34,10 @@ void print_stats(std::FILE* out, const LoopStatistics& stats, const ControlLoop&
 
 }  // namespace
 
-int run_controller(const ControllerConfig& config, const RunOptions& options,
+int run_controller(const config::ControllerConfig& config, const RunOptions& options,
                    ControllerSignals& signals, std::FILE* out, const sigset_t* unblock) {
-  RtSetupResult rt;
-  lock_memory(config.realtime, rt);
+  runtime::RtSetupResult rt;
+  runtime::lock_memory(config.realtime, rt);
 
   const hal::MonotonicClock clock;
   HalSet hal(config, clock);
@@ -46,13 +46,13 @@ int run_controller(const ControllerConfig& config, const RunOptions& options,
     return 1;
   }
   const std::vector<hal::IoThread*> io_threads = hal.io_threads();
-  make_io_threads_realtime(config.realtime, io_threads, rt);
+  runtime::make_io_threads_realtime(config.realtime, io_threads, rt);
 
-  std::unique_ptr<TelemetryQueue> queue;
-  std::unique_ptr<CsvTelemetryWriter> writer;
+  std::unique_ptr<runtime::TelemetryQueue> queue;
+  std::unique_ptr<runtime::CsvTelemetryWriter> writer;
   if (config.telemetry.enabled()) {
-    queue = std::make_unique<TelemetryQueue>(static_cast<std::size_t>(config.telemetry.ring_size));
-    writer = std::make_unique<CsvTelemetryWriter>(*queue, config.telemetry.flush_period);
+    queue = std::make_unique<runtime::TelemetryQueue>(static_cast<std::size_t>(config.telemetry.ring_size));
+    writer = std::make_unique<runtime::CsvTelemetryWriter>(*queue, config.telemetry.flush_period);
     if (const auto started = writer->start(config.telemetry.resolved_path()); !started.ok) {
       std::fprintf(stderr, "mrd-controller: %s\n", started.error.c_str());
       return 1;
@@ -60,15 +60,16 @@ int run_controller(const ControllerConfig& config, const RunOptions& options,
   }
 
   ControlLoop loop(config.law, config.safety, hal.devices(), queue.get(), config.telemetry.decimation);
-  std::optional<SimulatedRig> rig;
-  if (config.backends.lvdt == DeviceBackend::kMock) {
-    rig.emplace(config.simulation, config.law.damper, 1.0 / config.rate, *hal.mock());
-  }
   hal::mock::MockHal* mock = hal.mock();
+  std::optional<hal::mock::MockMotion> motion;
+  if (config.backends.lvdt == config::DeviceBackend::kMock) {
+    const auto& s = config.simulation;
+    motion.emplace(s.amplitude, s.frequency, s.lvdt_noise, s.seed);
+  }
 
   const auto cycle = [&](hal::Timestamp release) {
-    if (rig) {
-      rig->advance(release);
+    if (motion) {
+      motion->advance(*mock, release);
     } else if (mock != nullptr) {
       mock->clock.set(release);
     }
@@ -77,20 +78,20 @@ int run_controller(const ControllerConfig& config, const RunOptions& options,
 
   std::fprintf(out, "mrd-controller: %.0f Hz, lvdt=%s driver=%s lines=%s%s%s\n", config.rate,
                to_string(config.backends.lvdt).data(), to_string(config.backends.driver).data(),
-               to_string(config.backends.lines).data(), rig ? ", simulated rig" : "",
+               to_string(config.backends.lines).data(), motion ? ", mock LVDT on the simulation sine" : "",
                config.telemetry.enabled() ? (", telemetry " + config.telemetry.resolved_path()).c_str() : "");
 
-  LoopStatistics stats;
+  runtime::LoopStatistics stats;
   std::atomic<bool> stop{false};
   std::atomic<bool> setup_done{false};
   std::atomic<bool> finished{false};
-  const RealTimeRunner runner(config.period());
+  const runtime::RealTimeRunner runner(config.period());
   const auto max_cycles = static_cast<std::uint64_t>(options.duration_s * config.rate + 0.5);
 
   std::thread rt_thread([&] {
-    make_current_thread_realtime(config.realtime, rt);
+    runtime::make_current_thread_realtime(config.realtime, rt);
     setup_done.store(true);
-    RealTimeRunner r = runner;
+    runtime::RealTimeRunner r = runner;
     const hal::Timestamp next = r.run(cycle, stop, max_cycles, stats);
     // Stop: one more cycle, in SAFE, so the driver holds the fail-safe current before exit.
     loop.request_shutdown();

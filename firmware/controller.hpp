@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <cstdio>
 
-#include "firmware/controller_config.hpp"
+#include "config/controller_config.hpp"
 
 namespace mrd::firmware {
 
@@ -26,7 +26,7 @@ struct RunOptions {
 // fail-safe current before anything is torn down. Returns the process exit code.
 // `unblock`, if given, is the set of signals the caller blocked so that the threads started
 // here inherit it; it is unblocked on the calling thread once they run.
-int run_controller(const ControllerConfig& config, const RunOptions& options,
+int run_controller(const config::ControllerConfig& config, const RunOptions& options,
                    ControllerSignals& signals, std::FILE* out, const sigset_t* unblock = nullptr);
 
 }  // namespace mrd::firmware

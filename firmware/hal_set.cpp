@@ -28,11 +28,11 @@ class HalSet::CanEnableLines final : public hal::DigitalLines {
 namespace {
 
 template <typename Device>
-Device* choose(DeviceBackend which, Device* mock, Device* modbus, Device* can) {
+Device* choose(config::DeviceBackend which, Device* mock, Device* modbus, Device* can) {
   switch (which) {
-    case DeviceBackend::kMock: return mock;
-    case DeviceBackend::kModbus: return modbus;
-    case DeviceBackend::kCan: return can;
+    case config::DeviceBackend::kMock: return mock;
+    case config::DeviceBackend::kModbus: return modbus;
+    case config::DeviceBackend::kCan: return can;
   }
   return nullptr;
 }
@@ -53,21 +53,21 @@ void append_counters(std::string& out, std::string_view name, const Snapshot& co
 
 }  // namespace
 
-HalSet::HalSet(const ControllerConfig& config, const hal::Clock& clock) {
+HalSet::HalSet(const config::ControllerConfig& config, const hal::Clock& clock) {
   const auto& b = config.backends;
   if (b.any_mock()) mock_ = std::make_unique<hal::mock::MockHal>();
-  if (b.uses(DeviceBackend::kModbus)) {
+  if (b.uses(config::DeviceBackend::kModbus)) {
     modbus_ = std::make_unique<hal::modbus::ModbusBackend>(config.modbus, clock);
   }
-  if (b.uses(DeviceBackend::kCan)) can_ = std::make_unique<hal::can::SocketCanBackend>(config.can, clock);
-  if (b.lines == LinesBackend::kGpio) gpio_ = std::make_unique<hal::gpio::GpiodLines>(config.gpio);
+  if (b.uses(config::DeviceBackend::kCan)) can_ = std::make_unique<hal::can::SocketCanBackend>(config.can, clock);
+  if (b.lines == config::LinesBackend::kGpio) gpio_ = std::make_unique<hal::gpio::GpiodLines>(config.gpio);
 
   lvdt_ = choose<hal::DisplacementSource>(b.lvdt, mock_ ? &mock_->lvdt : nullptr, modbus_.get(),
                                           can_.get());
   driver_ = choose<hal::CurrentDriver>(b.driver, mock_ ? &mock_->driver : nullptr, modbus_.get(),
                                        can_.get());
   lines_ = gpio_ ? static_cast<hal::DigitalLines*>(gpio_.get()) : &mock_->lines;
-  if (b.driver == DeviceBackend::kCan) {
+  if (b.driver == config::DeviceBackend::kCan) {
     can_enable_ = std::make_unique<CanEnableLines>(*lines_, *can_);
     lines_ = can_enable_.get();
   }

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "firmware/controller_config.hpp"
+#include "config/controller_config.hpp"
 #include "firmware/hal_devices.hpp"
 #include "hal/can/socketcan_backend.hpp"
 #include "hal/clock.hpp"
@@ -20,7 +20,7 @@ namespace mrd::firmware {
 // `clock`, which must be the loop's clock (CLOCK_MONOTONIC in the controller).
 class HalSet {
  public:
-  HalSet(const ControllerConfig& config, const hal::Clock& clock);
+  HalSet(const config::ControllerConfig& config, const hal::Clock& clock);
   ~HalSet();
   HalSet(const HalSet&) = delete;
   HalSet& operator=(const HalSet&) = delete;

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <string>
 
-#include "firmware/config_loader.hpp"
+#include "config/config_loader.hpp"
 #include "firmware/controller.hpp"
 
 namespace {
@@ -28,7 +28,7 @@ void install_handlers() {
   sigaction(SIGUSR1, &sa, nullptr);
 }
 
-int print_report(const mrd::firmware::LoadedConfig& loaded, const std::string& name) {
+int print_report(const mrd::config::LoadedConfig& loaded, const std::string& name) {
   std::fputs(loaded.report().c_str(), loaded.ok() ? stdout : stderr);
   if (!loaded.ok()) {
     std::fprintf(stderr, "%s: %zu error(s)\n", name.c_str(), loaded.errors.size());
@@ -62,19 +62,19 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   if (print_default) {
-    std::fwrite(mrd::firmware::default_config_text().data(), 1,
-                mrd::firmware::default_config_text().size(), stdout);
+    std::fwrite(mrd::config::default_config_text().data(), 1,
+                mrd::config::default_config_text().size(), stdout);
     return 0;
   }
   if (!check_path.empty()) {
-    const auto loaded = mrd::firmware::load_config_file(check_path);
+    const auto loaded = mrd::config::load_config_file(check_path);
     const int rc = print_report(loaded, check_path);
     if (rc == 0) std::printf("%s: ok\n", check_path.c_str());
     return rc;
   }
 
-  auto loaded = config_path.empty() ? mrd::firmware::load_default_config()
-                                    : mrd::firmware::load_config_file(config_path);
+  auto loaded = config_path.empty() ? mrd::config::load_default_config()
+                                    : mrd::config::load_config_file(config_path);
   if (print_report(loaded, config_path.empty() ? "embedded config" : config_path) != 0) return 1;
 
   auto config = loaded.config;
@@ -90,7 +90,7 @@ int main(int argc, char** argv) {
     config.backends = {};  // all mock
     config.telemetry.path.clear();
   }
-  const auto checked = mrd::firmware::revalidate(config, "command line");
+  const auto checked = mrd::config::revalidate(config, "command line");
   if (print_report(checked, "command line") != 0) return 1;
 
   // The loop, bus and telemetry threads inherit a mask without these signals, so only the

@@ -23,7 +23,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
     }
     if (!std::isfinite(curve.rms_B()) || !std::isfinite(curve.max_abs_H())) std::abort();
-  } catch (const mrd::tools::InputError&) {
+  } catch (const mrd::record::InputError&) {
   }
   return 0;
 }

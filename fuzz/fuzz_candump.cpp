@@ -8,22 +8,22 @@
 #include <string_view>
 
 #include "fuzz/run_invariants.hpp"
-#include "tools/csv.hpp"
-#include "tools/replay/candump_log.hpp"
+#include "record/csv.hpp"
+#include "record/candump_log.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;
-  mrd::tools::RunReadOptions options;
+  mrd::record::RunReadOptions options;
   options.can.use_feedback = (data[0] & 1) != 0;
   if ((data[0] & 2) != 0) options.current = 0.25;
   const std::string_view text(reinterpret_cast<const char*>(data) + 1, size - 1);
   try {
-    const auto log = mrd::tools::parse_candump(text, "fuzz.log", options);
+    const auto log = mrd::record::parse_candump(text, "fuzz.log", options);
     mrd::fuzz::check_run(log.run);
     const auto& s = log.stats;
     if (s.lvdt_frames < log.run.size()) std::abort();
     if (s.dropped() > 0 && s.first_dropped_line == 0) std::abort();
-  } catch (const mrd::tools::InputError&) {
+  } catch (const mrd::record::InputError&) {
   }
   return 0;
 }

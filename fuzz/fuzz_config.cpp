@@ -6,12 +6,12 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "firmware/config_loader.hpp"
+#include "config/config_loader.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
-  const auto loaded = mrd::firmware::load_config_text(text, "fuzz.toml");
-  if (loaded.ok() && !mrd::firmware::revalidate(loaded.config, "fuzz").ok()) std::abort();
+  const auto loaded = mrd::config::load_config_text(text, "fuzz.toml");
+  if (loaded.ok() && !mrd::config::revalidate(loaded.config, "fuzz").ok()) std::abort();
   if (!loaded.ok() && loaded.report().empty()) std::abort();
   return 0;
 }

@@ -7,24 +7,24 @@
 #include <string_view>
 
 #include "fuzz/run_invariants.hpp"
-#include "tools/csv.hpp"
-#include "tools/replay/run_columns.hpp"
-#include "tools/replay/run_csv.hpp"
+#include "record/csv.hpp"
+#include "record/run_columns.hpp"
+#include "record/run_csv.hpp"
 
 namespace {
 
-mrd::tools::RunReadOptions options_for(std::uint8_t selector) {
-  mrd::tools::RunReadOptions options;
+mrd::record::RunReadOptions options_for(std::uint8_t selector) {
+  mrd::record::RunReadOptions options;
   switch (selector % 4) {
     case 1:
-      options.columns = mrd::tools::parse_column_mapping("t=time_s,D=displacement_cm,Y=voltage_V,F=force_N");
+      options.columns = mrd::record::parse_column_mapping("t=time_s,D=displacement_cm,Y=voltage_V,F=force_N");
       break;
     case 2:
-      options.columns = mrd::tools::parse_column_mapping("1=time_s,2=displacement_mm,3=-force_kN");
+      options.columns = mrd::record::parse_column_mapping("1=time_s,2=displacement_mm,3=-force_kN");
       options.current = 0.5;
       break;
     case 3:
-      options.columns = mrd::tools::parse_column_mapping("2=displacement_mm");
+      options.columns = mrd::record::parse_column_mapping("2=displacement_mm");
       options.current = 1.0;
       options.sample_rate = 1000.0;
       break;
@@ -41,8 +41,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const auto options = options_for(data[0]);
   const std::string_view text(reinterpret_cast<const char*>(data) + 1, size - 1);
   try {
-    mrd::fuzz::check_run(mrd::tools::parse_run_csv(text, "fuzz.csv", options));
-  } catch (const mrd::tools::InputError&) {
+    mrd::fuzz::check_run(mrd::record::parse_run_csv(text, "fuzz.csv", options));
+  } catch (const mrd::record::InputError&) {
   }
   return 0;
 }

@@ -4,13 +4,13 @@
 #include <cstdlib>
 #include <vector>
 
-#include "tools/replay/recorded_run.hpp"
+#include "record/recorded_run.hpp"
 
 namespace mrd::fuzz {
 
 // What every run a reader accepts must satisfy; a violation aborts, which libFuzzer reports
 // as a crash with the input that caused it.
-inline void check_run(const tools::RecordedRun& run) {
+inline void check_run(const record::RecordedRun& run) {
   const auto column_ok = [&](const std::vector<double>& column, bool required) {
     if (column.empty()) return !required || run.time.empty();
     if (column.size() != run.time.size()) return false;

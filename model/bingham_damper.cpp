@@ -5,8 +5,8 @@
 
 namespace mrd::model {
 
-ParameterReport validate(const DamperGeometry& g) {
-  ParameterReport report;
+ValidationReport validate(const DamperGeometry& g) {
+  ValidationReport report;
   report.require_positive("piston_area", g.piston_area);
   report.require_positive("pole_length", g.pole_length);
   report.require_positive("gap", g.gap);

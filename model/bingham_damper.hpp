@@ -1,6 +1,6 @@
 #pragma once
 
-#include "model/parameter_check.hpp"
+#include "common/validation_report.hpp"
 
 namespace mrd::model {
 
@@ -15,7 +15,7 @@ struct DamperGeometry {
   double sign_velocity_scale = 1e-3;  // [m/s]
 };
 
-ParameterReport validate(const DamperGeometry& geometry);
+ValidationReport validate(const DamperGeometry& geometry);
 
 // Eq. 11-12 (Bingham): F = (3 Ap L / hd) tau_y sgn(v) + (12 eta L Ap^2 / (pi D hd^3)) v.
 // Eq. 12 writes the shear rate, but its viscous coefficient has units N s/m, so the rate it

@@ -6,8 +6,8 @@
 
 namespace mrd::model {
 
-ParameterReport validate(const CurrentScheduleTable& t) {
-  ParameterReport report;
+ValidationReport validate(const CurrentScheduleTable& t) {
+  ValidationReport report;
   for (std::size_t i = 0; i < t.thresholds.size(); ++i) {
     const std::string field = "thresholds[" + std::to_string(i) + "]";
     report.require_positive(field, t.thresholds[i]);

@@ -3,7 +3,7 @@
 #include <array>
 #include <cstddef>
 
-#include "model/parameter_check.hpp"
+#include "common/validation_report.hpp"
 
 namespace mrd::model {
 
@@ -17,7 +17,7 @@ struct CurrentScheduleTable {
   double band = 2e-4;
 };
 
-ParameterReport validate(const CurrentScheduleTable& table);
+ValidationReport validate(const CurrentScheduleTable& table);
 
 // The schedule with memory. Rising |x| switches at the exact Table 4 edges; falling |x| must
 // cross the edge by `band` first. An LVDT with noise smaller than the band that sits on an

@@ -3,8 +3,8 @@
 namespace mrd::model {
 
 namespace {
-ParameterReport validate(const JilesAthertonSettings& s) {
-  ParameterReport report;
+ValidationReport validate(const JilesAthertonSettings& s) {
+  ValidationReport report;
   report.require_in_range("max_field_step_fraction", s.max_field_step_fraction, 1e-6, 1.0, false);
   if (s.max_substeps < 1) report.error("max_substeps", "must be at least 1");
   report.require_in_range("denominator_floor", s.denominator_floor, 1e-9, 1.0, true);
@@ -12,8 +12,8 @@ ParameterReport validate(const JilesAthertonSettings& s) {
 }
 }  // namespace
 
-ParameterReport validate(const DamperModel& model) {
-  ParameterReport report;
+ValidationReport validate(const DamperModel& model) {
+  ValidationReport report;
   report.merge(validate(model.jiles_atherton), "jiles_atherton");
   report.merge(validate(model.circuit), "circuit");
   report.merge(validate(model.integration), "integration");

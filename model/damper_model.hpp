@@ -21,6 +21,6 @@ struct DamperModel {
 };
 
 // All issues of all parts, with field paths such as "jiles_atherton.c".
-ParameterReport validate(const DamperModel& model);
+ValidationReport validate(const DamperModel& model);
 
 }  // namespace mrd::model

@@ -4,8 +4,8 @@
 
 namespace mrd::model {
 
-ParameterReport validate(const JilesAthertonParams& p) {
-  ParameterReport report;
+ValidationReport validate(const JilesAthertonParams& p) {
+  ValidationReport report;
   report.require_positive("Ms", p.Ms);
   report.require_positive("a", p.a);
   report.require_non_negative("alpha", p.alpha);
@@ -19,8 +19,8 @@ ParameterReport validate(const JilesAthertonParams& p) {
   return report;
 }
 
-ParameterReport validate(const MagneticCircuit& circuit) {
-  ParameterReport report;
+ValidationReport validate(const MagneticCircuit& circuit) {
+  ValidationReport report;
   report.require_positive("turns", circuit.turns);
   report.require_positive("effective_length", circuit.effective_length);
   return report;

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "model/parameter_check.hpp"
+#include "common/validation_report.hpp"
 
 namespace mrd::model {
 
@@ -35,7 +35,7 @@ struct MagneticCircuit {
 };
 
 // Errors for values outside physics, a warning for alpha*Ms/(3a) >= 1.
-ParameterReport validate(const JilesAthertonParams& p);
-ParameterReport validate(const MagneticCircuit& circuit);
+ValidationReport validate(const JilesAthertonParams& p);
+ValidationReport validate(const MagneticCircuit& circuit);
 
 }  // namespace mrd::model

@@ -11,8 +11,8 @@
 
 namespace mrd::model {
 
-ParameterReport validate(const MrFluid& fluid) {
-  ParameterReport report;
+ValidationReport validate(const MrFluid& fluid) {
+  ValidationReport report;
   report.require_positive("viscosity", fluid.viscosity);
   report.require_in_range("volume_fraction", fluid.volume_fraction, 0.0, 0.74, false);
   report.require_positive("particle_diameter", fluid.particle_diameter);

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "model/parameter_check.hpp"
+#include "common/validation_report.hpp"
 
 namespace mrd::model {
 
@@ -12,7 +12,7 @@ struct MrFluid {
   double particle_saturation = 2.1;    // Ms in Eq. 13, mu0*Ms of the particles [T] (docs/MODEL.md)
 };
 
-ParameterReport validate(const MrFluid& fluid);
+ValidationReport validate(const MrFluid& fluid);
 
 // Eq. 13: yield stress [Pa] from the gap induction |B| [T].
 //   tau_y = 146960 B^0.5811 V^1.706 rho^0.2 Ms^0.8 + 1083.2 V - 287.03

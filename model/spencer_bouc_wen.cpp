@@ -24,8 +24,8 @@ SpencerBoucWenParams SpencerBoucWenParams::dyke_prototype() {
   return p;
 }
 
-ParameterReport validate(const SpencerBoucWenParams& p) {
-  ParameterReport report;
+ValidationReport validate(const SpencerBoucWenParams& p) {
+  ValidationReport report;
   report.require_non_negative("c0a", p.c0a);
   report.require_non_negative("c0b", p.c0b);
   report.require_non_negative("k0", p.k0);

@@ -2,7 +2,7 @@
 
 #include <utility>
 
-#include "model/parameter_check.hpp"
+#include "common/validation_report.hpp"
 
 namespace mrd::model {
 
@@ -40,7 +40,7 @@ struct SpencerBoucWenParams {
   static SpencerBoucWenParams dyke_prototype();
 };
 
-ParameterReport validate(const SpencerBoucWenParams& params);
+ValidationReport validate(const SpencerBoucWenParams& params);
 
 struct SpencerBoucWenState {
   double y = 0.0;  // internal displacement [m]

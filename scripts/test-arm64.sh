@@ -2,16 +2,17 @@
 # The arm64 build and its tests under emulation (qemu-aarch64-static, docs/DEPLOY.md): sets up the
 # cross environment (root, first time), cross-builds with the arm64 preset and runs every test but
 # the slow and bench labels. Extra arguments go to ctest (e.g. -L unit, -R 'model\.').
-#   --quick   CI's share: build only mrd-controller and the model, firmware and hal unit tests
+#   --quick   CI's share: build only mrd-controller and the unit tests of the layers it is made of
 #             (with the allocation counts and the soak), and run those.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 targets=()
 if [[ ${1:-} == --quick ]]; then
   shift
-  targets=(--target mrd-controller mrd_model_tests mrd_firmware_tests mrd_hal_tests mrd_soak_tests
-           mrd_allocation_tests mrd_firmware_allocation_tests mrd_hal_allocation_tests)
-  set -- -R '^(model|firmware|hal|realtime)\.' "$@"
+  targets=(--target mrd-controller mrd_common_tests mrd_model_tests mrd_hal_tests mrd_control_tests
+           mrd_runtime_tests mrd_config_tests mrd_firmware_tests mrd_soak_tests mrd_allocation_tests
+           mrd_firmware_allocation_tests mrd_hal_allocation_tests)
+  set -- -R '^(common|model|hal|control|runtime|config|firmware|realtime)\.' "$@"
 fi
 bash scripts/setup-cross-arm64.sh
 cmake --preset arm64

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "tools/csv.hpp"
+#include "record/csv.hpp"
 #include "tools/identification/identification_study.hpp"
 #include "tools/identification/identify_report.hpp"
 #include "tools/identification/start_point.hpp"
@@ -17,13 +17,13 @@ using namespace mrd::tools;
 
 // "Ms,a,alpha,k,c" -> Point; throws CLI::ValidationError naming the option.
 Point parse_parameter_list(const std::string& option, const std::string& text) {
-  const auto fields = split_csv_line(text);
+  const auto fields = mrd::record::split_csv_line(text);
   if (fields.size() != kParameterCount) {
     throw CLI::ValidationError(option, "expected 5 numbers Ms,a,alpha,k,c, got '" + text + "'");
   }
   Point x(kParameterCount);
   for (int j = 0; j < kParameterCount; ++j) {
-    const auto value = parse_finite(fields[static_cast<std::size_t>(j)]);
+    const auto value = mrd::record::parse_finite(fields[static_cast<std::size_t>(j)]);
     if (!value) {
       throw CLI::ValidationError(option, std::string(kParameterNames[static_cast<std::size_t>(j)]) +
                                              ": '" + std::string(fields[static_cast<std::size_t>(j)]) +
@@ -46,8 +46,8 @@ void apply_bound(Bounds& bounds, const std::string& text) {
   for (int j = 0; j < kParameterCount; ++j) {
     if (kParameterNames[static_cast<std::size_t>(j)] == name) index = j;
   }
-  const auto lo = parse_finite(std::string_view(text).substr(eq + 1, colon - eq - 1));
-  const auto hi = parse_finite(std::string_view(text).substr(colon + 1));
+  const auto lo = mrd::record::parse_finite(std::string_view(text).substr(eq + 1, colon - eq - 1));
+  const auto hi = mrd::record::parse_finite(std::string_view(text).substr(colon + 1));
   if (index < 0) throw CLI::ValidationError("--bounds", "unknown parameter '" + name + "'");
   if (!lo || !hi || !(*lo <= *hi)) {
     throw CLI::ValidationError("--bounds", name + ": need numbers lo <= hi in '" + text + "'");
@@ -256,7 +256,7 @@ int main(int argc, char** argv) {
     return 0;
   } catch (const CLI::Error& e) {
     return app.exit(e);
-  } catch (const InputError& e) {
+  } catch (const mrd::record::InputError& e) {
     std::fprintf(stderr, "mrd-identify: %s\n", e.what());
     return 2;
   }

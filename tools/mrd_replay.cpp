@@ -6,13 +6,13 @@
 #include <cstdio>
 #include <ctime>
 
-#include "firmware/config_loader.hpp"
-#include "tools/csv.hpp"
-#include "tools/replay/candump_log.hpp"
+#include "config/config_loader.hpp"
+#include "record/csv.hpp"
+#include "record/candump_log.hpp"
 #include "tools/replay/replay.hpp"
 #include "tools/replay/replay_report.hpp"
 #include "tools/replay/run_options_cli.hpp"
-#include "tools/replay/run_reader.hpp"
+#include "record/run_reader.hpp"
 
 namespace {
 
@@ -58,13 +58,13 @@ int main(int argc, char** argv) {
   if (!config) return 1;
   replay_options.law = config->config.law;
   try {
-    const RunReadOptions read = run_options.read_options(*config);
+    const mrd::record::RunReadOptions read = run_options.read_options(*config);
     replay_options.amps_per_volt = run_options.amps_per_volt();
     if (zero_phase_option->count() > 0) replay_options.zero_phase_cutoff = zero_phase;
 
-    const RecordedRun run = read_recorded_run(run_path, read);
+    const mrd::record::RecordedRun run = mrd::record::read_recorded_run(run_path, read);
     if (!candump_path.empty() &&
-        !write_text_file(candump_path, format_candump(run, replay_options.amps_per_volt, read.can))) {
+        !mrd::record::write_text_file(candump_path, mrd::record::format_candump(run, replay_options.amps_per_volt, read.can))) {
       std::fprintf(stderr, "mrd-replay: cannot write %s\n", candump_path.c_str());
       return 1;
     }
@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
 
     std::fputs(replay_summary(context).c_str(), stdout);
     int status = 0;
-    if (!json_path.empty() && !write_text_file(json_path, replay_json(context))) {
+    if (!json_path.empty() && !mrd::record::write_text_file(json_path, replay_json(context))) {
       std::fprintf(stderr, "mrd-replay: cannot write %s\n", json_path.c_str());
       status = 1;
     }
@@ -93,7 +93,7 @@ int main(int argc, char** argv) {
       }
     }
     return status;
-  } catch (const InputError& e) {
+  } catch (const mrd::record::InputError& e) {
     std::fprintf(stderr, "mrd-replay: %s\n", e.what());
     return 2;
   }

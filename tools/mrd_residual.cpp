@@ -6,10 +6,10 @@
 #include <cstdio>
 #include <sstream>
 
-#include "firmware/config_loader.hpp"
-#include "tools/csv.hpp"
+#include "config/config_loader.hpp"
+#include "record/csv.hpp"
 #include "tools/replay/run_options_cli.hpp"
-#include "tools/replay/run_reader.hpp"
+#include "record/run_reader.hpp"
 #include "tools/residual/residual_report.hpp"
 #include "tools/residual/residual_search.hpp"
 #include "tools/residual/spencer_reference.hpp"
@@ -71,16 +71,16 @@ int main(int argc, char** argv) {
     }
   }
   try {
-    const RunReadOptions read = run_options.read_options(*config);
+    const mrd::record::RunReadOptions read = run_options.read_options(*config);
     series_options.amps_per_volt = run_options.amps_per_volt();
-    std::vector<RecordedRun> runs;
-    for (const auto& path : run_paths) runs.push_back(read_recorded_run(path, read));
+    std::vector<mrd::record::RecordedRun> runs;
+    for (const auto& path : run_paths) runs.push_back(mrd::record::read_recorded_run(path, read));
     const FitSeries series = make_fit_series(runs, series_options);
     const ResidualResult result = find_missing_effects(series, options);
 
     std::fputs(residual_summary(runs, result).c_str(), stdout);
     if (spencer) {
-      if (runs.size() != 1) throw InputError("--reference-spencer-dyke takes one run");
+      if (runs.size() != 1) throw mrd::record::InputError("--reference-spencer-dyke takes one run");
       const ForceError s = spencer_dyke_reference(runs.front(), series);
       const ForceError ours = force_error(series.force, result.predicted_after);
       std::printf("reference, Spencer 1997 (published parameters): RMS %.4g N, max %.4g N, NRMSE %.4g; "
@@ -88,15 +88,15 @@ int main(int argc, char** argv) {
                   s.rms, s.max, s.nrmse, result.before.all / ours.measured_range, ours.nrmse);
     }
     int status = 0;
-    if (!json_path.empty() && !write_text_file(json_path, residual_json(result))) {
+    if (!json_path.empty() && !mrd::record::write_text_file(json_path, residual_json(result))) {
       std::fprintf(stderr, "mrd-residual: cannot write %s\n", json_path.c_str());
       status = 1;
     }
     if (!config_out.empty()) {
       const std::string text = run_options.config_path().empty()
-                                   ? std::string(mrd::firmware::default_config_text())
-                                   : read_text_file(run_options.config_path());
-      if (!write_text_file(config_out, updated_config(text, result))) {
+                                   ? std::string(mrd::config::default_config_text())
+                                   : mrd::record::read_text_file(run_options.config_path());
+      if (!mrd::record::write_text_file(config_out, updated_config(text, result))) {
         std::fprintf(stderr, "mrd-residual: cannot write %s\n", config_out.c_str());
         status = 1;
       }
@@ -107,7 +107,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "mrd-residual: plot skipped: %s\n", why.c_str());
     }
     return status;
-  } catch (const InputError& e) {
+  } catch (const mrd::record::InputError& e) {
     std::fprintf(stderr, "mrd-residual: %s\n", e.what());
     return 2;
   }

@@ -78,7 +78,7 @@ int main(int argc, char** argv) {
   options.profile.amplitude = amplitude_mm * 1e-3;
   options.controller.observer.sample_period = 1.0 / rate_hz;
   if (bipolar) options.controller.limits.min_current = -options.controller.limits.max_current;
-  const auto report = mrd::firmware::validate(options.controller);
+  const auto report = mrd::control::validate(options.controller);
   if (!report.ok()) {
     std::fprintf(stderr, "mrd-table4-run: invalid configuration\n%s", report.to_string().c_str());
     return 2;

@@ -33,7 +33,7 @@ Table4RunResult run_table4(const Table4RunOptions& options) {
   const auto samples = static_cast<long>(std::llround(options.cycles / options.profile.frequency / dt));
   const auto first_cycle = static_cast<long>(std::llround(1.0 / options.profile.frequency / dt));
 
-  firmware::ControlLaw law(options.controller);
+  control::ControlLaw law(options.controller);
   sim::DamperPlant plant(options.plant, options.lvdt_noise_rms, options.seed);
   const model::YieldStress yield_stress(options.plant.fluid);
   const model::BinghamDamper bingham(options.plant.geometry, options.plant.fluid.viscosity);
@@ -48,7 +48,7 @@ Table4RunResult run_table4(const Table4RunOptions& options) {
     const double x = options.profile.displacement(t);
     const double v = options.profile.velocity(t);
     const sim::PlantReading reading = plant.step(x, v, coil_current);
-    const firmware::ControlOutput out = law.step(reading.lvdt_displacement, coil_current);
+    const control::ControlOutput out = law.step(reading.lvdt_displacement, coil_current);
 
     Table4Sample s;
     s.time = t;

@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "firmware/control_law.hpp"
+#include "control/control_law.hpp"
 #include "model/damper_model.hpp"
 #include "sim/displacement_profile.hpp"
 
@@ -15,7 +15,7 @@ struct Table4RunOptions {
   int cycles = 3;               // the first is excluded from the error figures (virgin curve)
   double lvdt_noise_rms = 5e-6; // [m]
   unsigned seed = 1;
-  firmware::ControlLawConfig controller;
+  control::ControlLawConfig controller;
   model::DamperModel plant;     // the simulated damper's true physics
 };
 

@@ -5,9 +5,9 @@
 
 namespace mrd::hal::can {
 
-ConfigReport SocketCanConfig::validate() const {
+ValidationReport SocketCanConfig::validate() const {
   using namespace std::chrono_literals;
-  ConfigReport r;
+  ValidationReport r;
   r.check(!interface.empty() && interface.size() < IFNAMSIZ, "interface",
           "must be a network interface name of 1..15 characters");
   const std::uint32_t max_id = extended_ids ? CAN_EFF_MASK : CAN_SFF_MASK;

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "hal/can/can_codec.hpp"
-#include "hal/config_check.hpp"
+#include "common/validation_report.hpp"
 
 namespace mrd::hal::can {
 
@@ -21,7 +21,7 @@ struct SocketCanConfig {
   // Listen-only time after the controller is back from bus-off (see BusOffPolicy).
   std::chrono::milliseconds bus_off_hold_off{500};
 
-  [[nodiscard]] ConfigReport validate() const;  // field paths relative to the can table
+  [[nodiscard]] ValidationReport validate() const;  // field paths relative to the can table
 };
 
 }  // namespace mrd::hal::can

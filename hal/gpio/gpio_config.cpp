@@ -2,8 +2,8 @@
 
 namespace mrd::hal::gpio {
 
-ConfigReport GpioConfig::validate() const {
-  ConfigReport r;
+ValidationReport GpioConfig::validate() const {
+  ValidationReport r;
   r.check(!chip.empty(), "chip", "must name a GPIO chip (gpiochip0, /dev/gpiochip0, a label)");
   r.check(enable.offset >= 0, "enable.offset", "must be >= 0");
   r.check(fault.offset >= 0, "fault.offset", "must be >= 0");

@@ -3,7 +3,7 @@
 #include <string>
 #include <string_view>
 
-#include "hal/config_check.hpp"
+#include "common/validation_report.hpp"
 
 namespace mrd::hal::gpio {
 
@@ -23,7 +23,7 @@ struct GpioConfig {
   [[nodiscard]] std::string consumer(std::string_view role) const {
     return consumer_prefix + "-" + std::string(role);
   }
-  [[nodiscard]] ConfigReport validate() const;  // field paths relative to the gpio table
+  [[nodiscard]] ValidationReport validate() const;  // field paths relative to the gpio table
 };
 
 }  // namespace mrd::hal::gpio

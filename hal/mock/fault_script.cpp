@@ -30,8 +30,8 @@ const ScriptedFault* FaultScript::active(FaultKind kind, Timestamp now) const {
   return nullptr;
 }
 
-ConfigReport FaultScript::validate() const {
-  ConfigReport r;
+ValidationReport FaultScript::validate() const {
+  ValidationReport r;
   for (std::size_t i = 0; i < faults_.size(); ++i) {
     const auto& f = faults_[i];
     const std::string at = "faults[" + std::to_string(i) + "]";

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "hal/clock.hpp"
-#include "hal/config_check.hpp"
+#include "common/validation_report.hpp"
 
 namespace mrd::hal::mock {
 
@@ -55,7 +55,7 @@ class FaultScript {
     return active(kind, now) != nullptr;
   }
   [[nodiscard]] const std::vector<ScriptedFault>& faults() const { return faults_; }
-  [[nodiscard]] ConfigReport validate() const;  // fields "faults[i].end" etc.
+  [[nodiscard]] ValidationReport validate() const;  // fields "faults[i].end" etc.
 
  private:
   std::vector<ScriptedFault> faults_;

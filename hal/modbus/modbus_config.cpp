@@ -8,15 +8,15 @@ namespace {
 
 constexpr int kMaxAddress = 0xFFFF;
 
-void check_address(ConfigReport& r, std::string_view field, int address, const RegisterFormat& f) {
+void check_address(ValidationReport& r, std::string_view field, int address, const RegisterFormat& f) {
   const int last = address + static_cast<int>(word_count(f.type)) - 1;
   r.check(address >= 0 && last <= kMaxAddress, field, "must be in 0..65535 (all words of the value)");
 }
 
 }  // namespace
 
-ConfigReport RegisterMap::validate() const {
-  ConfigReport r;
+ValidationReport RegisterMap::validate() const {
+  ValidationReport r;
   check_address(r, "lvdt_address", lvdt_address, lvdt);
   r.merge(lvdt.validate(), "lvdt");
   check_address(r, "setpoint_address", setpoint_address, setpoint);
@@ -28,9 +28,9 @@ ConfigReport RegisterMap::validate() const {
   return r;
 }
 
-ConfigReport ModbusConfig::validate() const {
+ValidationReport ModbusConfig::validate() const {
   using namespace std::chrono_literals;
-  ConfigReport r;
+  ValidationReport r;
   if (transport == Transport::kTcp) {
     r.check(!tcp.host.empty(), "tcp.host", "must not be empty");
     r.check(tcp.port >= 1 && tcp.port <= 65535, "tcp.port", "must be in 1..65535");

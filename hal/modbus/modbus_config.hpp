@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <string>
 
-#include "hal/config_check.hpp"
+#include "common/validation_report.hpp"
 #include "hal/modbus/register_codec.hpp"
 
 namespace mrd::hal::modbus {
@@ -41,7 +41,7 @@ struct RegisterMap {
   RegisterFormat current_feedback{RegisterType::kInt16, WordOrder::kHighFirst, ByteOrder::kNormal,
                                   1e-3, 0.0};
 
-  [[nodiscard]] ConfigReport validate() const;
+  [[nodiscard]] ValidationReport validate() const;
 };
 
 struct ModbusConfig {
@@ -60,7 +60,7 @@ struct ModbusConfig {
 
   RegisterMap registers;
 
-  [[nodiscard]] ConfigReport validate() const;  // field paths relative to the modbus table
+  [[nodiscard]] ValidationReport validate() const;  // field paths relative to the modbus table
 };
 
 }  // namespace mrd::hal::modbus

@@ -69,8 +69,8 @@ std::uint32_t raw_bits(double raw, RegisterType type) {
 
 }  // namespace
 
-ConfigReport RegisterFormat::validate() const {
-  ConfigReport r;
+ValidationReport RegisterFormat::validate() const {
+  ValidationReport r;
   r.check(std::isfinite(scale) && scale != 0.0, "scale", "must be finite and non-zero");
   r.check(std::isfinite(offset), "offset", "must be finite");
   return r;

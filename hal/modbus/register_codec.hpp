@@ -6,7 +6,7 @@
 #include <span>
 #include <string_view>
 
-#include "hal/config_check.hpp"
+#include "common/validation_report.hpp"
 
 namespace mrd::hal::modbus {
 
@@ -31,7 +31,7 @@ struct RegisterFormat {
   double scale = 1.0;
   double offset = 0.0;
 
-  [[nodiscard]] ConfigReport validate() const;  // fields: "scale", "offset"
+  [[nodiscard]] ValidationReport validate() const;  // fields: "scale", "offset"
 };
 
 [[nodiscard]] constexpr std::size_t word_count(RegisterType t) {

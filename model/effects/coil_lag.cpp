@@ -4,8 +4,8 @@
 
 namespace mrd::model {
 
-ParameterReport validate(const CoilLagParams& p) {
-  ParameterReport report;
+ValidationReport validate(const CoilLagParams& p) {
+  ValidationReport report;
   report.require_in_range("time_constant", p.time_constant, 0.0, 10.0, false);
   return report;
 }

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "model/parameter_check.hpp"
+#include "common/validation_report.hpp"
 
 namespace mrd::model {
 
@@ -16,7 +16,7 @@ struct CoilLagParams {
   bool operator==(const CoilLagParams&) const = default;
 };
 
-ParameterReport validate(const CoilLagParams& params);
+ValidationReport validate(const CoilLagParams& params);
 
 // Exact zero-order-hold discretisation: a command held over one period T moves the current by
 // (1 - exp(-T/tau)) of the distance to it, whatever T/tau is, so the lag is stable and exact at

@@ -18,8 +18,8 @@ bool is_enabled(const EffectSet& effects, std::string_view name) {
   return flag != nullptr && *flag;
 }
 
-ParameterReport validate(const EffectSet& e) {
-  ParameterReport report;
+ValidationReport validate(const EffectSet& e) {
+  ValidationReport report;
   report.merge(validate(e.coil_lag), "coil_lag");
   report.merge(validate(e.preyield_hysteresis), "preyield_hysteresis");
   report.merge(validate(e.gas_spring), "gas_spring");

@@ -9,7 +9,7 @@
 #include "model/effects/sensor_delay.hpp"
 #include "model/effects/stroke_end_air.hpp"
 #include "model/effects/thermal_drift.hpp"
-#include "model/parameter_check.hpp"
+#include "common/validation_report.hpp"
 
 namespace mrd::model {
 
@@ -41,6 +41,6 @@ bool* enabled_flag(EffectSet& effects, std::string_view name);
 
 // Every effect's parameters, enabled or not (a disabled table with a bad value is still a bad
 // file), with field paths such as "coil_lag.time_constant".
-ParameterReport validate(const EffectSet& effects);
+ValidationReport validate(const EffectSet& effects);
 
 }  // namespace mrd::model

@@ -4,8 +4,8 @@
 
 namespace mrd::model {
 
-ParameterReport validate(const GasSpringParams& p) {
-  ParameterReport report;
+ValidationReport validate(const GasSpringParams& p) {
+  ValidationReport report;
   if (!std::isfinite(p.preload)) report.error("preload", "must be finite");
   if (!std::isfinite(p.stiffness)) report.error("stiffness", "must be finite");
   return report;

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "model/parameter_check.hpp"
+#include "common/validation_report.hpp"
 
 namespace mrd::model {
 
@@ -16,7 +16,7 @@ struct GasSpringParams {
   double stiffness = 0.0;  // k [N/m]
 };
 
-ParameterReport validate(const GasSpringParams& params);
+ValidationReport validate(const GasSpringParams& params);
 
 class GasSpring {
  public:

@@ -7,8 +7,8 @@ namespace mrd::model {
 
 double PreyieldHysteresisParams::z_max() const { return std::pow(A / (beta + gamma), 1.0 / n); }
 
-ParameterReport validate(const PreyieldHysteresisParams& p) {
-  ParameterReport report;
+ValidationReport validate(const PreyieldHysteresisParams& p) {
+  ValidationReport report;
   report.require_positive("A", p.A);
   report.require_positive("beta", p.beta);
   // -beta < gamma <= beta keeps z bounded (Ikhouane et al. 2007).

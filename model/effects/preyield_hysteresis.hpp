@@ -1,6 +1,6 @@
 #pragma once
 
-#include "model/parameter_check.hpp"
+#include "common/validation_report.hpp"
 
 namespace mrd::model {
 
@@ -31,7 +31,7 @@ struct PreyieldHysteresisParams {
   [[nodiscard]] double z_max() const;
 };
 
-ParameterReport validate(const PreyieldHysteresisParams& params);
+ValidationReport validate(const PreyieldHysteresisParams& params);
 
 // Integration. Within one period the velocity is taken as constant, so z follows
 //   dz/dx = A - s beta |z|^(n-1) z - gamma |z|^n,   s = sign(v), over dx = v T,

@@ -5,8 +5,8 @@
 
 namespace mrd::model {
 
-ParameterReport validate(const SensorDelayParams& p) {
-  ParameterReport report;
+ValidationReport validate(const SensorDelayParams& p) {
+  ValidationReport report;
   report.require_in_range("delay", p.delay, 0.0, kMaxSensorDelay, false);
   return report;
 }

@@ -2,7 +2,7 @@
 
 #include <array>
 
-#include "model/parameter_check.hpp"
+#include "common/validation_report.hpp"
 
 namespace mrd::model {
 
@@ -17,7 +17,7 @@ struct SensorDelayParams {
 
 inline constexpr double kMaxSensorDelay = 0.1;  // [s]
 
-ParameterReport validate(const SensorDelayParams& params);
+ValidationReport validate(const SensorDelayParams& params);
 
 // The sensor itself, for the simulated plant: a delay line of fixed capacity (no heap) with
 // linear interpolation between samples for a delay that is not a whole number of periods.

@@ -4,8 +4,8 @@
 
 namespace mrd::model {
 
-ParameterReport validate(const StrokeEndAirParams& p) {
-  ParameterReport report;
+ValidationReport validate(const StrokeEndAirParams& p) {
+  ValidationReport report;
   report.require_positive("threshold", p.threshold);
   report.require_in_range("depth", p.depth, 0.0, 1.0, false);
   report.require_positive("length", p.length);

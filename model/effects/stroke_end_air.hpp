@@ -1,6 +1,6 @@
 #pragma once
 
-#include "model/parameter_check.hpp"
+#include "common/validation_report.hpp"
 
 namespace mrd::model {
 
@@ -20,7 +20,7 @@ struct StrokeEndAirParams {
   double reversal_travel = 1e-4;   // travel back from an extreme that confirms a reversal [m]
 };
 
-ParameterReport validate(const StrokeEndAirParams& params);
+ValidationReport validate(const StrokeEndAirParams& params);
 
 // Reversals are found on the displacement, not on the sign of a velocity estimate: a noisy
 // velocity near zero would flip many times and re-arm the collapse each time. A reversal is

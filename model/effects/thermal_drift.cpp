@@ -13,8 +13,8 @@ double factor(TemperatureLaw law, double coefficient, double rise, double floor)
 }
 }  // namespace
 
-ParameterReport validate(const ThermalDriftParams& p) {
-  ParameterReport report;
+ValidationReport validate(const ThermalDriftParams& p) {
+  ValidationReport report;
   report.require_in_range("initial_temperature", p.initial_temperature, -80.0, 300.0, false);
   report.require_in_range("ambient_temperature", p.ambient_temperature, -80.0, 300.0, false);
   report.require_in_range("reference_temperature", p.reference_temperature, -80.0, 300.0, false);

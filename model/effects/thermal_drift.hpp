@@ -2,7 +2,7 @@
 
 #include <cstdint>
 
-#include "model/parameter_check.hpp"
+#include "common/validation_report.hpp"
 
 namespace mrd::model {
 
@@ -34,7 +34,7 @@ struct ThermalDriftParams {
   double min_factor = 0.05;              // [-], floor of both factors
 };
 
-ParameterReport validate(const ThermalDriftParams& params);
+ValidationReport validate(const ThermalDriftParams& params);
 
 // Exact discretisation for a power held over one period T:
 //   T_end = T_inf + (T - T_inf) exp(-T/tau_th),   T_inf = T_amb + P tau_th / C,

@@ -11,26 +11,26 @@
 #include <string>
 #include <vector>
 
-#include "firmware/loop_report.hpp"
-#include "firmware/rt_runner.hpp"
-#include "firmware/rt_setup.hpp"
+#include "runtime/loop_report.hpp"
+#include "runtime/rt_runner.hpp"
+#include "runtime/rt_setup.hpp"
 #include "sim/plant/can_node.hpp"
 #include "sim/plant/modbus_server.hpp"
 #include "sim/plant/plant_config.hpp"
 #include "sim/plant/rig.hpp"
 #include "sim/plant/run_log.hpp"
-#include "tools/csv.hpp"
+#include "record/csv.hpp"
 
 namespace {
 
 std::atomic<bool> g_stop{false};
 extern "C" void on_stop_signal(int) { g_stop.store(true); }
 
-void print_summary(std::FILE* out, const mrd::firmware::LoopStatistics& stats,
+void print_summary(std::FILE* out, const mrd::runtime::LoopStatistics& stats,
                    const mrd::plant::ModbusServer* modbus, const mrd::plant::CanNode* can,
                    const mrd::plant::RunLog& log, const std::string& log_path) {
   std::fprintf(out, "--- mrd-plant statistics ---\n%s",
-               mrd::firmware::format_loop_statistics(stats).c_str());
+               mrd::runtime::format_loop_statistics(stats).c_str());
   if (modbus != nullptr) {
     const auto c = modbus->counters();
     std::fprintf(out,
@@ -105,13 +105,13 @@ int main(int argc, char** argv) {
     auto motion = mrd::plant::make_motion(config);
     if (config.duration == 0.0) config.duration = mrd::plant::motion_length(motion);
     rig = std::make_unique<mrd::plant::Rig>(config, std::move(motion));
-  } catch (const mrd::tools::InputError& e) {
+  } catch (const mrd::record::InputError& e) {
     std::fprintf(stderr, "mrd-plant: profile.file: %s\n", e.what());
     return 1;
   }
 
-  mrd::firmware::RtSetupResult rt;
-  mrd::firmware::lock_memory(config.realtime, rt);
+  mrd::runtime::RtSetupResult rt;
+  mrd::runtime::lock_memory(config.realtime, rt);
   mrd::plant::RunLog log;
   if (!config.log.empty()) {
     if (const auto opened = log.open(config.log); !opened.ok) {
@@ -141,7 +141,7 @@ int main(int argc, char** argv) {
   // Which bus the coil current comes from: the controller's driver back end when the plant
   // serves it, else whichever bus the plant serves.
   const bool current_from_can =
-      can && (config.controller.backends.driver == mrd::firmware::DeviceBackend::kCan || !modbus);
+      can && (config.controller.backends.driver == mrd::config::DeviceBackend::kCan || !modbus);
 
   struct sigaction sa{};
   sigemptyset(&sa.sa_mask);
@@ -163,15 +163,15 @@ int main(int argc, char** argv) {
   std::vector<mrd::hal::IoThread*> io_threads;
   if (modbus) io_threads.push_back(&modbus->io_thread());
   if (can) io_threads.push_back(&can->io_thread());
-  mrd::firmware::make_io_threads_realtime(config.realtime, io_threads, rt);
-  mrd::firmware::make_current_thread_realtime(config.realtime, rt);
+  mrd::runtime::make_io_threads_realtime(config.realtime, io_threads, rt);
+  mrd::runtime::make_current_thread_realtime(config.realtime, rt);
   for (const auto& w : rt.warnings) std::fprintf(stderr, "mrd-plant: warning: %s\n", w.c_str());
   std::printf("mrd-plant: ready\n");
   std::fflush(stdout);
 
   const auto period = std::chrono::nanoseconds{static_cast<std::int64_t>(1e9 / config.rate + 0.5)};
-  mrd::firmware::RealTimeRunner runner(period);
-  mrd::firmware::LoopStatistics stats;
+  mrd::runtime::RealTimeRunner runner(period);
+  mrd::runtime::LoopStatistics stats;
   std::optional<mrd::hal::Timestamp> start;
   std::optional<double> fault_origin;  // plant time of fault time 0
   const auto commanded_yet = [&] {

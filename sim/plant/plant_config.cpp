@@ -4,15 +4,15 @@
 #include <cmath>
 #include <filesystem>
 
-#include "firmware/config_loader.hpp"
-#include "firmware/effects_config.hpp"
-#include "firmware/toml_reader.hpp"
+#include "config/config_loader.hpp"
+#include "config/effects_config.hpp"
+#include "config/toml_reader.hpp"
 
 namespace mrd::plant {
 
 namespace {
 
-using firmware::TomlReader;
+using config::TomlReader;
 
 constexpr std::pair<std::string_view, FaultKind> kFaultNames[] = {
     {"frame_loss", FaultKind::kFrameLoss},
@@ -129,7 +129,7 @@ void read_all(const toml::table& root, TomlReader& in, PlantConfig& c, const std
   in.get("can.interface", c.can.interface);
   in.get("can.feedback", c.can.feedback);
   in.get("can.fault_pull", c.can.fault_pull);
-  firmware::read_effects(in, c.effects);
+  config::read_effects(in, c.effects);
   read_faults(root, in, c.faults);
   c.controller_config = resolve(c.controller_config, file);
   c.profile.file = resolve(c.profile.file, file);
@@ -140,8 +140,8 @@ void validate(TomlReader& in, const PlantConfig& c) {
   if (!(c.duration >= 0.0)) in.error("plant.duration", "must be >= 0 s (0: the profile's length)");
   if (!(c.lvdt_noise >= 0.0)) in.error("plant.lvdt_noise", "must be >= 0 m");
   if (!(c.force_noise >= 0.0)) in.error("plant.force_noise", "must be >= 0 N");
-  const hal::ConfigReport realtime = c.realtime.validate();
-  for (const auto& problem : realtime.problems()) {
+  const ValidationReport realtime = c.realtime.validate();
+  for (const auto& problem : realtime.issues()) {
     in.error("realtime." + problem.field, problem.message);
   }
   const auto& p = c.profile;
@@ -165,10 +165,10 @@ void validate(TomlReader& in, const PlantConfig& c) {
   if (!c.modbus.enabled && !c.can.enabled) {
     in.warning("modbus.enabled", "neither Modbus nor CAN is on: the plant serves nobody");
   }
-  const model::ParameterReport effects = model::validate(c.effects);
+  const ValidationReport effects = model::validate(c.effects);
   for (const auto& issue : effects.issues()) {
     const std::string key = "damper.effects." + issue.field;
-    issue.severity == model::ParameterIssue::Severity::kError ? in.error(key, issue.message)
+    issue.severity == ValidationIssue::Severity::kError ? in.error(key, issue.message)
                                                               : in.warning(key, issue.message);
   }
 }
@@ -217,19 +217,19 @@ std::string LoadedPlantConfig::report() const {
 
 LoadedPlantConfig load_plant_config_text(std::string_view text, const std::string& file_name) {
   LoadedPlantConfig out;
-  const std::optional<toml::table> root = firmware::parse_config_text(text, file_name, out.errors);
+  const std::optional<toml::table> root = config::parse_config_text(text, file_name, out.errors);
   if (!root) return out;
-  firmware::ConfigMessages messages;
+  config::ConfigMessages messages;
   TomlReader in(*root, file_name, messages);
   read_all(*root, in, out.config, file_name);
   in.report_unknown_keys();
   validate(in, out.config);
-  firmware::file_messages(messages, out.errors, out.warnings);
+  config::file_messages(messages, out.errors, out.warnings);
 
   // The controller's side of the buses and its damper.
   const auto controller = out.config.controller_config.empty()
-                              ? firmware::load_default_config()
-                              : firmware::load_config_file(out.config.controller_config);
+                              ? config::load_default_config()
+                              : config::load_config_file(out.config.controller_config);
   for (const auto& m : controller.errors) out.errors.push_back(m);
   out.config.controller = controller.config;
   return out;
@@ -237,7 +237,7 @@ LoadedPlantConfig load_plant_config_text(std::string_view text, const std::strin
 
 LoadedPlantConfig load_plant_config_file(const std::string& path) {
   LoadedPlantConfig out;
-  const std::optional<std::string> text = firmware::read_config_file(path, out.errors);
+  const std::optional<std::string> text = config::read_config_file(path, out.errors);
   return text ? load_plant_config_text(*text, path) : out;
 }
 

@@ -6,8 +6,8 @@
 #include <string_view>
 #include <vector>
 
-#include "firmware/config_message.hpp"
-#include "firmware/controller_config.hpp"
+#include "config/config_message.hpp"
+#include "config/controller_config.hpp"
 #include "model/effects/effect_set.hpp"
 
 namespace mrd::plant {
@@ -91,7 +91,7 @@ struct PlantConfig {
   FaultClock faults_from = FaultClock::kFirstCommand;
   // The stepping thread below the controller's default 80, so on a shared host the
   // controller's loop goes first; the bus threads below it.
-  firmware::RealtimeConfig realtime{70, -1, true, 60};
+  runtime::RealtimeConfig realtime{70, -1, true, 60};
   ProfileConfig profile;
   ModbusServerConfig modbus;
   CanNodeConfig can;
@@ -99,7 +99,7 @@ struct PlantConfig {
   std::vector<Fault> faults;
 
   // The controller's config, read from controller_config: bus layout and base damper.
-  firmware::ControllerConfig controller;
+  config::ControllerConfig controller;
 
   [[nodiscard]] double period() const { return 1.0 / rate; }
   // The damper the plant simulates: the controller's base model with the plant's effects.
@@ -111,8 +111,8 @@ struct PlantConfig {
 
 struct LoadedPlantConfig {
   PlantConfig config;
-  firmware::ConfigMessages errors;
-  firmware::ConfigMessages warnings;
+  config::ConfigMessages errors;
+  config::ConfigMessages warnings;
 
   [[nodiscard]] bool ok() const { return errors.empty(); }
   [[nodiscard]] std::string report() const;

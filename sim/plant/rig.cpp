@@ -1,6 +1,6 @@
 #include "sim/plant/rig.hpp"
 
-#include "tools/replay/run_reader.hpp"
+#include "record/run_reader.hpp"
 
 namespace mrd::plant {
 
@@ -25,7 +25,7 @@ Motion make_motion(const PlantConfig& config) {
       return sim::RandomProfile(p.amplitude, p.random_low, p.random_high, p.random_length,
                                 config.period(), config.seed);
     case ProfileKind::kPlayback: {
-      tools::RecordedRun run = tools::read_recorded_run(p.file);
+      record::RecordedRun run = record::read_recorded_run(p.file);
       return sim::PlaybackProfile(std::move(run.time), std::move(run.displacement));
     }
   }

@@ -25,7 +25,7 @@ struct ActiveFaults {
 
 using Motion = std::variant<sim::SineProfile, sim::SineSequenceProfile, sim::RandomProfile,
                             sim::PlaybackProfile>;
-// Builds the profile; playback reads its file (throws tools::InputError when it is bad).
+// Builds the profile; playback reads its file (throws record::InputError when it is bad).
 [[nodiscard]] Motion make_motion(const PlantConfig& config);
 // [s]; 0 for an endless profile (sine).
 [[nodiscard]] double motion_length(const Motion& motion);

@@ -16,15 +16,15 @@ class LoopRig {
  public:
   static constexpr hal::Timestamp kPeriod = std::chrono::milliseconds{1};
 
-  explicit LoopRig(hal::mock::FaultScript script = {}, firmware::SupervisorConfig safety = {},
-                   firmware::TelemetryQueue* telemetry = nullptr)
+  explicit LoopRig(hal::mock::FaultScript script = {}, control::SupervisorConfig safety = {},
+                   runtime::TelemetryQueue* telemetry = nullptr)
       : hal_(std::make_unique<hal::mock::MockHal>(std::move(script))),
         loop_(std::make_unique<firmware::ControlLoop>(
-            firmware::ControlLawConfig{}, safety,
+            control::ControlLawConfig{}, safety,
             firmware::HalDevices{hal_->lvdt, hal_->driver, hal_->lines}, telemetry)) {}
 
   // Runs cycle number `cycle_` at its release time; `skip` periods are lost before it.
-  firmware::SupervisorState step(int skip = 0) {
+  control::SupervisorState step(int skip = 0) {
     cycle_ += skip;
     const hal::Timestamp now = hal::mock::cycle_time(cycle_, kPeriod);
     hal_->clock.set(now);
@@ -34,7 +34,7 @@ class LoopRig {
     return loop_->state();
   }
   // Steps until `state` is reached (returns its cycle number) or `limit` cycles pass (-1).
-  std::int64_t run_until(firmware::SupervisorState state, std::int64_t limit = 100000) {
+  std::int64_t run_until(control::SupervisorState state, std::int64_t limit = 100000) {
     for (std::int64_t i = 0; i < limit; ++i) {
       if (step() == state) return cycle_ - 1;
     }

@@ -8,18 +8,19 @@
 #include <cstdio>
 #include <random>
 
-#include "firmware/config_loader.hpp"
+#include "config/config_loader.hpp"
 #include "firmware/control_loop.hpp"
-#include "firmware/csv_telemetry_writer.hpp"
-#include "firmware/simulated_rig.hpp"
-#include "firmware/telemetry_queue.hpp"
+#include "runtime/csv_telemetry_writer.hpp"
+#include "runtime/telemetry_queue.hpp"
 #include "hal/mock/mock_hal.hpp"
+#include "sim/damper_plant.hpp"
+#include "sim/displacement_profile.hpp"
 
 namespace mrd::test {
 
 namespace {
 
-using firmware::SupervisorState;
+using control::SupervisorState;
 using hal::mock::FaultKind;
 
 long resident_kib() {
@@ -66,10 +67,34 @@ class RandomFaults {
   std::int64_t fault_end_ = 0;
 };
 
+// The rig of the soak: the config's sine through the simulated damper (the same physics as the
+// observer's), its LVDT reading handed to the mock HAL.
+class SineRig {
+ public:
+  SineRig(const config::SimulationConfig& s, const model::DamperModel& truth, double period, hal::mock::MockHal& hal)
+      : profile_{s.amplitude, s.frequency},
+        plant_(truth, sim::PlantSettings{period, s.lvdt_noise, 0.0, s.seed}),
+        hal_(hal) {}
+
+  void advance(hal::Timestamp now) {
+    hal_.clock.set(now);
+    const double t = std::chrono::duration<double>(now).count();
+    last_ = plant_.step(profile_.displacement(t), profile_.velocity(t), hal_.driver.last_setpoint());
+    hal_.lvdt.set_truth(last_.lvdt_displacement);
+  }
+  [[nodiscard]] const sim::PlantReading& last() const { return last_; }
+
+ private:
+  sim::SineProfile profile_;
+  sim::DamperPlant plant_;
+  hal::mock::MockHal& hal_;
+  sim::PlantReading last_;
+};
+
 }  // namespace
 
 SoakFigures run_soak(std::uint64_t cycles, std::uint32_t seed) {
-  auto config = firmware::load_default_config().config;
+  auto config = config::load_default_config().config;
   // The default leaves the frozen check off; the simulated rig never rests, so a frozen-value
   // fault trips it here like any other bad sample.
   config.safety.frozen_periods = 50;
@@ -80,12 +105,12 @@ SoakFigures run_soak(std::uint64_t cycles, std::uint32_t seed) {
   const std::int64_t recovery_limit = safety.recovery_periods + safety.stale_periods + 5;
 
   hal::mock::MockHal hal;
-  firmware::TelemetryQueue queue(static_cast<std::size_t>(config.telemetry.ring_size));
-  firmware::CsvTelemetryWriter writer(queue, config.telemetry.flush_period);
+  runtime::TelemetryQueue queue(static_cast<std::size_t>(config.telemetry.ring_size));
+  runtime::CsvTelemetryWriter writer(queue, config.telemetry.flush_period);
   if (!writer.start("/dev/null").ok) return {};
   firmware::ControlLoop loop(config.law, safety,
                              firmware::HalDevices{hal.lvdt, hal.driver, hal.lines}, &queue);
-  firmware::SimulatedRig rig(config.simulation, config.law.damper, 1.0 / config.rate, hal);
+  SineRig rig(config.simulation, config.law.damper, 1.0 / config.rate, hal);
   RandomFaults faults(seed, period);
 
   SoakFigures f;
@@ -124,7 +149,7 @@ SoakFigures run_soak(std::uint64_t cycles, std::uint32_t seed) {
   const auto& transitions = loop.supervisor().transitions();
   f.safe_entries = transitions.into(SupervisorState::kSafe);
   f.recoveries = transitions.get(SupervisorState::kSafe, SupervisorState::kRun,
-                                 firmware::Trigger::kGoodPeriods);
+                                 control::Trigger::kGoodPeriods);
   f.telemetry_offered = queue.offered();
   f.telemetry_written = writer.written();
   f.telemetry_dropped = queue.dropped();

@@ -40,7 +40,7 @@ class PolledLvdt final : public mrd::hal::DisplacementSource {
 TEST(BusSampleTiming, VelocityHoldsSteadyWhileThePollBeatsWithTheLoop) {
   mrd::hal::mock::MockHal hal;
   PolledLvdt lvdt(hal.clock);
-  mrd::firmware::ControlLoop loop(mrd::firmware::ControlLawConfig{}, mrd::firmware::SupervisorConfig{},
+  mrd::firmware::ControlLoop loop(mrd::control::ControlLawConfig{}, mrd::control::SupervisorConfig{},
                                   {lvdt, hal.driver, hal.lines}, nullptr);
   double lo = 1.0, hi = -1.0;
   for (int cycle = 0; cycle < 300; ++cycle) {  // 0.3 s: -20 to +10 mm

@@ -1,4 +1,4 @@
-// mrd-controller's run on the embedded default config (simulated rig, mock HAL), in process and
+// mrd-controller's run on the embedded default config (the mock HAL, its LVDT on the [simulation] sine), in process and
 // briefly. Real time on a shared machine: only what does not depend on timing is asserted.
 #include "firmware/controller.hpp"
 
@@ -9,12 +9,12 @@
 #include <regex>
 #include <string>
 
-#include "firmware/config_loader.hpp"
+#include "config/config_loader.hpp"
 
 namespace {
 
 // Runs the controller and returns what it printed.
-std::string run(const mrd::firmware::ControllerConfig& config, double seconds,
+std::string run(const mrd::config::ControllerConfig& config, double seconds,
                 bool stop_at_once = false) {
   std::FILE* out = std::tmpfile();
   mrd::firmware::ControllerSignals signals;
@@ -30,8 +30,8 @@ std::string run(const mrd::firmware::ControllerConfig& config, double seconds,
   return text;
 }
 
-TEST(ControllerRun, DefaultConfigRunsTheSimulatedRigAndStopsInSafeWithTelemetryAccounted) {
-  auto config = mrd::firmware::load_default_config().config;
+TEST(ControllerRun, DefaultConfigRunsOnTheMockHalAndStopsInSafeWithTelemetryAccounted) {
+  auto config = mrd::config::load_default_config().config;
   const auto csv = std::filesystem::temp_directory_path() / "mrd_controller_run.csv";
   config.telemetry.path = csv.string();
   config.realtime.priority = 0;  // a unit test does not ask for SCHED_FIFO
@@ -40,7 +40,7 @@ TEST(ControllerRun, DefaultConfigRunsTheSimulatedRigAndStopsInSafeWithTelemetryA
   config.safety.overrun_limit = 1000000;
   const std::string text = run(config, 0.5);
 
-  EXPECT_NE(text.find("simulated rig"), std::string::npos) << text;
+  EXPECT_NE(text.find("mock LVDT on the simulation sine"), std::string::npos) << text;
   // Whether and when INIT -> RUN happens depends on the machine's load (overruns reset the
   // count of good periods); the supervisor's timing is tested deterministically elsewhere.
   EXPECT_NE(text.find("-> SAFE (shutdown): 1"), std::string::npos) << text;
@@ -58,7 +58,7 @@ TEST(ControllerRun, DefaultConfigRunsTheSimulatedRigAndStopsInSafeWithTelemetryA
 }
 
 TEST(ControllerRun, StopSignalFlagEndsTheRunWithTheFailSafeCycle) {
-  auto config = mrd::firmware::load_default_config().config;
+  auto config = mrd::config::load_default_config().config;
   config.realtime.priority = 0;
   config.safety.overrun_limit = 1000000;  // as above: SAFE only by the stop
   const std::string text = run(config, 0.0, true);  // no duration: runs until the flag

@@ -2,14 +2,14 @@
 // each fault kind of the mock HAL, overruns, SAFE and recovery, with telemetry into the ring.
 #include <gtest/gtest.h>
 
-#include "firmware/latency_histogram.hpp"
-#include "firmware/loop_statistics.hpp"
+#include "runtime/latency_histogram.hpp"
+#include "runtime/loop_statistics.hpp"
 #include "tests/firmware/loop_fixture.hpp"
 #include "tests/support/allocation_counter.hpp"
 
 namespace {
 
-using mrd::firmware::SupervisorState;
+using mrd::control::SupervisorState;
 using mrd::hal::mock::FaultKind;
 using mrd::hal::mock::FaultScript;
 using mrd::hal::mock::cycle_time;
@@ -36,9 +36,9 @@ TEST(RealTime, ControlLoopCycleDoesNotAllocateOnAnySupervisorPath) {
     window(kind, at, parameter);
     at += 1000;
   }
-  mrd::firmware::TelemetryQueue telemetry(1024);
+  mrd::runtime::TelemetryQueue telemetry(1024);
   LoopRig rig(script, {}, &telemetry);
-  auto stats = std::make_unique<mrd::firmware::LoopStatistics>();
+  auto stats = std::make_unique<mrd::runtime::LoopStatistics>();
   for (int i = 0; i < 10; ++i) rig.step();  // start-up
 
   std::uint64_t drained = 0;
@@ -50,7 +50,7 @@ TEST(RealTime, ControlLoopCycleDoesNotAllocateOnAnySupervisorPath) {
     stats->wake_latency.record(i);
     stats->execution.record(3 * i);
     stats->add_cycle(static_cast<std::uint64_t>(skip));
-    if (i % 512 == 0) drained += telemetry.drain([](const mrd::firmware::TelemetryRecord&) {});
+    if (i % 512 == 0) drained += telemetry.drain([](const mrd::runtime::TelemetryRecord&) {});
   }
   const auto allocations = mrd::test::stop_counting_allocations();
   EXPECT_EQ(allocations, 0u);
@@ -63,12 +63,12 @@ TEST(RealTime, ControlLoopCycleDoesNotAllocateOnAnySupervisorPath) {
   EXPECT_EQ(t.into(SupervisorState::kDegraded), 13u);
   // RUN: start-up, after each of the ten faults, after each burst.
   EXPECT_EQ(t.into(SupervisorState::kRun), 16u);
-  for (auto trig : {mrd::firmware::Trigger::kSensorStale, mrd::firmware::Trigger::kSampleNotFinite,
-                    mrd::firmware::Trigger::kSampleOutOfRange, mrd::firmware::Trigger::kSampleCorrupted,
-                    mrd::firmware::Trigger::kDriverFault, mrd::firmware::Trigger::kFaultLineUnreadable,
-                    mrd::firmware::Trigger::kCurrentDisagreement,
-                    mrd::firmware::Trigger::kSetpointWriteFailed,
-                    mrd::firmware::Trigger::kRepeatedOverruns}) {
+  for (auto trig : {mrd::control::Trigger::kSensorStale, mrd::control::Trigger::kSampleNotFinite,
+                    mrd::control::Trigger::kSampleOutOfRange, mrd::control::Trigger::kSampleCorrupted,
+                    mrd::control::Trigger::kDriverFault, mrd::control::Trigger::kFaultLineUnreadable,
+                    mrd::control::Trigger::kCurrentDisagreement,
+                    mrd::control::Trigger::kSetpointWriteFailed,
+                    mrd::control::Trigger::kRepeatedOverruns}) {
     std::uint64_t n = 0;
     for (auto from : {SupervisorState::kRun, SupervisorState::kDegraded}) {
       n += t.get(from, SupervisorState::kSafe, trig);

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <string>
 
-#include "firmware/config_loader.hpp"
+#include "config/config_loader.hpp"
 #include "firmware/control_loop.hpp"
 #include "firmware/hal_set.hpp"
-#include "firmware/rt_runner.hpp"
+#include "runtime/rt_runner.hpp"
 #include "tests/hal/modbus/modbus_test_server.hpp"
 #include "tests/hal/test_wait.hpp"
 
@@ -20,7 +20,7 @@ TEST(ModbusLoop, ConfiguredFromTomlTheLoopReadsTheLvdtWritesTheSetpointAndEndsAt
   ASSERT_TRUE(server.listening());
   server.set_input_registers(0, {0, 15000});  // 15 mm as int32, 1 um per count: Table 4 level 2
 
-  const auto loaded = mrd::firmware::load_config_text(
+  const auto loaded = mrd::config::load_config_text(
       "[backends]\nlvdt = \"modbus\"\ndriver = \"modbus\"\n[modbus.tcp]\nport = " +
           std::to_string(server.port()) + "\n[safety]\nrecovery_periods = 20\n"
           // This test is about the bus, not about timing on a loaded machine.
@@ -36,14 +36,14 @@ TEST(ModbusLoop, ConfiguredFromTomlTheLoopReadsTheLvdtWritesTheSetpointAndEndsAt
 
   // Run until the loop has been in RUN for a while (bounded), then stop as on SIGTERM.
   std::atomic<bool> stop{false};
-  mrd::firmware::LoopStatistics stats;
-  mrd::firmware::RealTimeRunner runner(loaded.config.period());
+  mrd::runtime::LoopStatistics stats;
+  mrd::runtime::RealTimeRunner runner(loaded.config.period());
   std::uint64_t run_cycles = 0;
   const auto next = runner.run(
       [&](mrd::hal::Timestamp release) {
         hal.mock()->clock.set(release);
         loop.step(release);
-        if (loop.state() == mrd::firmware::SupervisorState::kRun && ++run_cycles >= 200) stop = true;
+        if (loop.state() == mrd::control::SupervisorState::kRun && ++run_cycles >= 200) stop = true;
       },
       stop, 20000, stats);
 

@@ -7,9 +7,9 @@
 
 namespace {
 
-using mrd::firmware::SupervisorConfig;
-using mrd::firmware::SupervisorState;
-using mrd::firmware::Trigger;
+using mrd::control::SupervisorConfig;
+using mrd::control::SupervisorState;
+using mrd::control::Trigger;
 using mrd::hal::mock::FaultKind;
 using mrd::hal::mock::FaultScript;
 using mrd::hal::mock::cycle_time;

@@ -4,16 +4,16 @@
 #include <fstream>
 #include <string>
 
-#include "firmware/csv_telemetry_writer.hpp"
-#include "firmware/telemetry_queue.hpp"
+#include "runtime/csv_telemetry_writer.hpp"
+#include "runtime/telemetry_queue.hpp"
 #include "tests/firmware/loop_fixture.hpp"
 #include "tests/hal/test_wait.hpp"
 
 namespace {
 
-using mrd::firmware::CsvTelemetryWriter;
-using mrd::firmware::TelemetryQueue;
-using mrd::firmware::TelemetryRecord;
+using mrd::runtime::CsvTelemetryWriter;
+using mrd::runtime::TelemetryQueue;
+using mrd::runtime::TelemetryRecord;
 
 TEST(TelemetryQueue, AFullRingDropsAndCountsNeverLosesSilently) {
   TelemetryQueue q(16);

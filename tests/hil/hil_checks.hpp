@@ -7,15 +7,15 @@
 #include <cmath>
 #include <string>
 
-#include "firmware/supervisor.hpp"
+#include "control/supervisor.hpp"
 #include "model/current_schedule.hpp"
 #include "tests/hil/child_process.hpp"
 #include "tests/hil/hil_run.hpp"
 
 namespace mrd::test {
 
-using firmware::SupervisorState;
-using firmware::Trigger;
+using control::SupervisorState;
+using control::Trigger;
 using tools::TelemetryRow;
 
 // A good period as far as the telemetry shows: a fresh sample and no overrun.
@@ -46,7 +46,7 @@ inline void expect_clean_run(const HilResult& r, double duration, double rate = 
 }
 
 // INIT -> RUN exactly when the run of good periods reaches recovery_periods.
-inline std::size_t expect_first_run(const HilResult& r, const mrd::firmware::SupervisorConfig& safety) {
+inline std::size_t expect_first_run(const HilResult& r, const mrd::control::SupervisorConfig& safety) {
   for (std::size_t i = 0; i < r.telemetry.size(); ++i) {
     if (r.telemetry[i].state == SupervisorState::kInit) continue;
     EXPECT_EQ(r.telemetry[i].state, SupervisorState::kRun);
@@ -62,7 +62,7 @@ inline std::size_t expect_first_run(const HilResult& r, const mrd::firmware::Sup
 // period's setpoint write to have succeeded, which the telemetry does not show: the first
 // period or two after a reconnect may have a fresh sample but the failed write of the period
 // before.
-inline void expect_recovery_length(const HilResult& r, std::size_t back, const mrd::firmware::SupervisorConfig& safety) {
+inline void expect_recovery_length(const HilResult& r, std::size_t back, const mrd::control::SupervisorConfig& safety) {
   const std::size_t n = run_length_before(r.telemetry, back, fresh);
   const auto m = static_cast<std::size_t>(safety.recovery_periods);
   EXPECT_GE(n, m);

@@ -8,8 +8,8 @@
 #include <regex>
 
 #include "tests/hil/child_process.hpp"
-#include "tools/csv.hpp"
-#include "tools/replay/run_reader.hpp"
+#include "record/csv.hpp"
+#include "record/run_reader.hpp"
 
 namespace mrd::test {
 
@@ -93,8 +93,8 @@ HilResult run_hil(const HilScenario& s) {
   r.fault_origin = find_number(r.plant_output, R"(plant faults: time 0 is plant log time_s ([0-9.]+) s)").value_or(0.0);
   try {
     r.telemetry = tools::read_telemetry_csv(telemetry.string());
-    r.plant_log = tools::read_recorded_run(plant_log.string());
-  } catch (const tools::InputError& e) {
+    r.plant_log = record::read_recorded_run(plant_log.string());
+  } catch (const record::InputError& e) {
     r.failure = e.what();
   }
   return r;

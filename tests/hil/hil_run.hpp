@@ -8,7 +8,7 @@
 #include "tests/hil/child_process.hpp"
 
 #include "tools/hil/telemetry_csv.hpp"
-#include "tools/replay/recorded_run.hpp"
+#include "record/recorded_run.hpp"
 
 namespace mrd::test {
 
@@ -30,7 +30,7 @@ struct HilResult {
   std::string controller_output;
   std::string plant_output;
   std::vector<tools::TelemetryRow> telemetry;
-  tools::RecordedRun plant_log;
+  record::RecordedRun plant_log;
   double controller_t0 = 0.0;  // CLOCK_MONOTONIC of the telemetry's time 0 [s]
   double offset = 0.0;  // plant log time of the telemetry's time 0 [s]
   double fault_origin = 0.0;  // plant log time of the faults' time 0 (the first command) [s]

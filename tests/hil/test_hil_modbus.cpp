@@ -11,7 +11,7 @@
 #include <numbers>
 #include <regex>
 
-#include "firmware/config_loader.hpp"
+#include "config/config_loader.hpp"
 #include "tests/hil/child_process.hpp"
 #include "tests/hil/hil_checks.hpp"
 #include "tests/hil/hil_run.hpp"
@@ -19,8 +19,8 @@
 
 namespace {
 
-using mrd::firmware::SupervisorState;
-using mrd::firmware::Trigger;
+using mrd::control::SupervisorState;
+using mrd::control::Trigger;
 using namespace mrd::test;
 
 constexpr double kRate = 50.0;  // [Hz]
@@ -41,8 +41,8 @@ std::string loop_toml(const std::string& transport) {
 
 std::string controller_toml() { return loop_toml("tcp"); }
 
-const mrd::firmware::SupervisorConfig& safety() {
-  static const auto config = mrd::firmware::load_config_text(controller_toml(), "hil").config.safety;
+const mrd::control::SupervisorConfig& safety() {
+  static const auto config = mrd::config::load_config_text(controller_toml(), "hil").config.safety;
   return config;
 }
 
@@ -182,7 +182,7 @@ TEST(HilModbus, Table4SineOverRtuOnAPty) {
   const HilResult r = mrd::test::run_hil(
       {"rtu", toml, "rate = 1000.0\n[profile]\nkind = \"sine\"\namplitude = 0.040\nfrequency = 0.5\n", 4.0, false, {}});
   expect_clean_run(r, 4.0, kRate);
-  const auto rtu_safety = mrd::firmware::load_config_text(toml, "rtu").config.safety;
+  const auto rtu_safety = mrd::config::load_config_text(toml, "rtu").config.safety;
   expect_first_run(r, rtu_safety);
   EXPECT_NE(r.plant_output.find("modbus rtu " + device.string() + " -> /dev/pts/"), std::string::npos)
       << r.plant_output;

@@ -15,7 +15,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "firmware/config_loader.hpp"
+#include "config/config_loader.hpp"
 #include "tests/hil/hil_checks.hpp"
 
 namespace {
@@ -90,11 +90,11 @@ std::string controller_toml() {
          "[safety]\noverrun_limit = 1000000\nrecovery_periods = 10\nfrozen_periods = 4\n";
 }
 
-const mrd::firmware::ControllerConfig& controller() {
-  static const auto config = mrd::firmware::load_config_text(controller_toml(), "vm").config;
+const mrd::config::ControllerConfig& controller() {
+  static const auto config = mrd::config::load_config_text(controller_toml(), "vm").config;
   return config;
 }
-const mrd::firmware::SupervisorConfig& safety() { return controller().safety; }
+const mrd::control::SupervisorConfig& safety() { return controller().safety; }
 
 HilResult run(const std::string& name, const std::string& faults, double duration,
               std::function<std::string(ChildProcess&)> watch = {}) {
@@ -109,7 +109,7 @@ HilResult run(const std::string& name, const std::string& faults, double duratio
 double monotonic_now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 
 // The first row at or after fault time t where the supervisor enters `state`.
-std::size_t entry_into(const HilResult& r, SupervisorState state, double t) {
+std::size_t entry_into(const HilResult& r, mrd::control::SupervisorState state, double t) {
   for (std::size_t i = 1; i < r.telemetry.size(); ++i) {
     if (r.fault_time(r.telemetry[i]) >= t && r.telemetry[i].state == state && r.telemetry[i - 1].state != state) {
       return i;
@@ -125,7 +125,7 @@ std::size_t rows_since(const HilResult& r, double t, std::size_t i) {
   return n;
 }
 
-bool ever_in(const HilResult& r, SupervisorState state, double from, double to) {
+bool ever_in(const HilResult& r, mrd::control::SupervisorState state, double from, double to) {
   for (const auto& row : r.telemetry) {
     const double t = r.fault_time(row);
     if (t >= from && t < to && row.state == state) return true;
@@ -218,15 +218,15 @@ TEST_F(HilVm, Table4SineOverVcanWithGpioSimLinesAndAFaultPull) {
   };
   std::size_t safe = r.telemetry.size();
   for (std::size_t i = 1; i + 1 < r.telemetry.size(); ++i) {
-    if (r.telemetry[i].state != SupervisorState::kSafe || r.telemetry[i - 1].state == SupervisorState::kSafe) continue;
+    if (r.telemetry[i].state != mrd::control::SupervisorState::kSafe || r.telemetry[i - 1].state == mrd::control::SupervisorState::kSafe) continue;
     EXPECT_EQ(safe, r.telemetry.size()) << "a second SAFE:\n" << transitions(r);
     safe = i;
   }
   ASSERT_LT(safe, r.telemetry.size()) << transitions(r);
-  EXPECT_EQ(r.telemetry[safe].trigger, Trigger::kDriverFault) << transitions(r);
+  EXPECT_EQ(r.telemetry[safe].trigger, mrd::control::Trigger::kDriverFault) << transitions(r);
   EXPECT_GE(rows_after(pulled, safe), 1u);
   EXPECT_LE(rows_after(pulled, safe), kSlack) << transitions(r);
-  const std::size_t back = entry_into(r, SupervisorState::kRun, r.fault_time(r.telemetry[safe]));
+  const std::size_t back = entry_into(r, mrd::control::SupervisorState::kRun, r.fault_time(r.telemetry[safe]));
   ASSERT_LT(back, r.telemetry.size()) << transitions(r);
   // RUN again after recovery_periods good periods once the line is released (the watcher
   // releases it when it sees enable drop): the run of fresh periods since the release.
@@ -263,7 +263,7 @@ TEST_F(HilVm, CanFaultsTripTheDocumentedReactions) {
   // RUN again after recovery_periods good periods from the fault's end (a driver fault leaves
   // the samples fresh, so the count starts at the end, not at the SAFE row).
   const auto expect_back_in_run = [&](std::size_t safe, double end) {
-    const std::size_t back = entry_into(r, SupervisorState::kRun, r.fault_time(r.telemetry[safe]));
+    const std::size_t back = entry_into(r, mrd::control::SupervisorState::kRun, r.fault_time(r.telemetry[safe]));
     ASSERT_LT(back, r.telemetry.size()) << transitions(r);
     const auto m = static_cast<std::size_t>(safety().recovery_periods);
     const std::size_t good = run_length_before(
@@ -271,15 +271,15 @@ TEST_F(HilVm, CanFaultsTripTheDocumentedReactions) {
     EXPECT_GE(good, m) << end << "\n" << transitions(r);
     EXPECT_LE(good, m + kSlack) << end << "\n" << transitions(r);
   };
-  ASSERT_FALSE(ever_in(r, SupervisorState::kSafe, 0.8, 2.0)) << transitions(r);
+  ASSERT_FALSE(ever_in(r, mrd::control::SupervisorState::kSafe, 0.8, 2.0)) << transitions(r);
 
   // Lost frames (20 %): gaps counted, never six periods without a sample, so no SAFE.
   EXPECT_GT(counter(r.controller_output, "sequence_gaps"), 0u) << r.controller_output;
 
   // Corrupted frames: SAFE (sample_corrupted) at the bad_sample_periods-th corrupted period.
-  const std::size_t crc = entry_into(r, SupervisorState::kSafe, 2.0);
+  const std::size_t crc = entry_into(r, mrd::control::SupervisorState::kSafe, 2.0);
   ASSERT_LT(crc, r.telemetry.size()) << transitions(r);
-  EXPECT_EQ(r.telemetry[crc].trigger, Trigger::kSampleCorrupted) << transitions(r);
+  EXPECT_EQ(r.telemetry[crc].trigger, mrd::control::Trigger::kSampleCorrupted) << transitions(r);
   EXPECT_LE(rows_since(r, 2.0, crc), static_cast<std::size_t>(safety().bad_sample_periods) + kSlack);
   EXPECT_EQ(run_length_before(r.telemetry, crc, [](const TelemetryRow& x) { return x.sample == "corrupted"; }),
             static_cast<std::size_t>(safety().bad_sample_periods));
@@ -287,22 +287,22 @@ TEST_F(HilVm, CanFaultsTripTheDocumentedReactions) {
   expect_back_in_run(crc, 2.2);
 
   // Error frames (RX warning): counted, no reaction.
-  EXPECT_FALSE(ever_in(r, SupervisorState::kSafe, 3.0, 4.0)) << transitions(r);
+  EXPECT_FALSE(ever_in(r, mrd::control::SupervisorState::kSafe, 3.0, 4.0)) << transitions(r);
   EXPECT_GE(counter(r.controller_output, "error_frames"), 40u) << r.controller_output;
 
   // The feedback frame's DriverFault bit: SAFE at the next period.
-  const std::size_t driver = entry_into(r, SupervisorState::kSafe, 4.0);
+  const std::size_t driver = entry_into(r, mrd::control::SupervisorState::kSafe, 4.0);
   ASSERT_LT(driver, r.telemetry.size()) << transitions(r);
-  EXPECT_EQ(r.telemetry[driver].trigger, Trigger::kDriverFault) << transitions(r);
+  EXPECT_EQ(r.telemetry[driver].trigger, mrd::control::Trigger::kDriverFault) << transitions(r);
   EXPECT_LE(rows_since(r, 4.0, driver), kSlack) << transitions(r);
   expect_back_in_run(driver, 4.1);
 
   // The LVDT falls silent, then its frames repeat their counter (stale copies, dropped): SAFE
   // (sensor_stale) at the period after stale_periods without a fresh sample.
   for (const auto& [start, end] : {std::pair{5.0, 5.4}, std::pair{6.5, 6.9}}) {
-    const std::size_t safe = entry_into(r, SupervisorState::kSafe, start);
+    const std::size_t safe = entry_into(r, mrd::control::SupervisorState::kSafe, start);
     ASSERT_LT(safe, r.telemetry.size()) << transitions(r);
-    EXPECT_EQ(r.telemetry[safe].trigger, Trigger::kSensorStale) << start << "\n" << transitions(r);
+    EXPECT_EQ(r.telemetry[safe].trigger, mrd::control::Trigger::kSensorStale) << start << "\n" << transitions(r);
     EXPECT_EQ(run_length_before(r.telemetry, safe, no_sample), static_cast<std::size_t>(stale + 1)) << start;
     EXPECT_LE(rows_since(r, start, safe), static_cast<std::size_t>(stale + 1) + kSlack) << start << "\n" << transitions(r);
     expect_back_in_run(safe, end);
@@ -311,13 +311,13 @@ TEST_F(HilVm, CanFaultsTripTheDocumentedReactions) {
 
   // Bus-off: no command goes out until bus_off_hold_off after the next good frame, so the
   // writes fail: SAFE (setpoint_write_failed) after write_failure_periods; RUN after the hold-off.
-  const std::size_t off = entry_into(r, SupervisorState::kSafe, 8.0);
+  const std::size_t off = entry_into(r, mrd::control::SupervisorState::kSafe, 8.0);
   ASSERT_LT(off, r.telemetry.size()) << transitions(r);
-  EXPECT_EQ(r.telemetry[off].trigger, Trigger::kSetpointWriteFailed) << transitions(r);
+  EXPECT_EQ(r.telemetry[off].trigger, mrd::control::Trigger::kSetpointWriteFailed) << transitions(r);
   EXPECT_LE(rows_since(r, 8.0, off), static_cast<std::size_t>(safety().write_failure_periods) + kSlack) << transitions(r);
   EXPECT_EQ(counter(r.controller_output, "bus_off"), 1u) << r.controller_output;
   EXPECT_GT(counter(r.controller_output, "tx_inhibited"), 0u) << r.controller_output;
-  const std::size_t resumed = entry_into(r, SupervisorState::kRun, 8.0);
+  const std::size_t resumed = entry_into(r, mrd::control::SupervisorState::kRun, 8.0);
   ASSERT_LT(resumed, r.telemetry.size()) << transitions(r);
   const double hold_off = std::chrono::duration<double>(controller().can.bus_off_hold_off).count();
   EXPECT_GE(r.fault_time(r.telemetry[resumed]), 8.0 + hold_off + (safety().recovery_periods - 1) * kPeriod)
@@ -326,9 +326,9 @@ TEST_F(HilVm, CanFaultsTripTheDocumentedReactions) {
   // A frozen LVDT: its frames keep coming, fresh, with one value. With frozen_periods = 4 the
   // 5th repeat is frozen, a bad sample: SAFE (sample_frozen) at the bad_sample_periods-th.
   const int repeats = safety().frozen_periods;
-  const std::size_t frozen = entry_into(r, SupervisorState::kSafe, 9.8);
+  const std::size_t frozen = entry_into(r, mrd::control::SupervisorState::kSafe, 9.8);
   ASSERT_LT(frozen, r.telemetry.size()) << transitions(r);
-  EXPECT_EQ(r.telemetry[frozen].trigger, Trigger::kSampleFrozen) << transitions(r);
+  EXPECT_EQ(r.telemetry[frozen].trigger, mrd::control::Trigger::kSampleFrozen) << transitions(r);
   EXPECT_EQ(run_length_before(r.telemetry, frozen, [](const TelemetryRow& x) { return x.sample == "frozen"; }),
             static_cast<std::size_t>(safety().bad_sample_periods));
   // The first frozen frame still differs from the value the loop held: it is no repeat.

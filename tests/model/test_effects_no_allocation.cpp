@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "firmware/control_law.hpp"
+#include "control/control_law.hpp"
 #include "model/observer.hpp"
 #include "sim/damper_plant.hpp"
 #include "tests/support/allocation_counter.hpp"
@@ -58,9 +58,9 @@ TEST(RealTimeEffects, PlantStepsWithEveryEffectDoNotAllocate) {
 }
 
 TEST(RealTimeEffects, ControlLawStepWithEveryEffectDoesNotAllocate) {
-  mrd::firmware::ControlLawConfig config;
+  mrd::control::ControlLawConfig config;
   config.damper = every_effect_on();
-  mrd::firmware::ControlLaw law(config);
+  mrd::control::ControlLaw law(config);
   double coil = 0.0;
   start_counting_allocations();
   for (int k = 0; k < kSteps; ++k) coil = law.step(x_at(k), coil).command_current;

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "firmware/control_law.hpp"
+#include "control/control_law.hpp"
 #include "model/hysteresis_compensator.hpp"
 #include "model/observer.hpp"
 #include "tests/support/allocation_counter.hpp"
@@ -53,7 +53,7 @@ TEST(RealTime, ObserverAndCompensatorStepsDoNotAllocate) {
 }
 
 TEST(RealTime, ControlLawStepDoesNotAllocate) {
-  mrd::firmware::ControlLaw law(mrd::firmware::ControlLawConfig{});
+  mrd::control::ControlLaw law(mrd::control::ControlLawConfig{});
   double coil = 0.0;
   start_counting_allocations();
   for (int i = 0; i < 100000; ++i) {

@@ -10,11 +10,11 @@ namespace {
 
 using mrd::model::DamperModel;
 using mrd::model::JilesAthertonParams;
-using mrd::model::ParameterIssue;
+using mrd::ValidationIssue;
 
-bool has_error(const mrd::model::ParameterReport& r, const std::string& field) {
+bool has_error(const mrd::ValidationReport& r, const std::string& field) {
   for (const auto& i : r.issues()) {
-    if (i.field == field && i.severity == ParameterIssue::Severity::kError) return true;
+    if (i.field == field && i.severity == ValidationIssue::Severity::kError) return true;
   }
   return false;
 }
@@ -52,7 +52,7 @@ TEST(Parameters, StrongMeanFieldCouplingIsAWarningNotAnError) {
   const auto report = validate(table1);
   EXPECT_TRUE(report.ok());
   ASSERT_EQ(report.issues().size(), 1u);
-  EXPECT_EQ(report.issues()[0].severity, ParameterIssue::Severity::kWarning);
+  EXPECT_EQ(report.issues()[0].severity, ValidationIssue::Severity::kWarning);
   EXPECT_EQ(report.issues()[0].field, "alpha");
 }
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "tools/csv.hpp"
+#include "record/csv.hpp"
 
 namespace mrd::tools {
 
@@ -19,7 +19,7 @@ bool sample_at(const std::vector<double>& t, const std::vector<double>& y, doubl
   return true;
 }
 
-double displacement_mismatch(const std::vector<TelemetryRow>& rows, const RecordedRun& plant,
+double displacement_mismatch(const std::vector<TelemetryRow>& rows, const record::RecordedRun& plant,
                              double shift) {
   double sum = 0.0;
   std::size_t n = 0;
@@ -34,9 +34,9 @@ double displacement_mismatch(const std::vector<TelemetryRow>& rows, const Record
 
 }  // namespace
 
-ForceJoin join_force(const std::vector<TelemetryRow>& telemetry, const RecordedRun& plant,
+ForceJoin join_force(const std::vector<TelemetryRow>& telemetry, const record::RecordedRun& plant,
                      double offset, double max_lag) {
-  if (!plant.has_force()) throw InputError(plant.name + ": the plant log has no force column");
+  if (!plant.has_force()) throw record::InputError(plant.name + ": the plant log has no force column");
   ForceJoin j;
   j.offset = offset;
   const double step = plant.sample_rate > 0.0 ? 0.25 / plant.sample_rate : 2.5e-4;
@@ -65,7 +65,7 @@ ForceJoin join_force(const std::vector<TelemetryRow>& telemetry, const RecordedR
   }
   j.rows = j.true_force.size();
   if (j.rows == 0) {
-    throw InputError(plant.name + ": no telemetry row in control falls inside the plant log (offset " +
+    throw record::InputError(plant.name + ": no telemetry row in control falls inside the plant log (offset " +
                      std::to_string(offset) + " s)");
   }
   j.rms_error = std::sqrt(sum / static_cast<double>(j.rows));

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "tools/hil/telemetry_csv.hpp"
-#include "tools/replay/recorded_run.hpp"
+#include "record/recorded_run.hpp"
 
 namespace mrd::tools {
 
@@ -30,6 +30,6 @@ struct ForceJoin {
 
 // Throws InputError when the plant log has no force or nothing overlaps.
 [[nodiscard]] ForceJoin join_force(const std::vector<TelemetryRow>& telemetry,
-                                   const RecordedRun& plant, double offset, double max_lag = 0.02);
+                                   const record::RecordedRun& plant, double offset, double max_lag = 0.02);
 
 }  // namespace mrd::tools

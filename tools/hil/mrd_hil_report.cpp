@@ -7,11 +7,11 @@
 #include <fstream>
 #include <string>
 
-#include "tools/csv.hpp"
+#include "record/csv.hpp"
 #include "tools/gnuplot.hpp"
 #include "tools/hil/force_join.hpp"
 #include "tools/hil/telemetry_csv.hpp"
-#include "tools/replay/run_reader.hpp"
+#include "record/run_reader.hpp"
 
 namespace {
 
@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
 
   try {
     const auto telemetry = mrd::tools::read_telemetry_csv(telemetry_path);
-    const auto plant = mrd::tools::read_recorded_run(plant_path);
+    const auto plant = mrd::record::read_recorded_run(plant_path);
     std::printf("telemetry: %zu records; plant log: %zu samples at %.0f Hz\n", telemetry.size(),
                 plant.size(), plant.sample_rate);
     std::printf("supervisor transitions:\n");
@@ -75,7 +75,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "mrd-hil-report: no plot: %s\n", error.c_str());
       }
     }
-  } catch (const mrd::tools::InputError& e) {
+  } catch (const mrd::record::InputError& e) {
     std::fprintf(stderr, "mrd-hil-report: %s\n", e.what());
     return 1;
   }

@@ -4,20 +4,20 @@
 #include <cstdio>
 #include <limits>
 
-#include "firmware/csv_telemetry_writer.hpp"
-#include "tools/csv.hpp"
+#include "runtime/csv_telemetry_writer.hpp"
+#include "record/csv.hpp"
 
 namespace mrd::tools {
 
 namespace {
 
-using firmware::SupervisorState;
-using firmware::Trigger;
+using control::SupervisorState;
+using control::Trigger;
 
 template <typename E>
 bool enum_named(std::string_view name, E count, E& out) {
   for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) {
-    if (firmware::to_string(static_cast<E>(i)) == name) {
+    if (control::to_string(static_cast<E>(i)) == name) {
       out = static_cast<E>(i);
       return true;
     }
@@ -30,29 +30,29 @@ bool enum_named(std::string_view name, E count, E& out) {
 std::vector<TelemetryRow> parse_telemetry_csv(std::string_view text, const std::string& name) {
   static const std::vector<std::string_view> kColumns = [] {
     std::vector<std::string_view> columns;
-    std::string_view header = firmware::CsvTelemetryWriter::header();
+    std::string_view header = runtime::CsvTelemetryWriter::header();
     header.remove_suffix(1);  // '\n'
-    for (const auto c : split_csv_line(header)) columns.push_back(c);
+    for (const auto c : record::split_csv_line(header)) columns.push_back(c);
     return columns;
   }();
-  LineReader lines(text, name);
+  record::LineReader lines(text, name);
   const auto first = lines.next();
   const auto fail = [&](std::string_view column, const std::string& message) {
-    return InputError(input_error_message(name, lines.line_number(), column, message));
+    return record::InputError(record::input_error_message(name, lines.line_number(), column, message));
   };
-  if (!first || split_csv_line(*first) != kColumns) {
+  if (!first || record::split_csv_line(*first) != kColumns) {
     throw fail("", "not an mrd-controller telemetry file: the header must be " +
-                       std::string(firmware::CsvTelemetryWriter::header()).substr(0, 60) + "...");
+                       std::string(runtime::CsvTelemetryWriter::header()).substr(0, 60) + "...");
   }
   std::vector<TelemetryRow> rows;
   while (const auto line = lines.next()) {
-    const auto f = split_csv_line(*line);
+    const auto f = record::split_csv_line(*line);
     if (f.size() != kColumns.size()) {
       throw fail("", "expected " + std::to_string(kColumns.size()) + " fields, got " + std::to_string(f.size()));
     }
     const auto number = [&](std::size_t i) {
       if (f[i] == "nan" || f[i] == "-nan") return std::numeric_limits<double>::quiet_NaN();
-      const auto v = parse_finite(f[i]);
+      const auto v = record::parse_finite(f[i]);
       if (!v) throw fail(kColumns[i], "'" + std::string(f[i]) + "' is not a number");
       return *v;
     };
@@ -79,7 +79,7 @@ std::vector<TelemetryRow> parse_telemetry_csv(std::string_view text, const std::
 }
 
 std::vector<TelemetryRow> read_telemetry_csv(const std::string& path) {
-  return parse_telemetry_csv(read_text_file(path), path);
+  return parse_telemetry_csv(record::read_text_file(path), path);
 }
 
 std::vector<StateChange> state_changes(const std::vector<TelemetryRow>& rows) {
@@ -95,8 +95,8 @@ std::vector<StateChange> state_changes(const std::vector<TelemetryRow>& rows) {
 std::string to_string(const StateChange& c) {
   char text[160];
   std::snprintf(text, sizeof text, "%s -> %s (%s) at cycle %llu (%.3f s)",
-                firmware::to_string(c.from).data(), firmware::to_string(c.to).data(),
-                firmware::to_string(c.trigger).data(), static_cast<unsigned long long>(c.cycle), c.time);
+                control::to_string(c.from).data(), control::to_string(c.to).data(),
+                control::to_string(c.trigger).data(), static_cast<unsigned long long>(c.cycle), c.time);
   return text;
 }
 

@@ -5,7 +5,7 @@
 #include <string_view>
 #include <vector>
 
-#include "firmware/supervisor.hpp"
+#include "control/supervisor.hpp"
 
 namespace mrd::tools {
 
@@ -23,13 +23,13 @@ struct TelemetryRow {
   double B = 0.0;                  // [T]
   double velocity = 0.0;           // [m/s]
   double force = 0.0;              // observer [N]
-  firmware::SupervisorState state = firmware::SupervisorState::kInit;
-  firmware::Trigger trigger = firmware::Trigger::kNone;
+  control::SupervisorState state = control::SupervisorState::kInit;
+  control::Trigger trigger = control::Trigger::kNone;
   std::uint32_t overruns = 0;
   bool enable = false;
 
   [[nodiscard]] bool in_control() const {
-    return state == firmware::SupervisorState::kRun || state == firmware::SupervisorState::kDegraded;
+    return state == control::SupervisorState::kRun || state == control::SupervisorState::kDegraded;
   }
 };
 
@@ -41,9 +41,9 @@ std::vector<TelemetryRow> read_telemetry_csv(const std::string& path);
 struct StateChange {
   std::uint64_t cycle = 0;
   double time = 0.0;
-  firmware::SupervisorState from = firmware::SupervisorState::kInit;
-  firmware::SupervisorState to = firmware::SupervisorState::kInit;
-  firmware::Trigger trigger = firmware::Trigger::kNone;
+  control::SupervisorState from = control::SupervisorState::kInit;
+  control::SupervisorState to = control::SupervisorState::kInit;
+  control::Trigger trigger = control::Trigger::kNone;
 };
 [[nodiscard]] std::vector<StateChange> state_changes(const std::vector<TelemetryRow>& rows);
 // "RUN -> SAFE (sensor_stale) at cycle 2345 (2.345 s)"

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <map>
 
-#include "tools/csv.hpp"
+#include "record/csv.hpp"
 
 namespace mrd::tools {
 
@@ -87,15 +87,15 @@ struct PairColumns {
 
 BHCurve parse_bh_curve(const std::string& text, const std::string& name,
                        const BHCurveOptions& options) {
-  LineReader lines(text, name);
-  auto fail = [&](std::string_view column, const std::string& message) -> InputError {
-    return InputError(input_error_message(name, lines.line_number(), column, message));
+  record::LineReader lines(text, name);
+  auto fail = [&](std::string_view column, const std::string& message) -> record::InputError {
+    return record::InputError(record::input_error_message(name, lines.line_number(), column, message));
   };
 
   // Header: the first non-blank line.
   std::vector<Column> columns;
   if (const auto header = lines.next()) {
-    for (const auto field : split_csv_line(*header)) columns.push_back(classify(std::string(field)));
+    for (const auto field : record::split_csv_line(*header)) columns.push_back(classify(std::string(field)));
   }
   if (columns.empty()) throw fail("", "empty file: expected a header with H and B columns");
 
@@ -139,14 +139,14 @@ BHCurve parse_bh_curve(const std::string& text, const std::string& name,
   std::map<long, std::size_t> loop_ids;  // loop column value -> index, in order of appearance
 
   while (const auto line = lines.next()) {
-    const auto cells = split_csv_line(*line);
+    const auto cells = record::split_csv_line(*line);
     if (cells.size() > columns.size()) {
       throw fail("", std::to_string(cells.size()) + " fields, but the header has " +
                          std::to_string(columns.size()));
     }
     auto cell = [&](std::size_t i) { return i < cells.size() ? cells[i] : std::string_view{}; };
     auto number = [&](std::size_t i) {
-      const auto value = parse_finite(cell(i));
+      const auto value = record::parse_finite(cell(i));
       if (!value) {
         throw fail(columns[i].name, "'" + std::string(cell(i)) + "' is not a finite number");
       }
@@ -201,7 +201,7 @@ BHCurve parse_bh_curve(const std::string& text, const std::string& name,
 }
 
 BHCurve read_bh_curve(const std::string& path, const BHCurveOptions& options) {
-  return parse_bh_curve(read_text_file(path), path, options);
+  return parse_bh_curve(record::read_text_file(path), path, options);
 }
 
 }  // namespace mrd::tools

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "model/jiles_atherton_params.hpp"
-#include "tools/csv.hpp"  // InputError
+#include "record/csv.hpp"  // InputError
 
 namespace mrd::tools {
 

@@ -91,7 +91,7 @@ LoopFeatures measure_largest_loop(const BHCurve& curve) {
   Branch falling, rising;
   split_branches(largest_loop(curve), falling, rising);
   if (falling.H.size() < 2 || rising.H.size() < 2) {
-    throw InputError(curve.source + ": the largest loop has no falling and rising branches");
+    throw record::InputError(curve.source + ": the largest loop has no falling and rising branches");
   }
   LoopFeatures f;
   f.H_tip = 0.5 * (falling.H.back() - rising.H.front());

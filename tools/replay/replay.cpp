@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "tools/csv.hpp"
+#include "record/csv.hpp"
 #include "tools/replay/zero_phase_velocity.hpp"
 
 namespace mrd::tools {
@@ -34,49 +34,49 @@ ForceError force_error(std::span<const double> measured, std::span<const double>
 
 namespace {
 
-firmware::ControlLawConfig law_for(const RecordedRun& run, const ReplayOptions& options) {
+control::ControlLawConfig law_for(const record::RecordedRun& run, const ReplayOptions& options) {
   if (!(run.sample_rate > 0.0) || run.size() < 2) {
-    throw InputError(run.name +
+    throw record::InputError(run.name +
                      ": cannot replay: the run needs at least 2 samples at a known rate");
   }
-  if (run.coil_signal == CoilSignal::kCommandVoltage && !options.amps_per_volt) {
-    throw InputError(run.name +
+  if (run.coil_signal == record::CoilSignal::kCommandVoltage && !options.amps_per_volt) {
+    throw record::InputError(run.name +
                      ": the run logged the driver's command voltage, not the coil current: "
                      "give the driver gain (--amps-per-volt)");
   }
   if (options.amps_per_volt && !std::isfinite(*options.amps_per_volt)) {
-    throw InputError("--amps-per-volt must be a finite number");
+    throw record::InputError("--amps-per-volt must be a finite number");
   }
   if (options.use_recorded_velocity && options.zero_phase_cutoff) {
-    throw InputError("--recorded-velocity and --zero-phase-velocity exclude each other");
+    throw record::InputError("--recorded-velocity and --zero-phase-velocity exclude each other");
   }
   if (options.use_recorded_velocity && !run.has_velocity()) {
-    throw InputError(run.name + ": --recorded-velocity, but the run has no velocity column");
+    throw record::InputError(run.name + ": --recorded-velocity, but the run has no velocity column");
   }
-  firmware::ControlLawConfig law = options.law;
+  control::ControlLawConfig law = options.law;
   law.observer.sample_period = 1.0 / run.sample_rate;
-  const auto report = firmware::validate(law);
+  const auto report = control::validate(law);
   if (!report.ok())
-    throw InputError(run.name + ": cannot replay with this config:\n" + report.to_string());
+    throw record::InputError(run.name + ": cannot replay with this config:\n" + report.to_string());
   return law;
 }
 
 }  // namespace
 
-ReplayResult replay(const RecordedRun& run, const ReplayOptions& options) {
-  const firmware::ControlLawConfig config = law_for(run, options);
-  const double gain = run.coil_signal == CoilSignal::kCommandVoltage ? *options.amps_per_volt : 1.0;
+ReplayResult replay(const record::RecordedRun& run, const ReplayOptions& options) {
+  const control::ControlLawConfig config = law_for(run, options);
+  const double gain = run.coil_signal == record::CoilSignal::kCommandVoltage ? *options.amps_per_volt : 1.0;
   // The force: the firmware's observer driven by the current the run recorded.
   model::Observer observer(config.damper, config.observer);
   // The command: the whole control law in its own closed loop on the run's displacement, the
   // driver delivering each command as the mock driver does (ControlLoop feeds the law the
   // current that flowed, which is then its last command).
-  firmware::ControlLaw law(config);
+  control::ControlLaw law(config);
   double flowing = 0.0;
 
   ReplayResult result;
   result.sample_period = config.observer.sample_period;
-  result.sampling = summarize_sampling(run.time);
+  result.sampling = record::summarize_sampling(run.time);
   ReplayTrace& t = result.trace;
   for (auto* v : {&t.coil_current, &t.velocity, &t.B, &t.predicted_force, &t.scheduled_current,
                   &t.command_current}) {
@@ -97,7 +97,7 @@ ReplayResult replay(const RecordedRun& run, const ReplayOptions& options) {
     const double current = run.coil[i] * gain;
     const model::ObserverEstimate estimate =
         sensor != nullptr ? observer.step(x, (*sensor)[i], current) : observer.step(x, current);
-    const firmware::ControlOutput out =
+    const control::ControlOutput out =
         sensor != nullptr ? law.step(x, (*sensor)[i], flowing) : law.step(x, flowing);
     flowing = out.command_current;
     t.coil_current[i] = current;

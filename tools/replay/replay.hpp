@@ -5,15 +5,15 @@
 #include <span>
 #include <vector>
 
-#include "firmware/control_law.hpp"
-#include "tools/replay/recorded_run.hpp"
+#include "control/control_law.hpp"
+#include "record/recorded_run.hpp"
 
 namespace mrd::tools {
 
 struct ReplayOptions {
   // The controller's law (damper model, schedule, compensator, observer settings), usually
   // from the TOML config. Its observer.sample_period is replaced by the run's nominal period.
-  firmware::ControlLawConfig law;
+  control::ControlLawConfig law;
   // The current driver's gain [A/V], for runs that logged the command voltage: the coil
   // current is voltage x gain, with no lag (a lag is a model effect, not the replay's).
   std::optional<double> amps_per_volt;
@@ -54,7 +54,7 @@ struct ReplayResult {
   ReplayTrace trace;
   std::optional<ForceError> force;  // when the run measured the force
   double sample_period = 0.0;       // [s] the law ran with: the run's nominal period
-  SamplingSummary sampling;
+  record::SamplingSummary sampling;
 };
 
 // Runs the firmware's ControlLaw (schedule, observer, compensator) over the run, one step
@@ -65,6 +65,6 @@ struct ReplayResult {
 // command: the run is what happened, the command is what the controller would have done.
 // Deterministic. Throws InputError when the run cannot be replayed as asked (a voltage run
 // without a gain, recorded velocity asked for but not recorded, an invalid law).
-[[nodiscard]] ReplayResult replay(const RecordedRun& run, const ReplayOptions& options);
+[[nodiscard]] ReplayResult replay(const record::RecordedRun& run, const ReplayOptions& options);
 
 }  // namespace mrd::tools

@@ -43,7 +43,7 @@ std::string velocity_source(const ReplayContext& c) {
 
 std::string coil_description(const ReplayContext& c) {
   std::string out = std::string(to_string(c.run.coil_signal)) + " from " + c.run.coil_source;
-  if (c.run.coil_signal == CoilSignal::kCommandVoltage)
+  if (c.run.coil_signal == record::CoilSignal::kCommandVoltage)
     out += format(" x %g A/V", *c.options.amps_per_volt);
   return out;
 }

@@ -2,14 +2,14 @@
 
 #include <string>
 
-#include "tools/replay/recorded_run.hpp"
+#include "record/recorded_run.hpp"
 #include "tools/replay/replay.hpp"
 
 namespace mrd::tools {
 
 // How the replay was asked for and how long it took, for the reports.
 struct ReplayContext {
-  const RecordedRun& run;
+  const record::RecordedRun& run;
   const ReplayOptions& options;
   const ReplayResult& result;
   // Time spent in replay() (not reading or writing files): on the clock, and on the CPU, which

@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "tools/replay/run_columns.hpp"
+#include "record/run_columns.hpp"
 
 namespace mrd::tools {
 
@@ -10,7 +10,7 @@ void RunOptionsCli::add_to(CLI::App& app) {
   app.add_option("--columns", columns_,
                  "map a foreign file's columns: t=time_s,D=displacement_cm,... by header name, or "
                  "1=time_s,2=displacement_mm,... by position (no header); units: " +
-                     known_unit_names());
+                     record::known_unit_names());
   current_option_ = app.add_option("--current", current_, "constant coil current of the run [A]");
   auto* from_name = app.add_flag("--current-from-name", current_from_name_,
                                  "read the constant current from the file name (25mm0x25Hz0x5A.txt: 0.5 A)");
@@ -21,8 +21,8 @@ void RunOptionsCli::add_to(CLI::App& app) {
                                 "current driver gain [A/V], for runs that logged its command voltage");
 }
 
-std::optional<firmware::LoadedConfig> RunOptionsCli::load_config() const {
-  auto config = config_path_.empty() ? firmware::load_default_config() : firmware::load_config_file(config_path_);
+std::optional<config::LoadedConfig> RunOptionsCli::load_config() const {
+  auto config = config_path_.empty() ? config::load_default_config() : config::load_config_file(config_path_);
   if (!config.ok()) {
     std::fprintf(stderr, "%s", config.report().c_str());
     return std::nullopt;
@@ -31,11 +31,11 @@ std::optional<firmware::LoadedConfig> RunOptionsCli::load_config() const {
   return config;
 }
 
-RunReadOptions RunOptionsCli::read_options(const firmware::LoadedConfig& config) const {
-  RunReadOptions read;
+record::RunReadOptions RunOptionsCli::read_options(const config::LoadedConfig& config) const {
+  record::RunReadOptions read;
   read.can = config.config.can;
   read.current_from_name = current_from_name_;
-  if (!columns_.empty()) read.columns = parse_column_mapping(columns_);
+  if (!columns_.empty()) read.columns = record::parse_column_mapping(columns_);
   if (current_option_ != nullptr && current_option_->count() > 0) read.current = current_;
   if (rate_option_ != nullptr && rate_option_->count() > 0) read.sample_rate = sample_rate_;
   return read;

@@ -4,8 +4,8 @@
 #include <optional>
 #include <string>
 
-#include "firmware/config_loader.hpp"
-#include "tools/replay/run_read_options.hpp"
+#include "config/config_loader.hpp"
+#include "record/run_read_options.hpp"
 
 namespace mrd::tools {
 
@@ -17,9 +17,9 @@ class RunOptionsCli {
 
   // The controller's config (--config, or the embedded one), its problems printed to stderr
   // with the warnings; nullopt when it has errors.
-  [[nodiscard]] std::optional<firmware::LoadedConfig> load_config() const;
+  [[nodiscard]] std::optional<config::LoadedConfig> load_config() const;
   // How to read the runs, with the config's CAN ids for logs. Throws InputError (a bad mapping).
-  [[nodiscard]] RunReadOptions read_options(const firmware::LoadedConfig& config) const;
+  [[nodiscard]] record::RunReadOptions read_options(const config::LoadedConfig& config) const;
   [[nodiscard]] std::optional<double> amps_per_volt() const;
   [[nodiscard]] const std::string& config_path() const { return config_path_; }
 

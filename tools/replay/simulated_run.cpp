@@ -6,9 +6,9 @@
 
 namespace mrd::tools {
 
-RecordedRun simulate_run(const model::DamperModel& truth, const SimulatedRunOptions& options) {
+record::RecordedRun simulate_run(const model::DamperModel& truth, const SimulatedRunOptions& options) {
   sim::DamperPlant plant(truth, options.lvdt_noise, options.seed);
-  RecordedRun run;
+  record::RecordedRun run;
   run.name = "simulated";
   run.sample_rate = options.sample_rate;
   run.coil_source = "simulated current";

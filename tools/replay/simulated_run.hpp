@@ -4,7 +4,7 @@
 
 #include "model/damper_model.hpp"
 #include "sim/displacement_profile.hpp"
-#include "tools/replay/recorded_run.hpp"
+#include "record/recorded_run.hpp"
 
 namespace mrd::tools {
 
@@ -24,7 +24,7 @@ struct SimulatedRunOptions {
   std::uint32_t seed = 1;
 };
 
-[[nodiscard]] RecordedRun simulate_run(const model::DamperModel& truth,
+[[nodiscard]] record::RecordedRun simulate_run(const model::DamperModel& truth,
                                        const SimulatedRunOptions& options = {});
 
 }  // namespace mrd::tools

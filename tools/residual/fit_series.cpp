@@ -4,20 +4,20 @@
 #include <cmath>
 #include <random>
 
-#include "tools/csv.hpp"
+#include "record/csv.hpp"
 #include "tools/replay/zero_phase_velocity.hpp"
 
 namespace mrd::tools {
 
 namespace {
 
-void check_run(const RecordedRun& run, const FitSeriesOptions& options) {
+void check_run(const record::RecordedRun& run, const FitSeriesOptions& options) {
   if (!run.has_force())
-    throw InputError(run.name + ": the run has no force column; a residual needs the measured force");
+    throw record::InputError(run.name + ": the run has no force column; a residual needs the measured force");
   if (run.size() < 16 || !(run.sample_rate > 0.0))
-    throw InputError(run.name + ": too short for a residual analysis (at least 16 samples)");
-  if (run.coil_signal == CoilSignal::kCommandVoltage && !options.amps_per_volt)
-    throw InputError(run.name +
+    throw record::InputError(run.name + ": too short for a residual analysis (at least 16 samples)");
+  if (run.coil_signal == record::CoilSignal::kCommandVoltage && !options.amps_per_volt)
+    throw record::InputError(run.name +
                      ": the run logged the driver's command voltage, not the coil current: "
                      "give the driver gain (--amps-per-volt)");
 }
@@ -34,19 +34,19 @@ void append_sample(FitSeries& to, const FitSeries& from, std::size_t i) {
 
 }  // namespace
 
-FitSeries make_fit_series(const std::vector<RecordedRun>& runs, const FitSeriesOptions& options) {
-  if (runs.empty()) throw InputError("no runs to analyse");
+FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const FitSeriesOptions& options) {
+  if (runs.empty()) throw record::InputError("no runs to analyse");
   const bool with_temperature =
-      std::all_of(runs.begin(), runs.end(), [](const RecordedRun& r) { return r.has_temperature(); });
+      std::all_of(runs.begin(), runs.end(), [](const record::RecordedRun& r) { return r.has_temperature(); });
   FitSeries s;
   const int blocks = std::max(options.blocks, 2);
-  for (const RecordedRun& run : runs) {
+  for (const record::RecordedRun& run : runs) {
     check_run(run, options);
     const double rate = run.sample_rate;
     s.sample_period = s.run_periods.empty() ? 1.0 / rate : std::min(s.sample_period, 1.0 / rate);
     s.run_periods.push_back(1.0 / rate);
     const double gain =
-        run.coil_signal == CoilSignal::kCommandVoltage ? *options.amps_per_volt : 1.0;
+        run.coil_signal == record::CoilSignal::kCommandVoltage ? *options.amps_per_volt : 1.0;
     std::vector<double> velocity = run.velocity;
     if (!run.has_velocity()) {
       double cutoff = options.velocity_cutoff;

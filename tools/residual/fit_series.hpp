@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "tools/replay/recorded_run.hpp"
+#include "record/recorded_run.hpp"
 
 namespace mrd::tools {
 
@@ -42,7 +42,7 @@ struct FitSeriesOptions {
 
 // Throws InputError when a run has no force, a voltage run comes without a gain, or the runs
 // differ in rate by more than 1 %.
-FitSeries make_fit_series(const std::vector<RecordedRun>& runs, const FitSeriesOptions& options);
+FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const FitSeriesOptions& options);
 
 // Every `factor`-th sample (the middle one of each block of `factor`), or fewer for a run that
 // would fall below `min_rate` [Hz]; run boundaries and the validation blocks are kept. Picked,

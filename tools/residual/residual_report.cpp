@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <toml++/toml.h>
 
-#include "firmware/effects_config.hpp"
+#include "config/effects_config.hpp"
 #include "tools/gnuplot.hpp"
 #include "tools/json.hpp"
 #include "tools/residual/candidate_effects.hpp"
@@ -39,9 +39,9 @@ double range_of(const std::vector<double>& v) {
 
 }  // namespace
 
-std::string residual_summary(const std::vector<RecordedRun>& runs, const ResidualResult& r) {
+std::string residual_summary(const std::vector<record::RecordedRun>& runs, const ResidualResult& r) {
   std::string out;
-  for (const RecordedRun& run : runs) {
+  for (const record::RecordedRun& run : runs) {
     out += format("%s: %zu samples, %.6g s at %.6g Hz\n", run.name.c_str(), run.size(), run.duration(),
                   run.sample_rate);
     for (const auto& note : run.notes) out += "  note: " + note + "\n";
@@ -151,7 +151,7 @@ std::string updated_config(std::string_view config_text, const ResidualResult& r
   set("geometry", "gap", m.geometry.gap);
   set("geometry", "piston_diameter", m.geometry.piston_diameter);
   set("geometry", "sign_velocity_scale", m.geometry.sign_velocity_scale);
-  const toml::table effects = toml::parse(firmware::effects_toml(m.effects));
+  const toml::table effects = toml::parse(config::effects_toml(m.effects));
   damper->insert_or_assign("effects", *effects["damper"]["effects"].as_table());
   std::ostringstream out;
   out << "# Written by mrd-residual: the damper fitted to the run";

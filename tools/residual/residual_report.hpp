@@ -4,7 +4,7 @@
 #include <string_view>
 #include <vector>
 
-#include "tools/replay/recorded_run.hpp"
+#include "record/recorded_run.hpp"
 #include "tools/residual/fit_series.hpp"
 #include "tools/residual/residual_search.hpp"
 
@@ -12,7 +12,7 @@ namespace mrd::tools {
 
 // The human summary: the runs, the base fit, the error before, each round's candidates with
 // their verdicts, the accepted effects and their parameters, the error after, what remains.
-std::string residual_summary(const std::vector<RecordedRun>& runs, const ResidualResult& r);
+std::string residual_summary(const std::vector<record::RecordedRun>& runs, const ResidualResult& r);
 
 // The JSON of docs/CLOSING-THE-LOOP.md, exactly these keys (forces in N): samples,
 // rms_before_N, max_before_N, effects, effect, rms_after_N, max_after_N, effect_params,

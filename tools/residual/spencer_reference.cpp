@@ -3,13 +3,13 @@
 #include <vector>
 
 #include "model/spencer_bouc_wen.hpp"
-#include "tools/csv.hpp"
+#include "record/csv.hpp"
 
 namespace mrd::tools {
 
-ForceError spencer_dyke_reference(const RecordedRun& run, const FitSeries& series) {
-  if (run.coil_signal != CoilSignal::kCommandVoltage)
-    throw InputError(run.name + ": Spencer's model takes the driver's command voltage; the run logged a current");
+ForceError spencer_dyke_reference(const record::RecordedRun& run, const FitSeries& series) {
+  if (run.coil_signal != record::CoilSignal::kCommandVoltage)
+    throw record::InputError(run.name + ": Spencer's model takes the driver's command voltage; the run logged a current");
   model::SpencerBoucWen spencer(model::SpencerBoucWenParams::dyke_prototype(), 1.0 / run.sample_rate);
   spencer.reset(run.displacement.front());
   std::vector<double> force(run.size());

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "tools/replay/recorded_run.hpp"
+#include "record/recorded_run.hpp"
 #include "tools/replay/replay.hpp"
 #include "tools/residual/fit_series.hpp"
 
@@ -13,6 +13,6 @@ namespace mrd::tools {
 // the closing-the-loop table compares our model with. It takes the driver's command voltage,
 // as the paper's model does, and the series' velocity (the same one our fits use). Throws
 // InputError for a run that logged a current instead of the voltage.
-ForceError spencer_dyke_reference(const RecordedRun& run, const FitSeries& series);
+ForceError spencer_dyke_reference(const record::RecordedRun& run, const FitSeries& series);
 
 }  // namespace mrd::tools

@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "firmware/effects_config.hpp"
+#include "config/effects_config.hpp"
 #include "tools/json.hpp"
 
 namespace mrd::tools {
@@ -48,7 +48,7 @@ std::string run_manifest_json(const SimulatedRun& run) {
          std::to_string(run.samples.size()) + ",\n  \"seed\": " + std::to_string(o.seed) +
          ",\n  \"lvdt_noise_m\": " + json_number(o.lvdt_noise) + ",\n  \"force_noise_N\": " +
          json_number(o.force_noise) + ",\n  \"effects\": [" + effects + "],\n  \"effects_toml\": " +
-         json_string(firmware::effects_toml(run.effects)) + "\n}\n";
+         json_string(config::effects_toml(run.effects)) + "\n}\n";
 }
 
 }  // namespace mrd::tools

@@ -7,7 +7,7 @@
 namespace {
 
 using mrd::tools::BHCurveOptions;
-using mrd::tools::InputError;
+using mrd::record::InputError;
 using mrd::tools::parse_bh_curve;
 
 // The error message, or "" when the text parses.
@@ -89,7 +89,7 @@ TEST(BHCurveReader, HugeLoopIndicesAndValuesOutsidePhysicsAreErrors) {
 
 TEST(BHCurveReader, ALineOverTheLengthCapIsAnError) {
   std::string text = "H_A_per_m,B_T\n1,";
-  text.append(mrd::tools::kMaxLineLength, '1');
+  text.append(mrd::record::kMaxLineLength, '1');
   EXPECT_EQ(error_of(text),
             "loops.csv:2: line longer than 1048576 bytes: not a text file this reader takes");
 }

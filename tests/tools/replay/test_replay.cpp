@@ -5,27 +5,27 @@
 #include <cmath>
 #include <string>
 
-#include "firmware/config_loader.hpp"
-#include "tests/tools/replay/input_error_of.hpp"
-#include "tools/replay/run_csv.hpp"
+#include "config/config_loader.hpp"
+#include "tests/record/input_error_of.hpp"
+#include "record/run_csv.hpp"
 #include "tools/replay/simulated_run.hpp"
 
 namespace {
 
 using mrd::tools::force_error;
-using mrd::tools::RecordedRun;
+using mrd::record::RecordedRun;
 using mrd::tools::replay;
 using mrd::tools::ReplayOptions;
 using mrd::tools::simulate_run;
 
 ReplayOptions default_options() {
   ReplayOptions o;
-  o.law = mrd::firmware::load_default_config().config.law;
+  o.law = mrd::config::load_default_config().config.law;
   return o;
 }
 
 std::string error_of(const RecordedRun& run, const ReplayOptions& options) {
-  return mrd::tools::testing::input_error_of([&] { (void)replay(run, options); });
+  return mrd::record::testing::input_error_of([&] { (void)replay(run, options); });
 }
 
 TEST(ForceError, DefinitionsOnAHandExample) {
@@ -68,7 +68,7 @@ TEST(Replay, SimulatedRunThroughTheOwnCsvFormatStillMatches) {
   auto options = default_options();
   const RecordedRun simulated = simulate_run(options.law.damper);
   const RecordedRun run =
-      mrd::tools::parse_run_csv(mrd::tools::format_run_csv(simulated), "sim.csv");
+      mrd::record::parse_run_csv(mrd::record::format_run_csv(simulated), "sim.csv");
   options.use_recorded_velocity = true;
   const auto result = replay(run, options);
   EXPECT_LT(result.force->nrmse, 1e-8);
@@ -121,7 +121,7 @@ TEST(Replay, CommandVoltageTimesTheDriverGainIsTheCurrent) {
   auto options = default_options();
   const RecordedRun run = simulate_run(options.law.damper);
   RecordedRun voltage = run;
-  voltage.coil_signal = mrd::tools::CoilSignal::kCommandVoltage;
+  voltage.coil_signal = mrd::record::CoilSignal::kCommandVoltage;
   for (double& v : voltage.coil) v /= 0.5;
   EXPECT_EQ(error_of(voltage, options),
             "simulated: the run logged the driver's command voltage, not the coil current: give "

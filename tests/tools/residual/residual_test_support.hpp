@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "tools/replay/run_reader.hpp"
+#include "record/run_reader.hpp"
 #include "tools/residual/fit_series.hpp"
 #include "tools/residual/residual_search.hpp"
 #include "tools/simulation/run_csv.hpp"
@@ -14,7 +14,7 @@ namespace mrd::tools::residual_testing {
 
 // A simulated run carrying `effects`, written in the run format and read back, so the
 // analysis sees exactly what the CLI would.
-inline RecordedRun simulated_recorded_run(RunProfile profile, const char* damper_class,
+inline record::RecordedRun simulated_recorded_run(RunProfile profile, const char* damper_class,
                                           std::vector<EffectRequest> effects, double duration = 0.0,
                                           std::uint64_t seed = 3) {
   RunOptions o;
@@ -25,10 +25,10 @@ inline RecordedRun simulated_recorded_run(RunProfile profile, const char* damper
   o.effects = std::move(effects);
   std::ostringstream csv;
   write_run_csv(csv, simulate_run(o), RunColumns{});
-  return parse_recorded_run(csv.str(), std::string(damper_class) + ".csv");
+  return record::parse_recorded_run(csv.str(), std::string(damper_class) + ".csv");
 }
 
-inline ResidualResult analyse(const RecordedRun& run) {
+inline ResidualResult analyse(const record::RecordedRun& run) {
   ResidualOptions options;
   options.threads = 2;
   return find_missing_effects(make_fit_series({run}, {}), options);

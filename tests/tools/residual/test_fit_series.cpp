@@ -8,15 +8,15 @@
 #include <numbers>
 #include <numeric>
 
-#include "tools/csv.hpp"
+#include "record/csv.hpp"
 #include "tools/replay/zero_phase_velocity.hpp"
 
 namespace {
 
 using namespace mrd::tools;
 
-RecordedRun sine_run(double rate, double seconds, bool with_velocity) {
-  RecordedRun run;
+mrd::record::RecordedRun sine_run(double rate, double seconds, bool with_velocity) {
+  mrd::record::RecordedRun run;
   run.name = "sine.csv";
   run.sample_rate = rate;
   const auto n = static_cast<std::size_t>(rate * seconds);
@@ -94,35 +94,35 @@ TEST(FitSeries, VelocityFromTheDisplacementWhenTheRunHasNone) {
 }
 
 TEST(ZeroPhaseVelocity, CutoffFollowsTheMotion) {
-  const RecordedRun run = sine_run(1000, 8, false);
+  const mrd::record::RecordedRun run = sine_run(1000, 8, false);
   // Five times 1.22 Hz: 4096 samples give bins of 0.244 Hz, and the Hann window spreads the
   // 1 Hz line so that 99 % of the power is reached at the fifth bin.
   EXPECT_NEAR(motion_velocity_cutoff(run.displacement, 1000.0), 6.10, 0.01);
-  RecordedRun fast = sine_run(1000, 8, false);
+  mrd::record::RecordedRun fast = sine_run(1000, 8, false);
   for (std::size_t i = 0; i < fast.size(); ++i) fast.displacement[i] = 1e-3 * std::sin(2.0 * std::numbers::pi * 30.0 * fast.time[i]);
   EXPECT_NEAR(motion_velocity_cutoff(fast.displacement, 1000.0), 150.0, 5.0);
 }
 
 TEST(FitSeries, RunsItCannotUseAreNamedWithTheReason) {
-  RecordedRun no_force = sine_run(1000, 1, true);
+  mrd::record::RecordedRun no_force = sine_run(1000, 1, true);
   no_force.force.clear();
   EXPECT_THROW(
       {
         try {
           (void)make_fit_series({no_force}, {});
-        } catch (const InputError& e) {
+        } catch (const mrd::record::InputError& e) {
           EXPECT_STREQ(e.what(), "sine.csv: the run has no force column; a residual needs the measured force");
           throw;
         }
       },
-      InputError);
-  RecordedRun voltage = sine_run(1000, 1, true);
-  voltage.coil_signal = CoilSignal::kCommandVoltage;
-  EXPECT_THROW((void)make_fit_series({voltage}, {}), InputError);
+      mrd::record::InputError);
+  mrd::record::RecordedRun voltage = sine_run(1000, 1, true);
+  voltage.coil_signal = mrd::record::CoilSignal::kCommandVoltage;
+  EXPECT_THROW((void)make_fit_series({voltage}, {}), mrd::record::InputError);
   FitSeriesOptions with_gain;
   with_gain.amps_per_volt = 0.5;
   EXPECT_DOUBLE_EQ(make_fit_series({voltage}, with_gain).current[0], 0.25);
-  EXPECT_THROW((void)make_fit_series({}, {}), InputError);
+  EXPECT_THROW((void)make_fit_series({}, {}), mrd::record::InputError);
 }
 
 }  // namespace

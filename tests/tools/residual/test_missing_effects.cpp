@@ -21,7 +21,7 @@ class UndeclaredEffect : public ::testing::TestWithParam<std::tuple<const char*,
 
 TEST_P(UndeclaredEffect, IsNamedFirstAndTheErrorFalls) {
   const auto [damper, effect] = GetParam();
-  const RecordedRun run = residual_testing::simulated_recorded_run(RunProfile::kTable4, damper, {{effect, 1.0}}, 4.0);
+  const mrd::record::RecordedRun run = residual_testing::simulated_recorded_run(RunProfile::kTable4, damper, {{effect, 1.0}}, 4.0);
   const ResidualResult r = residual_testing::analyse(run);
   ASSERT_FALSE(r.accepted.empty()) << residual_summary({run}, r);
   EXPECT_EQ(r.accepted.front(), effect) << residual_summary({run}, r);
@@ -39,7 +39,7 @@ INSTANTIATE_TEST_SUITE_P(
 class CleanRun : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(CleanRun, GivesNoneAndTheSameErrorAfter) {
-  const RecordedRun run = residual_testing::simulated_recorded_run(RunProfile::kTable4, GetParam(), {}, 4.0);
+  const mrd::record::RecordedRun run = residual_testing::simulated_recorded_run(RunProfile::kTable4, GetParam(), {}, 4.0);
   const ResidualResult r = residual_testing::analyse(run);
   EXPECT_TRUE(r.accepted.empty()) << residual_summary({run}, r);
   EXPECT_EQ(r.after.all, r.before.all);
@@ -54,7 +54,7 @@ INSTANTIATE_TEST_SUITE_P(BothClasses, CleanRun, ::testing::Values("50kN", "1kN")
 // At constant current a coil lag shows only while the coil is switched on at the start, 10 ms
 // of 4 s; that is enough, and the time constant comes out right.
 TEST(MissingEffects, CoilLagOfAConstantCurrentRunFromItsSwitchOn) {
-  const RecordedRun run = residual_testing::simulated_recorded_run(RunProfile::kSine, "1kN", {{"coil_lag", 2.0}}, 4.0);
+  const mrd::record::RecordedRun run = residual_testing::simulated_recorded_run(RunProfile::kSine, "1kN", {{"coil_lag", 2.0}}, 4.0);
   const ResidualResult r = residual_testing::analyse(run);
   ASSERT_EQ(r.accepted, std::vector<std::string>{"coil_lag"}) << residual_summary({run}, r);
   EXPECT_NEAR(r.final_model.effects.coil_lag.time_constant, 2.0 * 5.3e-3, 1e-3);

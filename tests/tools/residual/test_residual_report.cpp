@@ -7,7 +7,7 @@
 #include <regex>
 #include <set>
 
-#include "firmware/config_loader.hpp"
+#include "config/config_loader.hpp"
 #include "tests/tools/residual/residual_test_support.hpp"
 
 namespace {
@@ -42,8 +42,8 @@ TEST(ResidualReport, JsonHasExactlyTheDocumentedKeys) {
 
 TEST(ResidualReport, UpdatedConfigLoadsWithTheEffectOnAndTheFittedDamper) {
   const ResidualResult& r = gas_spring_result();
-  const std::string text = updated_config(mrd::firmware::default_config_text(), r);
-  const auto loaded = mrd::firmware::load_config_text(text, "updated.toml");
+  const std::string text = updated_config(mrd::config::default_config_text(), r);
+  const auto loaded = mrd::config::load_config_text(text, "updated.toml");
   ASSERT_TRUE(loaded.ok()) << loaded.report() << text;
   const auto& d = loaded.config.law.damper;
   EXPECT_TRUE(d.effects.gas_spring.enabled);

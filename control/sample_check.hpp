@@ -1,0 +1,61 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+#include "hal/clock.hpp"
+#include "hal/displacement_source.hpp"
+#include "model/observer.hpp"
+
+namespace mrd::control {
+
+// Step 2 of a cycle: what the newest LVDT sample is worth.
+enum class SampleCheck : std::uint8_t {
+  kFresh,       // new, recent, usable and in range: the loop uses its value
+  kMissing,     // no sample arrived since the previous period
+  kStale,       // a repeated sequence number, or older than the allowed age
+  kCorrupted,   // flagged corrupted, invalid or sensor fault by the back end
+  kNotFinite,   // NaN or infinite value
+  kOutOfRange,  // outside the configured displacement range
+  kFrozen,      // new, but its value repeated exactly for more than frozen_periods samples
+};
+[[nodiscard]] std::string_view to_string(SampleCheck c);
+
+[[nodiscard]] constexpr bool is_bad_value(SampleCheck c) {
+  return c == SampleCheck::kCorrupted || c == SampleCheck::kNotFinite || c == SampleCheck::kOutOfRange ||
+         c == SampleCheck::kFrozen;
+}
+
+// Freshness, range and plausibility check with memory: it remembers the last sequence number and
+// holds the last good value, which the control law keeps using while samples are missing or bad.
+// A frozen sensor (frames keep coming, one value) shows only as new samples that repeat the
+// value exactly; with frozen_periods > 0, more than that many such repeats in a row are bad.
+// Off (0) by default: a rig at rest can read one value for as long as it rests.
+class SampleChecker {
+ public:
+  SampleChecker(double min, double max, hal::Timestamp max_age, int frozen_periods = 0)
+      : min_(min), max_(max), max_age_(max_age), frozen_periods_(frozen_periods) {}
+
+  SampleCheck check(const std::optional<hal::DisplacementSample>& sample, hal::Timestamp now);
+
+  [[nodiscard]] double held_value() const { return held_; }  // [m], 0 before the first good one
+  // The held value's timing at `now` for the velocity tracker: fresh when `check` (this
+  // period's) took it, with the interval since the good sample before it.
+  [[nodiscard]] model::SampleTiming timing(SampleCheck check, hal::Timestamp now) const;
+  [[nodiscard]] bool has_value() const { return has_value_; }
+
+ private:
+  double min_;
+  double max_;
+  hal::Timestamp max_age_;
+  int frozen_periods_;
+  int repeats_ = 0;  // consecutive new samples with the value of the one before
+  double held_ = 0.0;
+  bool has_value_ = false;
+  hal::Timestamp held_at_{};     // the held sample's own timestamp
+  hal::Timestamp held_interval_{};  // from the good sample before it; 0 for the first
+  std::optional<std::uint32_t> last_sequence_;
+};
+
+}  // namespace mrd::control

@@ -1,0 +1,195 @@
+#include "control/supervisor.hpp"
+
+#include <cmath>
+#include <string>
+
+namespace mrd::control {
+
+std::string_view to_string(SupervisorState s) {
+  switch (s) {
+    case SupervisorState::kInit: return "INIT";
+    case SupervisorState::kRun: return "RUN";
+    case SupervisorState::kDegraded: return "DEGRADED";
+    case SupervisorState::kSafe: return "SAFE";
+    case SupervisorState::kCount: break;
+  }
+  return "?";
+}
+
+std::string_view to_string(Trigger t) {
+  switch (t) {
+    case Trigger::kNone: return "none";
+    case Trigger::kGoodPeriods: return "good_periods";
+    case Trigger::kSampleMissing: return "sample_missing";
+    case Trigger::kSensorStale: return "sensor_stale";
+    case Trigger::kSampleOutOfRange: return "sample_out_of_range";
+    case Trigger::kSampleNotFinite: return "sample_not_finite";
+    case Trigger::kSampleCorrupted: return "sample_corrupted";
+    case Trigger::kSampleFrozen: return "sample_frozen";
+    case Trigger::kDriverFault: return "driver_fault";
+    case Trigger::kFaultLineUnreadable: return "fault_line_unreadable";
+    case Trigger::kCurrentDisagreement: return "current_disagreement";
+    case Trigger::kSetpointWriteFailed: return "setpoint_write_failed";
+    case Trigger::kOverrun: return "overrun";
+    case Trigger::kRepeatedOverruns: return "repeated_overruns";
+    case Trigger::kShutdown: return "shutdown";
+    case Trigger::kCount: break;
+  }
+  return "?";
+}
+
+ValidationReport SupervisorConfig::validate() const {
+  ValidationReport r;
+  const auto at_least = [&r](std::string_view field, int value, int lo) {
+    r.check(value >= lo, field, "must be >= " + std::to_string(lo) + ", got " + std::to_string(value));
+  };
+  if (r.check(std::isfinite(displacement_min) && std::isfinite(displacement_max), "displacement_min",
+              "displacement_min and displacement_max must be finite")) {
+    r.check(displacement_max > displacement_min, "displacement_max",
+            "must be above displacement_min");
+  }
+  at_least("stale_periods", stale_periods, 1);
+  at_least("bad_sample_periods", bad_sample_periods, 1);
+  at_least("frozen_periods", frozen_periods, 0);
+  r.check(std::isfinite(current_tolerance) && current_tolerance > 0.0, "current_tolerance",
+          "must be a finite value > 0 A");
+  at_least("current_disagreement_periods", current_disagreement_periods, 1);
+  at_least("write_failure_periods", write_failure_periods, 1);
+  at_least("overrun_limit", overrun_limit, 1);
+  at_least("overrun_window", overrun_window, 1);
+  r.check(std::isfinite(fail_safe_current), "fail_safe_current", "must be finite");
+  if (!enable_in_safe) {
+    r.check(fail_safe_current == 0.0, "fail_safe_current",
+            "must be 0 A when safety.enable_in_safe is false: a disabled driver drives no current");
+  }
+  at_least("recovery_periods", recovery_periods, 1);
+  at_least("degraded_clear_periods", degraded_clear_periods, 1);
+  return r;
+}
+
+std::uint64_t TransitionCounts::total() const {
+  std::uint64_t sum = 0;
+  for (const auto& c : counts_) sum += c.load(std::memory_order_relaxed);
+  return sum;
+}
+
+std::uint64_t TransitionCounts::into(SupervisorState to) const {
+  std::uint64_t sum = 0;
+  for (std::size_t from = 0; from < kStates; ++from) {
+    for (std::size_t why = 0; why < kTriggers; ++why) {
+      sum += get(static_cast<SupervisorState>(from), to, static_cast<Trigger>(why));
+    }
+  }
+  return sum;
+}
+
+namespace {
+Trigger trigger_of(SampleCheck c) {
+  switch (c) {
+    case SampleCheck::kOutOfRange: return Trigger::kSampleOutOfRange;
+    case SampleCheck::kNotFinite: return Trigger::kSampleNotFinite;
+    case SampleCheck::kCorrupted: return Trigger::kSampleCorrupted;
+    case SampleCheck::kFrozen: return Trigger::kSampleFrozen;
+    case SampleCheck::kMissing:
+    case SampleCheck::kStale: return Trigger::kSampleMissing;
+    case SampleCheck::kFresh: break;
+  }
+  return Trigger::kNone;
+}
+}  // namespace
+
+void Supervisor::update_counters(const SupervisorInputs& in) {
+  const auto run = [](std::int64_t& counter, bool condition) { counter = condition ? counter + 1 : 0; };
+  run(without_sample_, in.sample != SampleCheck::kFresh);
+  run(bad_samples_, is_bad_value(in.sample));
+  run(disagreeing_, in.current_disagrees);
+  run(failed_writes_, in.setpoint_write_failed);
+  if (in.overruns > 0) {
+    overruns_ += in.overruns;
+    clean_periods_ = 0;
+  } else if (++clean_periods_ >= config_.overrun_window) {
+    overruns_ = 0;
+  }
+}
+
+// SAFE triggers, in priority order: the first that holds names the transition.
+Trigger Supervisor::hard_trigger(const SupervisorInputs& in) const {
+  if (shutdown_) return Trigger::kShutdown;
+  if (!in.driver_fault) return Trigger::kFaultLineUnreadable;
+  if (*in.driver_fault) return Trigger::kDriverFault;
+  if (bad_samples_ >= config_.bad_sample_periods) return trigger_of(in.sample);
+  if (without_sample_ > config_.stale_periods) return Trigger::kSensorStale;
+  if (disagreeing_ >= config_.current_disagreement_periods) return Trigger::kCurrentDisagreement;
+  if (failed_writes_ >= config_.write_failure_periods) return Trigger::kSetpointWriteFailed;
+  if (overruns_ >= config_.overrun_limit) return Trigger::kRepeatedOverruns;
+  return Trigger::kNone;
+}
+
+// DEGRADED triggers: a problem that has not lasted long enough for SAFE.
+Trigger Supervisor::soft_trigger(const SupervisorInputs& in) const {
+  if (in.sample != SampleCheck::kFresh) return trigger_of(in.sample);
+  if (in.current_disagrees) return Trigger::kCurrentDisagreement;
+  if (in.setpoint_write_failed) return Trigger::kSetpointWriteFailed;
+  if (in.overruns > 0) return Trigger::kOverrun;
+  return Trigger::kNone;
+}
+
+void Supervisor::go(SupervisorState to, Trigger why, hal::Timestamp now, SupervisorDecision& d) {
+  counts_.count(state_, to, why);
+  state_ = to;
+  since_ = now;
+  d.trigger = why;
+  if (to == SupervisorState::kSafe) {
+    // SAFE is a clean start: recovery needs recovery_periods good periods from here, and an
+    // overrun after it counts as the first again.
+    good_ = 0;
+    overruns_ = 0;
+  }
+}
+
+SupervisorDecision Supervisor::step(const SupervisorInputs& in, hal::Timestamp now) {
+  update_counters(in);
+  const Trigger hard = hard_trigger(in);
+  const Trigger soft = soft_trigger(in);
+  good_ = (hard == Trigger::kNone && soft == Trigger::kNone) ? good_ + 1 : 0;
+
+  SupervisorDecision d;
+  switch (state_) {
+    case SupervisorState::kInit:
+      // Before the first proof of health a silent sensor keeps INIT (same outputs as SAFE);
+      // every other hard trigger is a fault already.
+      if (hard != Trigger::kNone && hard != Trigger::kSensorStale) {
+        go(SupervisorState::kSafe, hard, now, d);
+      } else if (good_ >= config_.recovery_periods) {
+        go(SupervisorState::kRun, Trigger::kGoodPeriods, now, d);
+      }
+      break;
+    case SupervisorState::kRun:
+      if (hard != Trigger::kNone) {
+        go(SupervisorState::kSafe, hard, now, d);
+      } else if (soft != Trigger::kNone) {
+        go(SupervisorState::kDegraded, soft, now, d);
+      }
+      break;
+    case SupervisorState::kDegraded:
+      if (hard != Trigger::kNone) {
+        go(SupervisorState::kSafe, hard, now, d);
+      } else if (good_ >= config_.degraded_clear_periods) {
+        go(SupervisorState::kRun, Trigger::kGoodPeriods, now, d);
+      }
+      break;
+    case SupervisorState::kSafe:
+      if (!shutdown_ && good_ >= config_.recovery_periods) {
+        go(SupervisorState::kRun, Trigger::kGoodPeriods, now, d);
+      }
+      break;
+    case SupervisorState::kCount: break;
+  }
+  d.state = state_;
+  d.in_control = state_ == SupervisorState::kRun || state_ == SupervisorState::kDegraded;
+  d.enable = d.in_control || config_.enable_in_safe;
+  d.toggle_heartbeat = d.in_control;
+  return d;
+}
+
+}  // namespace mrd::control

@@ -1,0 +1,146 @@
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+#include "control/sample_check.hpp"
+#include "hal/clock.hpp"
+#include "common/validation_report.hpp"
+
+namespace mrd::control {
+
+// The supervisor's states. INIT and SAFE drive the same outputs (fail-safe current, enable as
+// configured); RUN and DEGRADED let the control law drive the coil. Table: docs/FIRMWARE.md.
+enum class SupervisorState : std::uint8_t { kInit, kRun, kDegraded, kSafe, kCount };
+
+// Why a transition happened. The same trigger names the soft step (RUN -> DEGRADED) and the
+// hard one (-> SAFE) of a problem that lasts; the counts tell them apart by (from, to).
+enum class Trigger : std::uint8_t {
+  kNone,
+  kGoodPeriods,           // enough consecutive good periods: INIT/SAFE -> RUN, DEGRADED -> RUN
+  kSampleMissing,         // no fresh sample this period (nothing new, repeated, or too old)
+  kSensorStale,           // more than stale_periods periods without a fresh usable sample
+  kSampleOutOfRange,      // outside [displacement_min, displacement_max]
+  kSampleNotFinite,       // NaN or infinite
+  kSampleCorrupted,       // checksum/decode failure or sensor fault flag
+  kSampleFrozen,          // new samples repeating one value for more than frozen_periods
+  kDriverFault,           // the driver fault line is set
+  kFaultLineUnreadable,   // the driver fault line cannot be read
+  kCurrentDisagreement,   // measured current differs from the setpoint by more than the tolerance
+  kSetpointWriteFailed,   // the driver refused or could not take the setpoint
+  kOverrun,               // the previous cycle overran its period
+  kRepeatedOverruns,      // overrun_limit overruns without overrun_window clean periods between
+  kShutdown,              // SIGTERM/SIGINT: SAFE and stay there
+  kCount
+};
+
+[[nodiscard]] std::string_view to_string(SupervisorState s);
+[[nodiscard]] std::string_view to_string(Trigger t);
+
+// Safety limits. Times are in control periods, so they scale with the rate.
+struct SupervisorConfig {
+  double displacement_min = -0.050;  // [m]
+  double displacement_max = 0.050;   // [m]
+  int stale_periods = 5;             // SAFE after more than this many periods without a fresh sample
+  int bad_sample_periods = 3;        // SAFE after this many consecutive NaN/out-of-range/corrupted/frozen
+  int frozen_periods = 0;            // a sample repeating its value exactly more than this often in a
+                                     // row is frozen (0: no check; a rig at rest reads one value)
+  double current_tolerance = 0.1;    // [A] |measured - setpoint| above this disagrees
+  int current_disagreement_periods = 10;  // SAFE after this many consecutive disagreeing periods
+  int write_failure_periods = 3;     // SAFE after this many consecutive failed setpoint writes
+  int overrun_limit = 3;             // SAFE after this many overruns ...
+  int overrun_window = 1000;         // ... with fewer than this many clean periods between two
+  double fail_safe_current = 0.0;    // [A] in INIT and SAFE
+  bool enable_in_safe = false;       // driver enable line in INIT and SAFE
+  int recovery_periods = 200;        // M: good periods before INIT/SAFE -> RUN
+  int degraded_clear_periods = 10;   // good periods before DEGRADED -> RUN
+
+  [[nodiscard]] ValidationReport validate() const;  // field paths relative to [safety]
+};
+
+// What the loop observed this period. Everything the supervisor judges arrives here.
+struct SupervisorInputs {
+  SampleCheck sample = SampleCheck::kFresh;
+  std::optional<bool> driver_fault = false;  // nullopt: the line could not be read
+  bool current_disagrees = false;            // judged by the loop, only when a reading exists
+  bool setpoint_write_failed = false;        // the previous period's write
+  std::uint32_t overruns = 0;                // periods missed before this one
+};
+
+struct SupervisorDecision {
+  SupervisorState state = SupervisorState::kInit;
+  Trigger trigger = Trigger::kNone;  // of this period's transition, kNone without one
+  bool in_control = false;           // RUN or DEGRADED: the control law drives the coil
+  bool enable = false;               // driver enable line
+  bool toggle_heartbeat = false;     // only while in control
+};
+
+// Transition counts by (from, to, trigger). Written by the loop thread only, read by any thread
+// (relaxed atomics, no locks, no allocation).
+class TransitionCounts {
+ public:
+  static constexpr std::size_t kStates = static_cast<std::size_t>(SupervisorState::kCount);
+  static constexpr std::size_t kTriggers = static_cast<std::size_t>(Trigger::kCount);
+
+  void count(SupervisorState from, SupervisorState to, Trigger why) {
+    auto& c = counts_[index(from, to, why)];
+    c.store(c.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
+  }
+  [[nodiscard]] std::uint64_t get(SupervisorState from, SupervisorState to, Trigger why) const {
+    return counts_[index(from, to, why)].load(std::memory_order_relaxed);
+  }
+  [[nodiscard]] std::uint64_t total() const;
+  // Every transition into `to`, whatever the trigger and the state it left.
+  [[nodiscard]] std::uint64_t into(SupervisorState to) const;
+
+ private:
+  static std::size_t index(SupervisorState from, SupervisorState to, Trigger why) {
+    return (static_cast<std::size_t>(from) * kStates + static_cast<std::size_t>(to)) * kTriggers +
+           static_cast<std::size_t>(why);
+  }
+  std::array<std::atomic<std::uint64_t>, kStates * kStates * kTriggers> counts_{};
+};
+
+// The safety state machine: a pure function of (state, inputs, now). It reads no clock and does
+// no I/O, so tests script hours of faults in milliseconds. Transitions and reaction times are
+// tabulated in docs/FIRMWARE.md.
+class Supervisor {
+ public:
+  explicit Supervisor(const SupervisorConfig& config) : config_(config) {}
+
+  SupervisorDecision step(const SupervisorInputs& in, hal::Timestamp now);
+  // From the next step on: SAFE with kShutdown, and no recovery.
+  void request_shutdown() { shutdown_ = true; }
+
+  [[nodiscard]] SupervisorState state() const { return state_; }
+  [[nodiscard]] hal::Timestamp since() const { return since_; }  // time of the last transition
+  [[nodiscard]] const TransitionCounts& transitions() const { return counts_; }
+  [[nodiscard]] const SupervisorConfig& config() const { return config_; }
+
+ private:
+  void update_counters(const SupervisorInputs& in);
+  [[nodiscard]] Trigger hard_trigger(const SupervisorInputs& in) const;
+  [[nodiscard]] Trigger soft_trigger(const SupervisorInputs& in) const;
+  void go(SupervisorState to, Trigger why, hal::Timestamp now, SupervisorDecision& d);
+
+  SupervisorConfig config_;
+  SupervisorState state_ = SupervisorState::kInit;
+  hal::Timestamp since_{};
+  bool shutdown_ = false;
+
+  // Consecutive-period counters.
+  std::int64_t without_sample_ = 0;
+  std::int64_t bad_samples_ = 0;
+  std::int64_t disagreeing_ = 0;
+  std::int64_t failed_writes_ = 0;
+  std::int64_t good_ = 0;
+  std::int64_t overruns_ = 0;        // since the last overrun_window clean periods
+  std::int64_t clean_periods_ = 0;   // since the last overrun
+
+  TransitionCounts counts_;
+};
+
+}  // namespace mrd::control

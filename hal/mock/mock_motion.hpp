@@ -1,0 +1,40 @@
+#pragma once
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <optional>
+#include <random>
+
+#include "hal/clock.hpp"
+#include "hal/mock/mock_hal.hpp"
+
+namespace mrd::hal::mock {
+
+// Moves the mock LVDT along x = A sin(2 pi f t) from the first advance(), with white noise:
+// the rig motion of the paper's Table 4 test for a controller on the mock HAL. Kinematics only;
+// the damper's physics, its buses and its faults are mrd-plant's (sim/). Allocation-free.
+class MockMotion {
+ public:
+  MockMotion(double amplitude, double frequency, double noise_rms, std::uint32_t seed)
+      : amplitude_(amplitude), frequency_(frequency), rng_(seed), noise_(0.0, noise_rms) {}
+
+  // Before each cycle: the mock clock to `now`, the LVDT to the motion at `now`.
+  void advance(MockHal& hal, Timestamp now) {
+    if (!start_) start_ = now;
+    hal.clock.set(now);
+    const double t = std::chrono::duration<double>(now - *start_).count();
+    const double noise = noise_.stddev() > 0.0 ? noise_(rng_) : 0.0;
+    hal.lvdt.set_truth(amplitude_ * std::sin(2.0 * std::numbers::pi * frequency_ * t) + noise);
+  }
+
+ private:
+  double amplitude_;  // [m]
+  double frequency_;  // [Hz]
+  std::optional<Timestamp> start_;
+  std::mt19937_64 rng_;
+  std::normal_distribution<double> noise_;
+};
+
+}  // namespace mrd::hal::mock

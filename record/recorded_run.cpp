@@ -1,0 +1,36 @@
+#include "record/recorded_run.hpp"
+
+#include <algorithm>
+
+namespace mrd::record {
+
+std::string_view to_string(CoilSignal s) {
+  switch (s) {
+    case CoilSignal::kCurrent: return "current";
+    case CoilSignal::kCommandVoltage: return "command voltage";
+  }
+  return "unknown";
+}
+
+double nominal_sample_rate(const std::vector<double>& time) {
+  if (time.size() < 2 || !(time.back() > time.front())) return 0.0;
+  return static_cast<double>(time.size() - 1) / (time.back() - time.front());
+}
+
+SamplingSummary summarize_sampling(const std::vector<double>& time) {
+  SamplingSummary s;
+  const double rate = nominal_sample_rate(time);
+  if (rate <= 0.0) return s;
+  s.nominal_period = 1.0 / rate;
+  s.min_period = time[1] - time[0];
+  s.max_period = s.min_period;
+  for (std::size_t i = 1; i < time.size(); ++i) {
+    const double dt = time[i] - time[i - 1];
+    s.min_period = std::min(s.min_period, dt);
+    s.max_period = std::max(s.max_period, dt);
+    if (dt > 1.5 * s.nominal_period) ++s.gaps;
+  }
+  return s;
+}
+
+}  // namespace mrd::record

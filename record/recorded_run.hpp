@@ -1,0 +1,65 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace mrd::record {
+
+// What the run's coil channel holds.
+enum class CoilSignal : std::uint8_t {
+  kCurrent,         // the coil current [A] (measured, commanded, or a constant the test held)
+  kCommandVoltage,  // the driver's command voltage [V]; replay needs the driver gain [A/V]
+};
+[[nodiscard]] std::string_view to_string(CoilSignal s);
+
+// One recorded damper run in SI units, whatever file it came from: the readers convert at the
+// edge. Time, displacement and the coil channel are always there; the other channels are empty
+// vectors when the run did not record them, otherwise as long as `time`.
+struct RecordedRun {
+  std::string name;          // the file, for messages, plots and reports
+  double sample_rate = 0.0;  // nominal [Hz]: (n - 1) / (last time - first time)
+  CoilSignal coil_signal = CoilSignal::kCurrent;
+  std::string coil_source;  // where the coil channel came from: "current_A", "--current 0.5 A", ...
+
+  std::vector<double> time;          // [s], strictly increasing, as recorded (not shifted to 0)
+  std::vector<double> displacement;  // [m]
+  std::vector<double> coil;          // [A], or [V] for kCommandVoltage
+  std::vector<double> force;         // [N], the measured damper force
+  std::vector<double> velocity;      // [m/s], as recorded (often differenced from displacement)
+  std::vector<double> B;             // [T]
+  // Degrees Celsius, not kelvin: MR fluid data sheets and viscosity-temperature laws are
+  // written in Celsius, and a thermal drift is a difference, which is the same in both.
+  std::vector<double> temperature;
+
+  // What the reader did that the user must know (ignored columns, dropped CAN frames), one
+  // line each; reports print them.
+  std::vector<std::string> notes;
+
+  [[nodiscard]] std::size_t size() const { return time.size(); }
+  [[nodiscard]] double duration() const {
+    return time.size() > 1 ? time.back() - time.front() : 0.0;
+  }
+  [[nodiscard]] bool has_force() const { return !force.empty(); }
+  [[nodiscard]] bool has_velocity() const { return !velocity.empty(); }
+  [[nodiscard]] bool has_B() const { return !B.empty(); }
+  [[nodiscard]] bool has_temperature() const { return !temperature.empty(); }
+};
+
+// How evenly a run is sampled. Periods are time differences between consecutive samples.
+struct SamplingSummary {
+  double nominal_period = 0.0;  // [s], 1 / sample_rate
+  double min_period = 0.0;      // [s]
+  double max_period = 0.0;      // [s]
+  std::size_t gaps = 0;         // periods longer than 1.5 nominal periods (lost samples)
+};
+[[nodiscard]] SamplingSummary summarize_sampling(const std::vector<double>& time);
+
+// The nominal rate from the span, not the median step: a time column rounded to 0.1 ms (the
+// Dyke file, 3004.8 Hz) has steps of 0.3 and 0.4 ms but its mean step is exact. 0 for fewer
+// than two samples.
+[[nodiscard]] double nominal_sample_rate(const std::vector<double>& time);
+
+}  // namespace mrd::record

@@ -1,0 +1,270 @@
+#include "record/run_csv.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "record/csv.hpp"
+
+namespace mrd::record {
+
+namespace {
+
+// One column the run uses: where it is in each row and how to convert it.
+struct UsedColumn {
+  std::string label;  // header name, or the 1-based position for headerless files
+  std::size_t index = 0;
+  ColumnUnit unit;
+};
+
+std::string seconds(double t) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.9g s", t);
+  return text;
+}
+
+class RunCsvParser {
+ public:
+  RunCsvParser(std::string_view text, const std::string& name, const RunReadOptions& options)
+      : lines_(text, name), name_(name), options_(options) {
+    run_.name = name;
+  }
+
+  RecordedRun parse() {
+    const auto first = lines_.next();
+    if (!first) throw fail("", "empty file: expected a header (time_s, displacement_mm, ...)");
+    whitespace_ = first->find(',') == std::string_view::npos;
+    const bool headerless = options_.columns && options_.columns->by_position;
+    headerless ? map_positions(*first) : read_header(*first);
+    const std::size_t header_line = lines_.line_number();
+    check_required();
+    for (auto row = headerless ? first : lines_.next(); row; row = lines_.next()) read_row(*row);
+    if (run_.size() < 2) {
+      throw InputError(input_error_message(
+          name_, header_line, "",
+          "a run needs at least 2 samples, got " + std::to_string(run_.size())));
+    }
+    run_.sample_rate = nominal_sample_rate(run_.time);
+    return std::move(run_);
+  }
+
+ private:
+  InputError fail(std::string_view column, const std::string& message) const {
+    return InputError(input_error_message(name_, lines_.line_number(), column, message));
+  }
+
+  std::vector<std::string_view> fields(std::string_view line) const {
+    auto out = split_csv_line(line, whitespace_);
+    for (auto& f : out) f = unquote(f);
+    return out;
+  }
+
+  void use(std::string label, std::size_t index, const ColumnUnit& unit) {
+    for (const auto& c : used_) {
+      if (c.unit.quantity == unit.quantity) {
+        throw fail(label, "a second " + std::string(to_string(unit.quantity)) +
+                              " column (the first is '" + c.label + "')");
+      }
+    }
+    used_.push_back({std::move(label), index, unit});
+  }
+
+  void map_positions(std::string_view first_row) {
+    width_ = fields(first_row).size();
+    for (const auto& e : options_.columns->entries) {
+      if (e.position > width_) {
+        throw fail(e.source, "no such column: the first row has " + std::to_string(width_));
+      }
+      use(e.source, e.position - 1, e.unit);
+    }
+  }
+
+  void read_header(std::string_view line) {
+    const auto names = fields(line);
+    width_ = names.size();
+    header_.assign(names.begin(), names.end());
+    if (options_.columns) {
+      for (const auto& e : options_.columns->entries) {
+        std::optional<std::size_t> index;
+        for (std::size_t i = 0; i < names.size(); ++i) {
+          if (names[i] != e.source) continue;
+          if (index) throw fail(e.source, "appears twice in the header");
+          index = i;
+        }
+        if (!index)
+          throw fail(e.source, "mapped by --columns but not in the header (" + header_list() + ")");
+        use(e.source, *index, e.unit);
+      }
+      std::string ignored;
+      for (const auto& h : header_) {
+        bool mapped = false;
+        for (const auto& c : used_) mapped = mapped || c.label == h;
+        if (!mapped && !h.empty()) ignored.append(ignored.empty() ? "" : ", ").append(h);
+      }
+      if (!ignored.empty()) run_.notes.push_back("columns not mapped, ignored: " + ignored);
+      return;
+    }
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      if (names[i].empty()) throw fail(std::to_string(i + 1), "empty column name");
+      const UnitLookup lookup = column_unit(names[i]);
+      if (!lookup.unit) throw fail(names[i], lookup.error);
+      use(std::string(names[i]), i, *lookup.unit);
+    }
+  }
+
+  std::string header_list() const {
+    std::string out;
+    for (const auto& h : header_) out.append(out.empty() ? "" : ", ").append(h);
+    return out;
+  }
+
+  const UsedColumn* find(RunQuantity q) const {
+    for (const auto& c : used_) {
+      if (c.unit.quantity == q) return &c;
+    }
+    return nullptr;
+  }
+
+  // Time (or a rate), displacement and a coil signal are needed; decided once, before any row.
+  void check_required() {
+    const UsedColumn* time = find(RunQuantity::kTime);
+    if (time && options_.sample_rate) {
+      throw fail(time->label, "--sample-rate is for files without a time column");
+    }
+    if (!time && !options_.sample_rate) {
+      throw fail("", "no time column: expected time_s or time_ms (or give --sample-rate)");
+    }
+    if (options_.sample_rate &&
+        !(*options_.sample_rate > 0.0 && std::isfinite(*options_.sample_rate))) {
+      throw fail("", "--sample-rate must be a finite number > 0");
+    }
+    if (!find(RunQuantity::kDisplacement)) {
+      throw fail(
+          "",
+          "no displacement column: expected displacement_m, displacement_mm or displacement_cm");
+    }
+    const UsedColumn* current = find(RunQuantity::kCurrent);
+    const UsedColumn* voltage = find(RunQuantity::kVoltage);
+    constant_ = constant_current(options_, name_);
+    if (constant_ && (current || voltage)) {
+      throw fail((current ? current : voltage)->label,
+                 "the file has a coil column; --current and --current-from-name are for files "
+                 "without one");
+    }
+    if (!constant_ && !current && !voltage) {
+      throw fail("",
+                 "no coil current: expected a current_A or current_mA column, a voltage_V column, "
+                 "or --current / --current-from-name");
+    }
+    if (current && voltage) {
+      run_.notes.push_back("column '" + voltage->label +
+                           "' ignored: the run has the coil current ('" + current->label + "')");
+      std::erase_if(used_,
+                    [](const UsedColumn& c) { return c.unit.quantity == RunQuantity::kVoltage; });
+    }
+    if (constant_) {
+      run_.coil_source = constant_->source;
+    } else {
+      run_.coil_signal = current ? CoilSignal::kCurrent : CoilSignal::kCommandVoltage;
+      run_.coil_source = (current ? current : voltage)->label;
+    }
+  }
+
+  std::vector<double>& channel(RunQuantity q) {
+    switch (q) {
+      case RunQuantity::kTime: return run_.time;
+      case RunQuantity::kDisplacement: return run_.displacement;
+      case RunQuantity::kCurrent:
+      case RunQuantity::kVoltage: return run_.coil;
+      case RunQuantity::kForce: return run_.force;
+      case RunQuantity::kVelocity: return run_.velocity;
+      case RunQuantity::kFluxDensity: return run_.B;
+      case RunQuantity::kTemperature: return run_.temperature;
+    }
+    return run_.time;  // not reached: the switch covers every quantity
+  }
+
+  void read_row(std::string_view line) {
+    const auto cells = fields(line);
+    if (cells.size() != width_) {
+      const std::string where = header_.empty() ? "the first row" : "the header";
+      const std::string column =
+          cells.size() < width_
+              ? (header_.empty() ? std::to_string(cells.size() + 1) : header_[cells.size()])
+              : std::to_string(width_ + 1);
+      throw fail(column, "ragged row: " + std::to_string(cells.size()) + " fields, but " + where +
+                             " has " + std::to_string(width_));
+    }
+    const std::size_t n = run_.size();
+    for (const auto& c : used_) {
+      const std::string_view cell = cells[c.index];
+      if (cell.empty()) throw fail(c.label, "empty cell");
+      const auto value = parse_finite(cell);
+      if (!value) throw fail(c.label, "'" + std::string(cell) + "' is not a finite number");
+      const double v = c.unit.to_internal(*value);
+      if (!std::isfinite(v)) {
+        throw fail(c.label, "'" + std::string(cell) + "' overflows once converted to SI");
+      }
+      if (c.unit.quantity == RunQuantity::kTime && n > 0) {
+        const double previous = run_.time.back();
+        if (v < previous)
+          throw fail(c.label, "time goes backwards: " + seconds(v) + " after " + seconds(previous));
+        if (v == previous) throw fail(c.label, "time does not increase: " + seconds(v) + " twice");
+      }
+      channel(c.unit.quantity).push_back(v);
+    }
+    if (options_.sample_rate) run_.time.push_back(static_cast<double>(n) / *options_.sample_rate);
+    if (constant_) run_.coil.push_back(constant_->amps);
+  }
+
+  LineReader lines_;
+  const std::string& name_;
+  const RunReadOptions& options_;
+  RecordedRun run_;
+  bool whitespace_ = false;
+  std::size_t width_ = 0;
+  std::vector<std::string> header_;
+  std::vector<UsedColumn> used_;
+  std::optional<ConstantCurrent> constant_;
+};
+
+}  // namespace
+
+RecordedRun parse_run_csv(std::string_view text, const std::string& name,
+                          const RunReadOptions& options) {
+  return RunCsvParser(text, name, options).parse();
+}
+
+std::string format_run_csv(const RecordedRun& run) {
+  struct Out {
+    const char* header;
+    const std::vector<double>* values;
+    double per_si;  // file unit per SI unit
+  };
+  const bool voltage = run.coil_signal == CoilSignal::kCommandVoltage;
+  const Out all[] = {{"time_s", &run.time, 1.0},
+                     {"displacement_mm", &run.displacement, 1e3},
+                     {voltage ? "voltage_V" : "current_A", &run.coil, 1.0},
+                     {"force_N", &run.force, 1.0},
+                     {"velocity_mm_s", &run.velocity, 1e3},
+                     {"B_T", &run.B, 1.0},
+                     {"temperature_C", &run.temperature, 1.0}};
+  std::vector<Out> columns;
+  for (const auto& c : all) {
+    if (c.values->size() == run.size()) columns.push_back(c);
+  }
+  std::string text;
+  for (const auto& c : columns) text.append(text.empty() ? "" : ",").append(c.header);
+  text += '\n';
+  char cell[40];
+  for (std::size_t i = 0; i < run.size(); ++i) {
+    for (std::size_t j = 0; j < columns.size(); ++j) {
+      std::snprintf(cell, sizeof cell, j ? ",%.12g" : "%.12g",
+                    (*columns[j].values)[i] * columns[j].per_si);
+      text += cell;
+    }
+    text += '\n';
+  }
+  return text;
+}
+
+}  // namespace mrd::record

@@ -1,0 +1,25 @@
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "common/validation_report.hpp"
+
+namespace mrd::runtime {
+
+struct TelemetryConfig {
+  std::string path;          // CSV file; empty: no telemetry. Relative paths start in `directory`.
+  // The only directory telemetry may write to: `path` must resolve (symbolic links followed)
+  // to a file below it. "." is the working directory; the systemd unit starts in /var/log/mrd.
+  std::string directory = ".";
+  int decimation = 1;        // one record every N cycles
+  int ring_size = 8192;      // records the ring holds between two writer passes
+  double flush_period = 0.05;  // [s] how often the writer drains the ring
+
+  [[nodiscard]] bool enabled() const { return !path.empty(); }
+  // `path` resolved against `directory`, what the writer opens.
+  [[nodiscard]] std::string resolved_path() const;
+  [[nodiscard]] ValidationReport validate() const;  // field paths relative to [telemetry]
+};
+
+}  // namespace mrd::runtime

@@ -1,0 +1,29 @@
+#pragma once
+
+#include <cstdint>
+
+#include "hal/clock.hpp"
+
+namespace mrd::runtime {
+
+// One cycle as the telemetry writer sees it. SI units; the CSV names its own.
+struct TelemetryRecord {
+  std::uint64_t cycle = 0;
+  hal::Timestamp time{};           // the cycle's release time
+  double displacement = 0.0;       // held value the law used [m]
+  double measured_current = 0.0;   // [A], NaN when the driver reports none
+  double scheduled_current = 0.0;  // Table 4 [A]
+  double law_current = 0.0;        // what the control law asked for [A]
+  double setpoint = 0.0;           // what was written to the driver [A]
+  double target_B = 0.0;           // [T]
+  double B = 0.0;                  // observer [T]
+  double velocity = 0.0;           // observer [m/s]
+  double force = 0.0;              // observer [N]
+  std::uint32_t overruns = 0;      // periods missed before this cycle
+  std::uint8_t sample = 0;         // SampleCheck
+  std::uint8_t state = 0;          // SupervisorState
+  std::uint8_t trigger = 0;        // Trigger of this cycle's transition (0: none)
+  bool enable = false;
+};
+
+}  // namespace mrd::runtime

@@ -1,0 +1,120 @@
+// The supervisor alone: a pure function of (state, inputs, now), stepped with made-up inputs.
+#include "control/supervisor.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+
+namespace {
+
+using namespace std::chrono_literals;
+using mrd::control::SampleCheck;
+using mrd::control::Supervisor;
+using mrd::control::SupervisorConfig;
+using mrd::control::SupervisorInputs;
+using mrd::control::SupervisorState;
+using mrd::control::Trigger;
+using mrd::hal::Timestamp;
+
+SupervisorConfig quick() {
+  SupervisorConfig c;
+  c.recovery_periods = 3;
+  c.degraded_clear_periods = 2;
+  return c;
+}
+
+struct Clocked {
+  Supervisor sup{quick()};
+  Timestamp now{};
+  mrd::control::SupervisorDecision step(const SupervisorInputs& in = {}) {
+    now += 1ms;
+    return sup.step(in, now);
+  }
+};
+
+TEST(Supervisor, InitWaitsForTheSensorWithoutTrippingAndRunsAfterRecoveryPeriods) {
+  Clocked c;
+  for (int i = 0; i < 100; ++i) EXPECT_EQ(c.step({SampleCheck::kMissing}).state, SupervisorState::kInit);
+  EXPECT_EQ(c.step().state, SupervisorState::kInit);
+  EXPECT_EQ(c.step().state, SupervisorState::kInit);
+  const auto d = c.step();
+  EXPECT_EQ(d.state, SupervisorState::kRun);
+  EXPECT_EQ(d.trigger, Trigger::kGoodPeriods);
+  EXPECT_EQ(c.sup.since(), c.now);
+}
+
+TEST(Supervisor, InitGoesSafeOnAHardFaultOtherThanSilence) {
+  Clocked c;
+  SupervisorInputs in;
+  in.driver_fault = true;
+  const auto d = c.step(in);
+  EXPECT_EQ(d.state, SupervisorState::kSafe);
+  EXPECT_EQ(d.trigger, Trigger::kDriverFault);
+  EXPECT_FALSE(d.enable);
+  EXPECT_FALSE(d.toggle_heartbeat);
+}
+
+TEST(Supervisor, TheMostSevereTriggerNamesTheTransition) {
+  Clocked c;
+  for (int i = 0; i < 3; ++i) c.step();
+  ASSERT_EQ(c.sup.state(), SupervisorState::kRun);
+  SupervisorInputs in;
+  in.sample = SampleCheck::kNotFinite;
+  in.current_disagrees = true;
+  in.driver_fault = std::nullopt;
+  EXPECT_EQ(c.step(in).trigger, Trigger::kFaultLineUnreadable);
+}
+
+TEST(Supervisor, OutputsFollowTheState) {
+  SupervisorConfig cfg = quick();
+  cfg.enable_in_safe = true;
+  cfg.fail_safe_current = 0.2;
+  Supervisor sup(cfg);
+  auto d = sup.step({}, 1ms);
+  EXPECT_FALSE(d.in_control);
+  EXPECT_TRUE(d.enable);  // enable_in_safe
+  d = sup.step({}, 2ms);
+  d = sup.step({}, 3ms);
+  EXPECT_TRUE(d.in_control);
+  EXPECT_TRUE(d.toggle_heartbeat);
+  SupervisorInputs missing;
+  missing.sample = SampleCheck::kMissing;
+  d = sup.step(missing, 4ms);
+  EXPECT_EQ(d.state, SupervisorState::kDegraded);
+  EXPECT_TRUE(d.in_control);
+  EXPECT_TRUE(d.toggle_heartbeat);
+}
+
+TEST(Supervisor, TransitionsAreCountedByFromToAndTrigger) {
+  Clocked c;
+  SupervisorInputs missing;
+  missing.sample = SampleCheck::kMissing;
+  for (int round = 0; round < 4; ++round) {
+    for (int i = 0; i < 3; ++i) c.step();          // -> RUN
+    for (int i = 0; i < 6; ++i) c.step(missing);   // -> DEGRADED -> SAFE (after > 5)
+  }
+  const auto& t = c.sup.transitions();
+  EXPECT_EQ(t.get(SupervisorState::kInit, SupervisorState::kRun, Trigger::kGoodPeriods), 1u);
+  EXPECT_EQ(t.get(SupervisorState::kSafe, SupervisorState::kRun, Trigger::kGoodPeriods), 3u);
+  EXPECT_EQ(t.get(SupervisorState::kRun, SupervisorState::kDegraded, Trigger::kSampleMissing), 4u);
+  EXPECT_EQ(t.get(SupervisorState::kDegraded, SupervisorState::kSafe, Trigger::kSensorStale), 4u);
+  EXPECT_EQ(t.total(), 12u);
+  EXPECT_EQ(t.into(SupervisorState::kSafe), 4u);
+}
+
+TEST(Supervisor, ConfigValidationNamesEachBadKey) {
+  SupervisorConfig c;
+  c.stale_periods = 0;
+  c.displacement_max = -1.0;
+  c.fail_safe_current = 0.5;  // while enable_in_safe is false
+  c.overrun_window = 0;
+  const auto r = c.validate();
+  EXPECT_TRUE(r.mentions("stale_periods"));
+  EXPECT_TRUE(r.mentions("displacement_max"));
+  EXPECT_TRUE(r.mentions("fail_safe_current"));
+  EXPECT_TRUE(r.mentions("overrun_window"));
+  EXPECT_EQ(r.issues().size(), 4u) << r.to_string();
+  EXPECT_NE(r.to_string().find("stale_periods: must be >= 1, got 0"), std::string::npos);
+}
+
+}  // namespace

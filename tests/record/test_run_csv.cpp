@@ -1,0 +1,261 @@
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <string>
+
+#include "tests/record/input_error_of.hpp"
+#include "record/run_csv.hpp"
+#include "record/run_reader.hpp"
+
+namespace {
+
+using mrd::record::CoilSignal;
+using mrd::record::parse_column_mapping;
+using mrd::record::parse_run_csv;
+using mrd::record::RunReadOptions;
+
+// The error message, or "" when the text parses.
+std::string csv_error_of(const std::string& text, const RunReadOptions& options = {},
+                     const std::string& name = "run.csv") {
+  return mrd::record::testing::input_error_of([&] { (void)parse_run_csv(text, name, options); });
+}
+
+RunReadOptions mapped(const char* columns) {
+  RunReadOptions o;
+  o.columns = parse_column_mapping(columns);
+  return o;
+}
+
+const std::string kGood =
+    "time_s,displacement_mm,current_A,force_kN\n0,1,0.5,1\n0.001,2,0.5,1.1\n0.002,3,0.5,1.2\n";
+
+TEST(RunCsv, OwnFormatInAnyOrderAndUnitsConvertsToSI) {
+  const auto run = parse_run_csv(
+      "force_kN,current_mA,velocity_cm_s,time_ms,displacement_cm,B_T,temperature_C\n"
+      "1.5,250,3,0,2,0.1,25\n"
+      "1.6,250,4,1,2.1,0.2,25.5\n",
+      "own.csv");
+  ASSERT_EQ(run.size(), 2u);
+  EXPECT_DOUBLE_EQ(run.time[1], 0.001);
+  EXPECT_DOUBLE_EQ(run.displacement[0], 0.02);
+  EXPECT_DOUBLE_EQ(run.coil[0], 0.25);
+  EXPECT_EQ(run.coil_signal, CoilSignal::kCurrent);
+  EXPECT_EQ(run.coil_source, "current_mA");
+  EXPECT_DOUBLE_EQ(run.force[1], 1600.0);
+  EXPECT_DOUBLE_EQ(run.velocity[1], 0.04);
+  EXPECT_DOUBLE_EQ(run.B[1], 0.2);
+  EXPECT_DOUBLE_EQ(run.temperature[1], 25.5);
+  EXPECT_DOUBLE_EQ(run.sample_rate, 1000.0);
+  EXPECT_TRUE(run.notes.empty());
+}
+
+TEST(RunCsv, OwnFormatWhitespaceSeparatedWithVoltageAndNoForce) {
+  const auto run =
+      parse_run_csv("time_s displacement_m voltage_V\n0 0.01 2.25\n0.5 0.02 0\n", "own.txt");
+  EXPECT_EQ(run.coil_signal, CoilSignal::kCommandVoltage);
+  EXPECT_DOUBLE_EQ(run.coil[0], 2.25);
+  EXPECT_FALSE(run.has_force());
+  EXPECT_DOUBLE_EQ(run.sample_rate, 2.0);
+}
+
+TEST(RunCsv, CurrentWinsOverVoltageAndSaysSo) {
+  const auto run =
+      parse_run_csv("time_s,displacement_mm,voltage_V,current_A\n0,1,2,0.3\n1,1,2,0.3\n", "x.csv");
+  EXPECT_EQ(run.coil_signal, CoilSignal::kCurrent);
+  EXPECT_DOUBLE_EQ(run.coil[0], 0.3);
+  ASSERT_EQ(run.notes.size(), 1u);
+  EXPECT_EQ(run.notes[0], "column 'voltage_V' ignored: the run has the coil current ('current_A')");
+}
+
+TEST(RunCsv, DykeMappingQuotedHeaderTrailingCommaAndRateOnRowOne) {
+  const std::string text =
+      "\"t\",\"A\",\"D\",\"Y\",\"fs\",\"V\",\"F\",\n"
+      "0,-32.3798,0.021147,2.2551,3004.8,7.8095,946.961,\n"
+      "0.0003328,-31.0326,0.023891,2.2554,,7.5231,945.2964,\n"
+      "0.0006656,-29.5357,0.026439,2.2554,,7.3596,943.2157,\n"
+      "\n";
+  const auto run = parse_run_csv(text, "ranran_50.csv",
+                                 mapped("t=time_s,D=displacement_cm,Y=voltage_V,F=force_N"));
+  ASSERT_EQ(run.size(), 3u);
+  EXPECT_DOUBLE_EQ(run.displacement[1], 0.023891e-2);
+  EXPECT_DOUBLE_EQ(run.coil[2], 2.2554);
+  EXPECT_EQ(run.coil_signal, CoilSignal::kCommandVoltage);
+  EXPECT_DOUBLE_EQ(run.force[0], 946.961);
+  EXPECT_FALSE(run.has_velocity());
+  ASSERT_EQ(run.notes.size(), 1u);
+  EXPECT_EQ(run.notes[0], "columns not mapped, ignored: A, fs, V");
+}
+
+TEST(RunCsv, QuirozByPositionWithTheCurrentFromTheFileName) {
+  const std::string text =
+      "   0.0000000e+00  -1.0251414e-01   1.0850000e+00  -1.4680551e+01\n"
+      "   5.0000000e-03  -9.6714141e-02   1.1600000e+00  -1.1163642e+01\n";
+  auto options = mapped("1=time_s,2=displacement_mm,3=velocity_mm_s,4=force_N");
+  options.current_from_name = true;
+  const auto run = parse_run_csv(text, "sine/25mm0x25Hz0x5A.txt", options);
+  ASSERT_EQ(run.size(), 2u);
+  EXPECT_DOUBLE_EQ(run.coil[1], 0.5);
+  EXPECT_EQ(run.coil_source, "file name: 0.5 A");
+  EXPECT_DOUBLE_EQ(run.velocity[1], 1.16e-3);
+  EXPECT_DOUBLE_EQ(run.force[1], -11.163642);
+  EXPECT_DOUBLE_EQ(run.sample_rate, 200.0);
+
+  options.current_from_name = false;
+  options.current = 0.75;
+  EXPECT_DOUBLE_EQ(parse_run_csv(text, "q.txt", options).coil[0], 0.75);
+}
+
+TEST(RunCsv, CurrentFromFileName) {
+  using mrd::record::current_from_file_name;
+  EXPECT_DOUBLE_EQ(*current_from_file_name("data/sine/25mm0x25Hz0x5A.txt"), 0.5);
+  EXPECT_DOUBLE_EQ(*current_from_file_name("5mm3Hz1A.txt"), 1.0);
+  EXPECT_DOUBLE_EQ(*current_from_file_name("2mm5Hz0A.txt"), 0.0);
+  EXPECT_DOUBLE_EQ(*current_from_file_name("run_0p75A.csv"), 0.75);
+  EXPECT_FALSE(current_from_file_name("run.csv"));
+  EXPECT_FALSE(current_from_file_name("A.txt"));
+  EXPECT_FALSE(current_from_file_name("x0x5Hz.txt"));
+}
+
+TEST(RunCsv, SampleRateStandsInForAMissingTimeColumn) {
+  auto options = mapped("x_mm=displacement_mm,F_0p4A_N=force_N");
+  options.current = 0.4;
+  options.sample_rate = 1000.0;
+  const auto run =
+      parse_run_csv("x_mm,F_0p2A_N,F_0p4A_N\n1,2,3\n4,5,6\n7,8,9\n", "validation.csv", options);
+  EXPECT_DOUBLE_EQ(run.time[2], 0.002);
+  EXPECT_DOUBLE_EQ(run.force[1], 6.0);
+}
+
+TEST(RunCsvErrors, NonFiniteValuesNameLineAndColumn) {
+  std::string text = kGood;
+  text.replace(text.find("0.001,2"), 7, "0.001,nan");
+  EXPECT_EQ(csv_error_of(text), "run.csv:3: column 'displacement_mm': 'nan' is not a finite number");
+  text = kGood;
+  text.replace(text.find("1.2"), 3, "inf");
+  EXPECT_EQ(csv_error_of(text), "run.csv:4: column 'force_kN': 'inf' is not a finite number");
+  text = kGood;
+  text.replace(text.find("0.5,1.1"), 3, "abc");
+  EXPECT_EQ(csv_error_of(text), "run.csv:3: column 'current_A': 'abc' is not a finite number");
+  EXPECT_EQ(csv_error_of("time_s,displacement_mm,current_A\n0,,1\n1,1,1\n"),
+            "run.csv:2: column 'displacement_mm': empty cell");
+}
+
+TEST(RunCsvErrors, TimeMustIncrease) {
+  EXPECT_EQ(csv_error_of("time_s,displacement_mm,current_A\n0,1,0\n0.002,1,0\n0.001,1,0\n"),
+            "run.csv:4: column 'time_s': time goes backwards: 0.001 s after 0.002 s");
+  EXPECT_EQ(csv_error_of("time_s,displacement_mm,current_A\n0,1,0\n\n0.001,1,0\n0.001,1,0\n"),
+            "run.csv:5: column 'time_s': time does not increase: 0.001 s twice");
+}
+
+TEST(RunCsvErrors, MissingColumns) {
+  EXPECT_EQ(csv_error_of("displacement_mm,current_A\n1,0\n2,0\n"),
+            "run.csv:1: no time column: expected time_s or time_ms (or give --sample-rate)");
+  EXPECT_EQ(csv_error_of("time_s,current_A\n1,0\n2,0\n"),
+            "run.csv:1: no displacement column: expected displacement_m, displacement_mm or "
+            "displacement_cm");
+  EXPECT_EQ(csv_error_of("time_s,displacement_mm,force_N\n1,0,0\n2,0,0\n"),
+            "run.csv:1: no coil current: expected a current_A or current_mA column, a voltage_V "
+            "column, or --current / --current-from-name");
+  EXPECT_EQ(csv_error_of("\"t\",\"D\",\n0,1,\n", mapped("t=time_s,D=displacement_cm,F=force_N"),
+                     "ranran_50.csv"),
+            "ranran_50.csv:1: column 'F': mapped by --columns but not in the header (t, D)");
+  EXPECT_EQ(csv_error_of("0 1 2 3\n1 1 2 3\n", mapped("1=time_s,2=displacement_mm,5=force_N"), "q.txt"),
+            "q.txt:1: column '5': no such column: the first row has 4");
+}
+
+TEST(RunCsvErrors, UnknownUnitsAndColumns) {
+  EXPECT_EQ(csv_error_of("time_s,displacement_in,current_A\n0,1,0\n"),
+            "run.csv:1: column 'displacement_in': unknown unit 'in' for displacement; expected "
+            "displacement_m, displacement_mm or displacement_cm");
+  EXPECT_EQ(csv_error_of("time_s,displacement_mm,current_A,pressure_bar\n0,1,0,1\n")
+                .rfind("run.csv:1: column 'pressure_bar': unknown column; expected time_s, ", 0),
+            0u);
+  EXPECT_EQ(csv_error_of("time_s,displacement_mm,displacement_m,current_A\n0,1,1,0\n"),
+            "run.csv:1: column 'displacement_m': a second displacement column (the first is "
+            "'displacement_mm')");
+  EXPECT_EQ(csv_error_of("time_s,,current_A\n0,1,0\n"), "run.csv:1: column '2': empty column name");
+}
+
+TEST(RunCsvErrors, RaggedRows) {
+  EXPECT_EQ(csv_error_of("time_s,displacement_mm,current_A,force_kN\n0,1,0.5,1\n0.001,2,0.5\n"),
+            "run.csv:3: column 'force_kN': ragged row: 3 fields, but the header has 4");
+  EXPECT_EQ(csv_error_of("time_s,displacement_mm,current_A,force_kN\n0,1,0.5,1,7\n"),
+            "run.csv:2: column '5': ragged row: 5 fields, but the header has 4");
+  EXPECT_EQ(csv_error_of("0 1 2\n1 1\n", mapped("1=time_s,2=displacement_mm,3=current_A"), "q.txt"),
+            "q.txt:2: column '3': ragged row: 2 fields, but the first row has 3");
+}
+
+TEST(RunCsvErrors, OptionsThatContradictTheFile) {
+  RunReadOptions current;
+  current.current = 0.5;
+  EXPECT_EQ(csv_error_of(kGood, current),
+            "run.csv:1: column 'current_A': the file has a coil column; --current and "
+            "--current-from-name are for files without one");
+  RunReadOptions rate;
+  rate.sample_rate = 100.0;
+  EXPECT_EQ(csv_error_of(kGood, rate),
+            "run.csv:1: column 'time_s': --sample-rate is for files without a time column");
+  rate.sample_rate = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(csv_error_of("displacement_mm,current_A\n1,0\n2,0\n", rate),
+            "run.csv:1: --sample-rate must be a finite number > 0");
+  current.current = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(csv_error_of("time_s,displacement_mm\n0,1\n1,1\n", current),
+            "--current must be a finite number");
+  RunReadOptions from_name;
+  from_name.current_from_name = true;
+  EXPECT_EQ(csv_error_of("time_s,displacement_mm\n0,1\n1,1\n", from_name),
+            "run.csv: no coil current in the file name: expected it to end in <current>A, with x "
+            "for the decimal point, as in 25mm0x25Hz0x5A.txt");
+}
+
+TEST(RunCsvErrors, TooShortEmptyOrAHeaderWhereDataBelongs) {
+  EXPECT_EQ(csv_error_of(""),
+            "run.csv:0: empty file: expected a header (time_s, displacement_mm, ...)");
+  EXPECT_EQ(csv_error_of("time_s,displacement_mm,current_A\n0,1,0\n"),
+            "run.csv:1: a run needs at least 2 samples, got 1");
+  auto positional = mapped("1=time_s,2=displacement_mm");
+  positional.current = 1.0;
+  EXPECT_EQ(csv_error_of("t D\n0 1\n", positional, "q.txt"),
+            "q.txt:1: column '1': 't' is not a finite number");
+}
+
+TEST(RunCsv, OwnFormatWriterRoundTrips) {
+  const auto run = parse_run_csv(kGood, "run.csv");
+  const auto again = parse_run_csv(mrd::record::format_run_csv(run), "again.csv");
+  EXPECT_EQ(again.time, run.time);
+  EXPECT_EQ(again.force, run.force);
+  for (std::size_t i = 0; i < run.size(); ++i)
+    EXPECT_NEAR(again.displacement[i], run.displacement[i], 1e-15);
+}
+
+TEST(RunCsvFiles, ReadsTheDykeFile) {
+  RunReadOptions o = mapped("t=time_s,D=displacement_cm,Y=voltage_V,F=force_N");
+  const auto run =
+      mrd::record::read_recorded_run(MRD_DATA_DIR "/damper/dyke-nees-prototype/ranran_50.csv", o);
+  EXPECT_EQ(run.size(), 74068u);
+  EXPECT_NEAR(run.sample_rate, 3004.8, 0.05);
+  EXPECT_EQ(run.coil_signal, CoilSignal::kCommandVoltage);
+  const auto sampling = mrd::record::summarize_sampling(run.time);
+  EXPECT_EQ(sampling.gaps, 0u);
+  EXPECT_NEAR(sampling.min_period, 3e-4, 1e-9);  // the time column is rounded to 0.1 ms
+  EXPECT_NEAR(sampling.max_period, 4e-4, 1e-9);
+}
+
+TEST(RunCsvFiles, ReadsAQuirozFileAndTheValidationRecord) {
+  RunReadOptions o = mapped("1=time_s,2=displacement_mm,3=velocity_mm_s,4=force_N");
+  o.current_from_name = true;
+  const auto run =
+      mrd::record::read_recorded_run(MRD_DATA_DIR "/damper/quiroz-utfsm/sine/5mm3Hz0x75A.txt", o);
+  EXPECT_EQ(run.size(), 4187u);
+  EXPECT_NEAR(run.sample_rate, 1000.0, 1e-6);
+  EXPECT_DOUBLE_EQ(run.coil[0], 0.75);
+
+  RunReadOptions v = mapped("x_mm=displacement_mm,F_1p0A_N=force_N");
+  v.current = 1.0;
+  v.sample_rate = 1000.0;
+  const auto validation =
+      mrd::record::read_recorded_run(MRD_DATA_DIR "/damper/quiroz-utfsm/validation.csv", v);
+  EXPECT_EQ(validation.size(), 64648u);
+}
+
+}  // namespace
