@@ -65,7 +65,7 @@ void run_observer_steps(benchmark::State& state, const mrd::model::DamperModel& 
   const auto& x = sine_displacement();
   int i = 0;
   for (auto _ : state) {
-    benchmark::DoNotOptimize(observer.step(x[i], current[i]));
+    benchmark::DoNotOptimize(observer.step({.displacement = x[i], .coil_current = current[i]}));
     i = (i + 1) % kSamplesPerCycle;
   }
 }
@@ -77,12 +77,12 @@ BENCHMARK(BM_ObserverStep);
 // improved model costs. BM_ObserverStep, with them all off, must not move.
 void BM_ObserverStepAllEffects(benchmark::State& state) {
   mrd::model::DamperModel m;
-  m.effects.coil_lag.enabled = true;
-  m.effects.preyield_hysteresis.enabled = true;
-  m.effects.gas_spring = {true, 1500.0, 3e4};
-  m.effects.thermal_drift.enabled = true;
-  m.effects.sensor_delay = {true, 2e-3};
-  m.effects.stroke_end_air.enabled = true;
+  m.effects.get<mrd::model::CoilLagEffect>().enabled = true;
+  m.effects.get<mrd::model::PreyieldHysteresisEffect>().enabled = true;
+  m.effects.get<mrd::model::GasSpringEffect>() = {true, 1500.0, 3e4};
+  m.effects.get<mrd::model::ThermalDriftEffect>().enabled = true;
+  m.effects.get<mrd::model::SensorDelayEffect>() = {true, 2e-3};
+  m.effects.get<mrd::model::StrokeEndAirEffect>().enabled = true;
   run_observer_steps(state, m);
 }
 BENCHMARK(BM_ObserverStepAllEffects);

@@ -6,6 +6,7 @@
 #include <initializer_list>
 #include <optional>
 #include <set>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -40,8 +41,11 @@ class TomlReader {
   void get(std::string_view path, std::array<double, N>& value);
   // A string naming one of `choices`.
   template <typename E>
-  void get_enum(std::string_view path, E& value,
-                std::initializer_list<std::pair<std::string_view, E>> choices);
+  void get_enum(std::string_view path, E& value, std::span<const std::pair<std::string_view, E>> choices);
+  template <typename E>
+  void get_enum(std::string_view path, E& value, std::initializer_list<std::pair<std::string_view, E>> choices) {
+    get_enum(path, value, std::span<const std::pair<std::string_view, E>>(choices.begin(), choices.size()));
+  }
 
   // Reports every key and table of the file that no get() asked for.
   void report_unknown_keys();
@@ -118,7 +122,7 @@ void TomlReader::get(std::string_view path, std::array<double, N>& value) {
 
 template <typename E>
 void TomlReader::get_enum(std::string_view path, E& value,
-                          std::initializer_list<std::pair<std::string_view, E>> choices) {
+                          std::span<const std::pair<std::string_view, E>> choices) {
   std::string text;
   for (const auto& [name, e] : choices) {
     if (e == value) text = name;

@@ -31,33 +31,16 @@ ControlLaw::ControlLaw(const ControlLawConfig& config)
                      config.observer.sample_period),
       compensate_(config.compensate_hysteresis) {}
 
-ControlOutput ControlLaw::step(double displacement, double coil_current) {
-  const double scheduled = schedule_.update(displacement);
-  return decide(scheduled, observer_.step(displacement, coil_current));
+const ControlLaw::Observation& ControlLaw::observe(const model::Measurement& m) {
+  observation_.scheduled_current = schedule_.update(m.displacement);
+  observation_.estimate = observer_.step(m);
+  return observation_;
 }
 
-ControlOutput ControlLaw::step(double displacement, const model::SampleTiming& timing, double coil_current) {
-  const double scheduled = schedule_.update(displacement);
-  return decide(scheduled, observer_.step(displacement, timing, coil_current));
-}
-
-ControlOutput ControlLaw::step(double displacement, double velocity, double coil_current) {
-  const double scheduled = schedule_.update(displacement);
-  return decide(scheduled, observer_.step(displacement, velocity, coil_current));
-}
-
-ControlOutput ControlLaw::decide(double scheduled, const model::ObserverEstimate& estimate) {
-  ControlOutput out;
-  out.scheduled_current = scheduled;
-  out.estimate = estimate;
-  if (compensate_) {
-    out.command_current = compensator_.command(scheduled, observer_.magnetics());
-    out.target_B = compensator_.target_B();
-  } else {
-    out.command_current = uncompensated_.update(scheduled);
-    out.target_B = compensator_.target().B(scheduled);
-  }
-  return out;
+ControlLaw::Command ControlLaw::command() {
+  const double scheduled = observation_.scheduled_current;
+  if (compensate_) return {compensator_.command(scheduled, observer_.magnetics()), compensator_.target_B()};
+  return {uncompensated_.update(scheduled), compensator_.target().B(scheduled)};
 }
 
 }  // namespace mrd::control

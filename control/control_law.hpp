@@ -1,5 +1,6 @@
 #pragma once
 
+#include "common/validation_report.hpp"
 #include "model/current_schedule.hpp"
 #include "model/damper_model.hpp"
 #include "model/hysteresis_compensator.hpp"
@@ -20,28 +21,32 @@ struct ControlLawConfig {
 
 ValidationReport validate(const ControlLawConfig& config);
 
-struct ControlOutput {
-  double scheduled_current = 0.0;  // Table 4 [A]
-  double command_current = 0.0;    // to the driver, after compensation and limits [A]
-  double target_B = 0.0;           // what the schedule intends [T]
-  model::ObserverEstimate estimate;
-};
-
-// Steps 3-4 of a control cycle: Table 4 schedule, observer, hysteresis compensation.
-// Pure computation on validated inputs; the loop around it owns I/O and supervision.
+// Steps 3 and 4 of a control cycle (docs/FIRMWARE.md), around the supervisor's decision:
+//   observe(): the Table 4 schedule and the observer, every period, whoever drives the coil,
+//              so the observer's J-A state follows the current that flows;
+//   command(): then, only while the supervisor lets the law drive the coil, the current to
+//              command: the schedule's, compensated for hysteresis (or only slew-limited);
+//   hold():    while the supervisor drives the coil itself (INIT, SAFE), the law's slew
+//              limiters follow that current, so the command continues from it when control
+//              resumes.
+// Pure computation on validated inputs; the loop around it owns I/O and supervision. No heap.
 class ControlLaw {
  public:
+  struct Observation {
+    double scheduled_current = 0.0;  // Table 4 [A]
+    model::ObserverEstimate estimate;
+  };
+  struct Command {
+    double current = 0.0;   // to the driver, after compensation and limits [A]
+    double target_B = 0.0;  // what the schedule intends [T]
+  };
+
   explicit ControlLaw(const ControlLawConfig& config);
 
-  // `coil_current` is the current that flowed this period (measured, or the last command).
-  // With `velocity` the observer uses it; otherwise it filters the displacement.
-  ControlOutput step(double displacement, double coil_current);
-  // The same for a sample read over a bus, at its own timing (model::SampleTiming).
-  ControlOutput step(double displacement, const model::SampleTiming& timing, double coil_current);
-  ControlOutput step(double displacement, double velocity, double coil_current);
-
-  // While the supervisor drives the coil itself (INIT, SAFE), restarts the slew limiters from
-  // the current it drives, so the command continues from there when control resumes.
+  // `m.coil_current` is the current that flowed this period (measured, or the last command).
+  const Observation& observe(const model::Measurement& m);
+  // After observe(), this period's command.
+  Command command();
   void hold(double current) {
     compensator_.reset(current);
     uncompensated_.reset(current);
@@ -50,13 +55,12 @@ class ControlLaw {
   [[nodiscard]] const model::Observer& observer() const { return observer_; }
 
  private:
-  ControlOutput decide(double scheduled, const model::ObserverEstimate& estimate);
-
   model::CurrentSchedule schedule_;
   model::Observer observer_;
   model::HysteresisCompensator compensator_;
   model::SlewLimiter uncompensated_;
   bool compensate_;
+  Observation observation_;
 };
 
 }  // namespace mrd::control

@@ -7,6 +7,9 @@
 namespace mrd::firmware {
 
 namespace {
+// Telemetry's law_current and target_B while the supervisor drives the coil itself.
+constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
+
 hal::Timestamp to_period(double seconds) {
   return std::chrono::duration_cast<hal::Timestamp>(std::chrono::duration<double>(seconds));
 }
@@ -51,16 +54,24 @@ const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
     if (std::isfinite(measured->value)) coil = measured->value;
   }
 
-  // 3-4. Schedule, observer, compensator, on the last good displacement.
-  const control::ControlOutput out = law_.step(checker_.held_value(), checker_.timing(check, now), coil);
+  // 3. Schedule and observer, on the last good displacement, whoever drives the coil.
+  const control::ControlLaw::Observation& seen = law_.observe(
+      {.displacement = checker_.held_value(), .timing = checker_.timing(check, now), .coil_current = coil});
 
-  // 5. The supervisor.
+  // 4. The supervisor.
   const control::SupervisorDecision d =
       supervisor_.step({check, fault, disagrees, write_failed_, skipped}, now);
 
+  // 5. The compensated command, only while the law drives the coil.
+  control::ControlLaw::Command command{kNotComputed, kNotComputed};
+  if (d.in_control) {
+    command = law_.command();
+  } else {
+    law_.hold(fail_safe_current_);
+  }
+  const double setpoint = d.in_control ? command.current : fail_safe_current_;
+
   // 6. Setpoint and lines.
-  const double setpoint = d.in_control ? out.command_current : fail_safe_current_;
-  if (!d.in_control) law_.hold(fail_safe_current_);
   write_outputs(d, setpoint);
 
   // 7. Telemetry.
@@ -68,13 +79,13 @@ const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
                             now,
                             checker_.held_value(),
                             measured ? measured->value : std::numeric_limits<double>::quiet_NaN(),
-                            out.scheduled_current,
-                            out.command_current,
+                            seen.scheduled_current,
+                            command.current,
                             setpoint,
-                            out.target_B,
-                            out.estimate.B,
-                            out.estimate.velocity,
-                            out.estimate.force,
+                            command.target_B,
+                            seen.estimate.B,
+                            seen.estimate.velocity,
+                            seen.estimate.force,
                             skipped,
                             static_cast<std::uint8_t>(check),
                             static_cast<std::uint8_t>(d.state),

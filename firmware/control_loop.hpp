@@ -13,11 +13,12 @@
 
 namespace mrd::firmware {
 
-// One control cycle, in the order of issue 3:
-//   1. take the newest sample;            5. let the supervisor decide;
-//   2. check freshness and range;         6. write the current setpoint and the lines;
-//   3. apply the Table 4 schedule;        7. push a telemetry record into the lock-free ring.
-//   4. run the observer and compensator;
+// One control cycle:
+//   1. take the newest sample;            5. only while in control, compensate the command
+//   2. check freshness and range;            (otherwise the law holds the fail-safe current);
+//   3. apply the Table 4 schedule and     6. write the current setpoint and the lines;
+//      run the observer;                  7. push a telemetry record into the lock-free ring.
+//   4. let the supervisor decide;
 // step(now) is the whole cycle. `now` is the cycle's release time: the real-time runner passes
 // its deadline, tests pass a ManualClock's time. Periods skipped between two calls are the
 // overruns the supervisor judges. No heap, no locks, no exceptions, no blocking I/O.

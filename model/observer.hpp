@@ -1,5 +1,7 @@
 #pragma once
 
+#include <optional>
+
 #include "model/bingham_damper.hpp"
 #include "model/damper_model.hpp"
 #include "model/effects/effect_chain.hpp"
@@ -22,10 +24,21 @@ struct SampleTiming {
   double age = 0.0;       // [s] from the sample to this step
 };
 
+// What the observer takes each period. Named fields, so that a swapped argument does not
+// compile: observer.step({.displacement = x, .coil_current = i}).
+struct Measurement {
+  double displacement = 0.0;  // [m]
+  // [m/s] from a velocity sensor; without one the observer tracks it from the displacement.
+  std::optional<double> velocity;
+  // The sample's own timing; without it the sample is fresh, one period after the last.
+  std::optional<SampleTiming> timing;
+  double coil_current = 0.0;  // [A], the current that flowed this period (measured, or the last command)
+};
+
 struct ObserverEstimate {
   double B = 0.0;             // gap induction [T]
-  double yield_stress = 0.0;  // [Pa], after the thermal factor when thermal_drift is on
-  double velocity = 0.0;      // measured or filtered [m/s], predicted when sensor_delay is on
+  double yield_stress = 0.0;  // [Pa], after the effects' factors
+  double velocity = 0.0;      // measured or tracked [m/s], predicted when an effect predicts the motion
   double force = 0.0;         // predicted damper force [N]
 };
 
@@ -37,21 +50,16 @@ class Observer {
  public:
   Observer(const DamperModel& model, const ObserverSettings& settings = {});
 
-  // Displacement only, one sample a period: velocity comes from the VelocityFilter.
-  ObserverEstimate step(double displacement, double coil_current);
-  // Displacement only, at its own timing: the VelocityFilter tracks each new sample at its real
-  // interval and the velocity is carried to this step by the sample's age (at most two
-  // periods, so that a silent sensor cannot extrapolate far).
-  ObserverEstimate step(double displacement, const SampleTiming& timing, double coil_current);
-  // With a velocity sensor.
-  ObserverEstimate step(double displacement, double velocity, double coil_current);
-  // With the gap induction B [T] known instead of the current: Eq. 13 and 11-12 and the effects
-  // that act after B. For a damper with a field probe in its gap, and for fits that vary only
-  // what acts after B and so can reuse one J-A run's B (tools/residual). The J-A state and the
-  // coil lag are left as they are.
-  ObserverEstimate step_at_induction(double displacement, double velocity, double B);
+  // One period: the velocity (Measurement says where it comes from), B from the coil current,
+  // the force.
+  ObserverEstimate step(const Measurement& m);
+  // The same with the gap induction B [T] known instead of the current (m.coil_current is not
+  // used): Eq. 13 and 11-12 and the effects that act after B. For a damper with a field probe in
+  // its gap, and for fits that vary only what acts after B and so reuse one J-A run's B
+  // (tools/residual). The J-A state and the coil lag are left as they are.
+  ObserverEstimate step_at_induction(const Measurement& m, double B);
 
-  // A measured fluid temperature [degC] for thermal_drift (NaN: back to its lumped model).
+  // A measured fluid temperature [degC] for the effects that use one (NaN: back to their model).
   void set_measured_temperature(double celsius) { effects_.set_measured_temperature(celsius); }
 
   [[nodiscard]] const JilesAtherton& magnetics() const { return magnetics_; }
@@ -62,15 +70,10 @@ class Observer {
   void reset();
 
  private:
-  // The step with at least one effect on. `filtered` says whether the velocity filter has
-  // already seen this displacement (the displacement-only path).
-  ObserverEstimate step_with_effects(double displacement, double velocity, double coil_current,
-                                     bool filtered);
-  // The motion the effects see: sensor_delay's prediction, or the reading.
-  PredictedMotion motion_now(double displacement, double velocity, bool filtered);
-  // Everything after B with every effect off (Eq. 13, 11-12).
+  // The motion this step, from the measurement: the one place the velocity tracker sees a sample.
+  PredictedMotion track(const Measurement& m);
+  // Everything after B (Eq. 13, 11-12) with every effect off, and with at least one on.
   ObserverEstimate base_force(double velocity, double B);
-  // Everything after B with at least one effect on.
   ObserverEstimate force_with_effects(const PredictedMotion& now, double B);
 
   double sample_period_;  // [s]

@@ -13,9 +13,9 @@ struct TelemetryRecord {
   double displacement = 0.0;       // held value the law used [m]
   double measured_current = 0.0;   // [A], NaN when the driver reports none
   double scheduled_current = 0.0;  // Table 4 [A]
-  double law_current = 0.0;        // what the control law asked for [A]
+  double law_current = 0.0;        // what the control law asked for [A]; NaN when not in control
   double setpoint = 0.0;           // what was written to the driver [A]
-  double target_B = 0.0;           // [T]
+  double target_B = 0.0;           // what the schedule intends [T]; NaN when not in control
   double B = 0.0;                  // observer [T]
   double velocity = 0.0;           // observer [m/s]
   double force = 0.0;              // observer [N]

@@ -5,16 +5,16 @@ namespace mrd::sim {
 namespace {
 // The physics without the sensor: sensor_delay is the LVDT's, applied to its reading.
 model::DamperModel physics_of(model::DamperModel truth) {
-  truth.effects.sensor_delay.enabled = false;
+  truth.effects.get<model::SensorDelayEffect>().enabled = false;
   return truth;
 }
 }  // namespace
 
 DamperPlant::DamperPlant(const model::DamperModel& truth, const PlantSettings& settings)
     : physics_(physics_of(truth), model::ObserverSettings{settings.sample_period}),
-      delayed_(truth.effects.sensor_delay.enabled),
-      lvdt_delay_(truth.effects.sensor_delay, settings.sample_period),
-      velocity_delay_(truth.effects.sensor_delay, settings.sample_period),
+      delayed_(truth.effects.get<model::SensorDelayEffect>().enabled),
+      lvdt_delay_(truth.effects.get<model::SensorDelayEffect>(), settings.sample_period),
+      velocity_delay_(truth.effects.get<model::SensorDelayEffect>(), settings.sample_period),
       rng_(settings.seed),
       noise_(0.0, settings.lvdt_noise_rms),
       force_rng_(settings.seed ^ 0x9e3779b97f4a7c15ULL),
@@ -24,7 +24,7 @@ DamperPlant::DamperPlant(const model::DamperModel& truth, double lvdt_noise_rms,
     : DamperPlant(truth, PlantSettings{1e-3, lvdt_noise_rms, 0.0, seed}) {}
 
 PlantReading DamperPlant::step(double displacement, double velocity, double coil_current) {
-  const model::ObserverEstimate truth = physics_.step(displacement, velocity, coil_current);
+  const model::ObserverEstimate truth = physics_.step({.displacement = displacement, .velocity = velocity, .coil_current = coil_current});
   const double noise = noise_.stddev() > 0.0 ? noise_(rng_) : 0.0;
   const double force_noise = force_noise_.stddev() > 0.0 ? force_noise_(force_rng_) : 0.0;
   const double sensed = delayed_ ? lvdt_delay_.step(displacement) : displacement;

@@ -48,18 +48,19 @@ Table4RunResult run_table4(const Table4RunOptions& options) {
     const double x = options.profile.displacement(t);
     const double v = options.profile.velocity(t);
     const sim::PlantReading reading = plant.step(x, v, coil_current);
-    const control::ControlOutput out = law.step(reading.lvdt_displacement, coil_current);
+    const auto& seen = law.observe({.displacement = reading.lvdt_displacement, .coil_current = coil_current});
+    const control::ControlLaw::Command command = law.command();
 
     Table4Sample s;
     s.time = t;
     s.displacement = x;
-    s.scheduled_current = out.scheduled_current;
+    s.scheduled_current = seen.scheduled_current;
     s.command_current = coil_current;
     s.target_B = intended_B;
     s.B = reading.B;
     s.force = reading.force;
     s.intended_force = bingham.force(v, yield_stress(intended_B));
-    s.observer_force = out.estimate.force;
+    s.observer_force = seen.estimate.force;
     if (i >= first_cycle) {
       B_error.add(s.B - s.target_B);
       force_error.add(s.force - s.intended_force);
@@ -67,8 +68,8 @@ Table4RunResult run_table4(const Table4RunOptions& options) {
       result.peak_force = std::max(result.peak_force, std::fabs(s.force));
     }
     result.trace.push_back(s);
-    coil_current = out.command_current;
-    intended_B = out.target_B;
+    coil_current = command.current;
+    intended_B = command.target_B;
   }
   result.B_tracking = B_error.figures();
   result.force_vs_intended = force_error.figures();

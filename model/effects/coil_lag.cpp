@@ -1,6 +1,7 @@
 #include "model/effects/coil_lag.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 namespace mrd::model {
 
@@ -16,6 +17,17 @@ CoilLag::CoilLag(const CoilLagParams& params, double sample_period)
 double CoilLag::step(double command) {
   if (std::isfinite(command)) current_ += gain_ * (command - current_);
   return current_;
+}
+
+std::optional<std::string> CoilLagEffect::implausible(const Params& p, const RunScales& s) {
+  if (p.time_constant < s.sample_period) return "time constant below one sample";
+  return std::nullopt;
+}
+
+std::string CoilLagEffect::size_summary(const Params& p) {
+  char text[64];
+  std::snprintf(text, sizeof text, "tau = %.3g ms", p.time_constant * 1e3);
+  return text;
 }
 
 }  // namespace mrd::model

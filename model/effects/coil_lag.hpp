@@ -1,6 +1,12 @@
 #pragma once
 
+#include <cmath>
+#include <optional>
+#include <span>
+#include <string>
+
 #include "common/validation_report.hpp"
+#include "model/effects/effect_traits.hpp"
 
 namespace mrd::model {
 
@@ -34,6 +40,39 @@ class CoilLag {
  private:
   double gain_;  // 1 - exp(-T/tau)
   double current_ = 0.0;
+};
+
+// The descriptor (effect_traits.hpp): a lag from a tenth of a sample to half a second.
+struct CoilLagEffect : EffectTraitsBase<CoilLagParams> {
+  using Element = CoilLag;
+  static constexpr std::string_view kName = "coil_lag";
+  static constexpr bool kChangesInduction = true;
+  // Hook (effect_chain.hpp): the current that flows, from the one commanded.
+  static double coil_current(Element& lag, double command) { return lag.step(command); }
+
+  template <typename Visitor>
+  static void fields(Params& p, Visitor&& v) {
+    v("enabled", p.enabled);
+    v("time_constant", p.time_constant);
+  }
+
+  static constexpr std::array kSearch = {SearchCoordinate{
+      "log10 time constant [s]", [](const RunScales& s) { return std::log10(0.5 * s.sample_period); },
+      [](const RunScales&) { return std::log10(0.5); }}};
+  static void apply(Params& p, std::span<const double> x, const RunScales&) { p = {true, std::pow(10.0, x[0])}; }
+  static void coordinates(const Params& p, const RunScales&, std::span<double> x) {
+    x[0] = std::log10(p.time_constant);
+  }
+  static std::optional<std::string> implausible(const Params& p, const RunScales& s);
+  template <typename Visitor>
+  static void report(const Params& p, Visitor&& v) {
+    v("time_constant_s", p.time_constant);
+  }
+  static void resize(Params& p, double size, double /*dissipated_energy*/) {
+    p.enabled = true;
+    p.time_constant *= size;
+  }
+  static std::string size_summary(const Params& p);
 };
 
 }  // namespace mrd::model

@@ -1,63 +1,125 @@
 #include "model/effects/effect_chain.hpp"
 
+#include <limits>
+#include <type_traits>
+
 namespace mrd::model {
+
+namespace {
+
+template <typename E>
+typename E::Element make_element(const EffectSet& effects, double sample_period) {
+  if constexpr (std::is_constructible_v<typename E::Element, const typename E::Params&, double>) {
+    return typename E::Element(effects.get<E>(), sample_period);
+  } else {
+    return typename E::Element(effects.get<E>());
+  }
+}
+
+template <typename... E>
+std::tuple<typename E::Element...> make_elements(EffectList<E...>, const EffectSet& effects, double sample_period) {
+  return {make_element<E>(effects, sample_period)...};
+}
+
+}  // namespace
 
 EffectChain::EffectChain(const EffectSet& effects, double sample_period)
     : config_(effects),
       active_(effects.any_enabled()),
-      coil_lag_(effects.coil_lag, sample_period),
-      preyield_(effects.preyield_hysteresis, sample_period),
-      gas_(effects.gas_spring),
-      thermal_(effects.thermal_drift, sample_period),
-      stroke_end_(effects.stroke_end_air) {}
+      elements_(make_elements(AllEffects{}, effects, sample_period)) {
+  std::size_t i = 0;
+  effects.for_each([&]<typename E>(const typename E::Params& p) {
+    enabled_[i++] = p.enabled;
+    if constexpr (requires { E::kNeedsAcceleration; }) needs_acceleration_ = needs_acceleration_ || p.enabled;
+  });
+}
 
-PredictedMotion EffectChain::motion(double displacement, double velocity, double acceleration) const {
-  if (!config_.sensor_delay.enabled) return {displacement, velocity};
-  return predict_motion(displacement, velocity, acceleration, config_.sensor_delay.delay);
+PredictedMotion EffectChain::motion(const PredictedMotion& reading, double acceleration) const {
+  PredictedMotion now = reading;
+  for_each_enabled([&]<typename E>(const typename E::Element& e) {
+    if constexpr (requires { E::motion(e, now, acceleration); }) now = E::motion(e, now, acceleration);
+  });
+  return now;
 }
 
 double EffectChain::coil_current(double command) {
-  coil_current_ = config_.coil_lag.enabled ? coil_lag_.step(command) : command;
-  return coil_current_;
+  double current = command;
+  for_each_enabled([&]<typename E>(typename E::Element& e) {
+    if constexpr (requires { E::coil_current(e, current); }) current = E::coil_current(e, current);
+  });
+  coil_current_ = current;
+  return current;
 }
 
 double EffectChain::yield_factor() const {
-  return config_.thermal_drift.enabled ? thermal_.yield_factor() : 1.0;
+  double factor = 1.0;
+  for_each_enabled([&]<typename E>(const typename E::Element& e) {
+    if constexpr (requires { E::yield_factor(e); }) factor *= E::yield_factor(e);
+  });
+  return factor;
 }
 
 double EffectChain::fluid_force(const BinghamDamper& damper, double yield_stress, double velocity) {
-  const double viscous_coefficient = config_.thermal_drift.enabled
-                                         ? damper.viscous_coefficient() * thermal_.viscosity_factor()
-                                         : damper.viscous_coefficient();
+  double viscosity_factor = 1.0;
+  for_each_enabled([&]<typename E>(const typename E::Element& e) {
+    if constexpr (requires { E::viscosity_factor(e); }) viscosity_factor *= E::viscosity_factor(e);
+  });
+  const double viscous_force = damper.viscous_coefficient() * viscosity_factor * velocity;
   const double yield_force = damper.yield_force(yield_stress);
   const double sign_term = damper.sign_term(velocity);
-  if (!config_.preyield_hysteresis.enabled) return yield_force * sign_term + viscous_coefficient * velocity;
-  preyield_.step(velocity);
-  return preyield_.fluid_force(yield_force, sign_term, viscous_coefficient * velocity);
+  double fluid = yield_force * sign_term + viscous_force;
+  for_each_enabled([&]<typename E>(typename E::Element& e) {
+    if constexpr (requires { E::fluid_force(e, yield_force, sign_term, viscous_force, velocity); }) {
+      fluid = E::fluid_force(e, yield_force, sign_term, viscous_force, velocity);
+    }
+  });
+  return fluid;
 }
 
-double EffectChain::stroke_factor(double displacement) {
-  return config_.stroke_end_air.enabled ? stroke_end_.step(displacement) : 1.0;
+double EffectChain::force_factor(double displacement) {
+  double factor = 1.0;
+  for_each_enabled([&]<typename E>(typename E::Element& e) {
+    if constexpr (requires { E::force_factor(e, displacement); }) factor *= E::force_factor(e, displacement);
+  });
+  return factor;
 }
 
-double EffectChain::gas_force(double displacement) const {
-  return config_.gas_spring.enabled ? gas_.force(displacement) : 0.0;
+double EffectChain::added_force(double displacement) const {
+  double force = 0.0;
+  for_each_enabled([&]<typename E>(const typename E::Element& e) {
+    if constexpr (requires { E::added_force(e, displacement); }) force += E::added_force(e, displacement);
+  });
+  return force;
 }
 
 void EffectChain::dissipate(double power) {
-  if (config_.thermal_drift.enabled) thermal_.heat(power);
+  for_each_enabled([&]<typename E>(typename E::Element& e) {
+    if constexpr (requires { E::dissipate(e, power); }) E::dissipate(e, power);
+  });
 }
 
 double EffectChain::temperature() const {
-  return config_.thermal_drift.enabled ? thermal_.temperature() : config_.thermal_drift.ambient_temperature;
+  double celsius = std::numeric_limits<double>::quiet_NaN();
+  config_.for_each([&]<typename E>(const typename E::Params& p) {
+    const auto& e = std::get<typename E::Element>(elements_);
+    if constexpr (requires { E::temperature(e, p, p.enabled); }) celsius = E::temperature(e, p, p.enabled);
+  });
+  return celsius;
+}
+
+void EffectChain::set_measured_temperature(double celsius) {
+  for_each_effect_type([&]<typename E>() {
+    auto& e = std::get<typename E::Element>(elements_);
+    if constexpr (requires { E::set_measured_temperature(e, celsius); }) E::set_measured_temperature(e, celsius);
+  });
 }
 
 void EffectChain::reset() {
   coil_current_ = 0.0;
-  coil_lag_.reset();
-  preyield_.reset();
-  thermal_.reset();
-  stroke_end_.reset();
+  for_each_effect_type([&]<typename E>() {
+    auto& e = std::get<typename E::Element>(elements_);
+    if constexpr (requires { e.reset(); }) e.reset();
+  });
 }
 
 }  // namespace mrd::model

@@ -1,32 +1,78 @@
 #include "model/effects/effect_set.hpp"
 
+#include <algorithm>
+
 namespace mrd::model {
 
-bool* enabled_flag(EffectSet& e, std::string_view name) {
-  if (name == "coil_lag") return &e.coil_lag.enabled;
-  if (name == "preyield_hysteresis") return &e.preyield_hysteresis.enabled;
-  if (name == "gas_spring") return &e.gas_spring.enabled;
-  if (name == "thermal_drift") return &e.thermal_drift.enabled;
-  if (name == "sensor_delay") return &e.sensor_delay.enabled;
-  if (name == "stroke_end_air") return &e.stroke_end_air.enabled;
-  return nullptr;
+bool EffectSet::any_enabled() const {
+  bool any = false;
+  for_each([&]<typename E>(const typename E::Params& p) { any = any || p.enabled; });
+  return any;
 }
 
-bool is_enabled(const EffectSet& effects, std::string_view name) {
-  EffectSet copy = effects;
-  const bool* flag = enabled_flag(copy, name);
-  return flag != nullptr && *flag;
-}
-
-ValidationReport validate(const EffectSet& e) {
+ValidationReport validate(const EffectSet& effects) {
   ValidationReport report;
-  report.merge(validate(e.coil_lag), "coil_lag");
-  report.merge(validate(e.preyield_hysteresis), "preyield_hysteresis");
-  report.merge(validate(e.gas_spring), "gas_spring");
-  report.merge(validate(e.thermal_drift), "thermal_drift");
-  report.merge(validate(e.sensor_delay), "sensor_delay");
-  report.merge(validate(e.stroke_end_air), "stroke_end_air");
+  effects.for_each([&]<typename E>(const typename E::Params& p) { report.merge(validate(p), E::kName); });
   return report;
+}
+
+namespace {
+
+template <typename E>
+EffectInfo info_of() {
+  using P = typename E::Params;
+  EffectInfo info;
+  info.name = E::kName;
+  info.changes_induction = E::kChangesInduction;
+  info.search = E::kSearch;
+  info.linear = E::kLinear;
+  info.enabled = [](const EffectSet& s) { return s.get<E>().enabled; };
+  info.apply = [](EffectSet& s, std::span<const double> x, const RunScales& scales) {
+    E::apply(s.get<E>(), x, scales);
+  };
+  info.coordinates = [](const EffectSet& s, const RunScales& scales, std::span<double> x) {
+    E::coordinates(s.get<E>(), scales, x);
+  };
+  info.add_linear = [](EffectSet& s, std::span<const double> c) { E::add_linear(s.get<E>(), c); };
+  info.scale_force = [](EffectSet& s, double a) { E::scale_force(s.get<E>(), a); };
+  info.implausible = [](const EffectSet& s, const RunScales& scales) { return E::implausible(s.get<E>(), scales); };
+  info.report = [](const EffectSet& s) {
+    std::vector<std::pair<std::string, double>> out;
+    E::report(s.get<E>(), [&](std::string_view key, double value) { out.emplace_back(std::string(key), value); });
+    return out;
+  };
+  info.same = [](const EffectSet& a, const EffectSet& b) { return a.get<E>() == b.get<E>(); };
+  info.resize = [](EffectSet& s, const EffectSet& nominal, double size, double energy) {
+    P p = nominal.get<E>();
+    E::resize(p, size, energy);
+    s.get<E>() = p;
+  };
+  info.size_summary = [](const EffectSet& nominal) {
+    P p = nominal.get<E>();
+    E::resize(p, 1.0, 0.0);
+    return E::size_summary(p);
+  };
+  return info;
+}
+
+const std::array<EffectInfo, AllEffects::size>& infos() {
+  static const auto table = [] {
+    std::array<EffectInfo, AllEffects::size> t{};
+    std::size_t i = 0;
+    for_each_effect_type([&]<typename E>() { t[i++] = info_of<E>(); });
+    return t;
+  }();
+  return table;
+}
+
+}  // namespace
+
+std::span<const EffectInfo> effect_infos() { return infos(); }
+
+const EffectInfo* find_effect(std::string_view name) {
+  const auto& t = infos();
+  const auto it = std::find_if(t.begin(), t.end(), [&](const EffectInfo& e) { return e.name == name; });
+  return it == t.end() ? nullptr : &*it;
 }
 
 }  // namespace mrd::model

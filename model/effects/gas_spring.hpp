@@ -1,6 +1,10 @@
 #pragma once
 
+#include <optional>
+#include <span>
+#include <string>
 #include "common/validation_report.hpp"
+#include "model/effects/effect_traits.hpp"
 
 namespace mrd::model {
 
@@ -14,6 +18,8 @@ struct GasSpringParams {
   bool enabled = false;
   double preload = 0.0;    // F0 [N]
   double stiffness = 0.0;  // k [N/m]
+
+  bool operator==(const GasSpringParams&) const = default;
 };
 
 ValidationReport validate(const GasSpringParams& params);
@@ -29,4 +35,43 @@ class GasSpring {
   double stiffness_;
 };
 
+// The descriptor (effect_traits.hpp): F0 and k enter the force linearly, so the fit solves them
+// with the linear terms instead of searching.
+struct GasSpringEffect : EffectTraitsBase<GasSpringParams> {
+  using Element = GasSpring;
+  static constexpr std::string_view kName = "gas_spring";
+  // Hook (effect_chain.hpp): a force added to the fluid's.
+  static double added_force(const Element& spring, double displacement) { return spring.force(displacement); }
+
+  template <typename Visitor>
+  static void fields(Params& p, Visitor&& v) {
+    v("enabled", p.enabled);
+    v("preload", p.preload);
+    v("stiffness", p.stiffness);
+  }
+
+  static constexpr std::array kLinear = {LinearColumn::kConstant, LinearColumn::kDisplacement};
+  static void add_linear(Params& p, std::span<const double> c) {
+    p.enabled = true;
+    p.preload += c[0];
+    p.stiffness += c[1];
+  }
+  static void scale_force(Params& p, double a) {
+    if (!p.enabled) return;
+    p.preload *= a;
+    p.stiffness *= a;
+  }
+  static std::optional<std::string> implausible(const Params& p, const RunScales&);
+  template <typename Visitor>
+  static void report(const Params& p, Visitor&& v) {
+    v("preload_N", p.preload);
+    v("stiffness_N_m", p.stiffness);
+  }
+  static void resize(Params& p, double size, double /*dissipated_energy*/) {
+    p.enabled = true;
+    p.preload *= size;
+    p.stiffness *= size;
+  }
+  static std::string size_summary(const Params& p);
+};
 }  // namespace mrd::model

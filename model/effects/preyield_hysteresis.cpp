@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace mrd::model {
 
@@ -63,6 +64,28 @@ double PreyieldHysteresis::step(double velocity) {
   }
   z_ = std::isfinite(z) ? z : 0.0;
   return z_;
+}
+
+void PreyieldHysteresisEffect::apply(Params& p, std::span<const double> x, const RunScales&) {
+  const double z_max = std::pow(10.0, x[1]);
+  p.enabled = true;
+  p.A = 1.0;
+  p.n = 2.0;
+  p.beta = p.gamma = 1.0 / (2.0 * z_max * z_max);
+  p.stiffness = 0.0;
+  p.yield_fraction = x[0];
+}
+
+std::optional<std::string> PreyieldHysteresisEffect::implausible(const Params& p, const RunScales&) {
+  if (p.yield_fraction < 0.02) return "yield fraction below 2 %";
+  return std::nullopt;
+}
+
+std::string PreyieldHysteresisEffect::size_summary(const Params& p) {
+  char text[80];
+  std::snprintf(text, sizeof text, "%.3g of the yield force on z, z_max = %.3g mm", p.yield_fraction,
+                p.z_max() * 1e3);
+  return text;
 }
 
 }  // namespace mrd::model

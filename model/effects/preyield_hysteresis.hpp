@@ -1,6 +1,12 @@
 #pragma once
 
+#include <cmath>
+#include <algorithm>
+#include <optional>
+#include <span>
+#include <string>
 #include "common/validation_report.hpp"
+#include "model/effects/effect_traits.hpp"
 
 namespace mrd::model {
 
@@ -29,6 +35,8 @@ struct PreyieldHysteresisParams {
 
   // (A / (beta + gamma))^(1/n) [m]; with the defaults 1 mm.
   [[nodiscard]] double z_max() const;
+
+  bool operator==(const PreyieldHysteresisParams&) const = default;
 };
 
 ValidationReport validate(const PreyieldHysteresisParams& params);
@@ -75,4 +83,52 @@ class PreyieldHysteresis {
   double z_ = 0.0;
 };
 
+// The descriptor (effect_traits.hpp): the share w and z_max, with A = 1, n = 2, beta = gamma
+// (a run cannot tell them apart), z_max from 0.2 % to 20 % of the stroke.
+struct PreyieldHysteresisEffect : EffectTraitsBase<PreyieldHysteresisParams> {
+  using Element = PreyieldHysteresis;
+  static constexpr std::string_view kName = "preyield_hysteresis";
+  // Hook (effect_chain.hpp): the fluid force with z, in place of Eq. 11-12's.
+  static double fluid_force(Element& e, double yield_force, double sign_term, double viscous_force,
+                            double velocity) {
+    e.step(velocity);
+    return e.fluid_force(yield_force, sign_term, viscous_force);
+  }
+
+  template <typename Visitor>
+  static void fields(Params& p, Visitor&& v) {
+    v("enabled", p.enabled);
+    v("A", p.A);
+    v("beta", p.beta);
+    v("gamma", p.gamma);
+    v("n", p.n);
+    v("stiffness", p.stiffness);
+    v("yield_fraction", p.yield_fraction);
+    v("max_substeps", p.max_substeps);
+  }
+
+  static constexpr std::array kSearch = {
+      SearchCoordinate{"yield fraction w", [](const RunScales&) { return 0.0; },
+                       [](const RunScales&) { return 1.0; }},
+      SearchCoordinate{"log10 z_max [m]",
+                       [](const RunScales& s) { return std::log10(std::max(1e-6, 2e-3 * s.stroke)); },
+                       [](const RunScales& s) { return std::log10(0.2 * s.stroke); }}};
+  static void apply(Params& p, std::span<const double> x, const RunScales&);
+  static void coordinates(const Params& p, const RunScales&, std::span<double> x) {
+    x[0] = p.yield_fraction;
+    x[1] = std::log10(p.z_max());
+  }
+  static void scale_force(Params& p, double a) { p.stiffness *= a; }
+  static std::optional<std::string> implausible(const Params& p, const RunScales&);
+  template <typename Visitor>
+  static void report(const Params& p, Visitor&& v) {
+    v("yield_fraction", p.yield_fraction);
+    v("z_max_m", p.z_max());
+  }
+  static void resize(Params& p, double size, double /*dissipated_energy*/) {
+    p.enabled = true;
+    p.yield_fraction = std::min(size * p.yield_fraction, 1.0);
+  }
+  static std::string size_summary(const Params& p);
+};
 }  // namespace mrd::model

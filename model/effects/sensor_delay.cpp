@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace mrd::model {
 
@@ -31,6 +32,17 @@ double SensorDelay::step(double value) {
   ring_[static_cast<std::size_t>(head_)] = value;
   // Linear interpolation between the samples whole_ and whole_ + 1 periods old.
   return at(whole_) + fraction_ * (at(whole_ + 1) - at(whole_));
+}
+
+std::optional<std::string> SensorDelayEffect::implausible(const Params& p, const RunScales& s) {
+  if (p.delay < 0.25 * s.sample_period) return "delay below a quarter sample";
+  return std::nullopt;
+}
+
+std::string SensorDelayEffect::size_summary(const Params& p) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.3g ms", p.delay * 1e3);
+  return text;
 }
 
 }  // namespace mrd::model

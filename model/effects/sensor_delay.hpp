@@ -1,8 +1,14 @@
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <span>
+#include <string>
 #include <array>
 
 #include "common/validation_report.hpp"
+#include "model/effects/effect_traits.hpp"
 
 namespace mrd::model {
 
@@ -13,6 +19,8 @@ namespace mrd::model {
 struct SensorDelayParams {
   bool enabled = false;
   double delay = 2e-3;  // d [s], at most kMaxSensorDelay
+
+  bool operator==(const SensorDelayParams&) const = default;
 };
 
 inline constexpr double kMaxSensorDelay = 0.1;  // [s]
@@ -58,4 +66,54 @@ struct PredictedMotion {
   return {displacement + delay * (velocity + 0.5 * delay * acceleration), velocity + delay * acceleration};
 }
 
+// The observer's side of the effect: the prediction above with the configured delay.
+class SensorDelayPrediction {
+ public:
+  SensorDelayPrediction(const SensorDelayParams& params, double /*sample_period*/) : delay_(params.delay) {}
+  [[nodiscard]] PredictedMotion predict(const PredictedMotion& reading, double acceleration) const {
+    return predict_motion(reading.displacement, reading.velocity, acceleration, delay_);
+  }
+
+ private:
+  double delay_;
+};
+
+// The descriptor (effect_traits.hpp): a delay from a tenth of a sample to 5 % of the run.
+struct SensorDelayEffect : EffectTraitsBase<SensorDelayParams> {
+  using Element = SensorDelayPrediction;
+  static constexpr std::string_view kName = "sensor_delay";
+  // Hook (effect_chain.hpp): the motion now from the delayed reading; needs the tracked
+  // acceleration, so the observer runs its velocity tracker even with a velocity sensor.
+  static constexpr bool kNeedsAcceleration = true;
+  static PredictedMotion motion(const Element& e, const PredictedMotion& reading, double acceleration) {
+    return e.predict(reading, acceleration);
+  }
+
+  template <typename Visitor>
+  static void fields(Params& p, Visitor&& v) {
+    v("enabled", p.enabled);
+    v("delay", p.delay);
+  }
+
+  // Logarithmic, so that a delay below one sample is as easy to find as one of 50 ms.
+  static constexpr std::array kSearch = {SearchCoordinate{
+      "log10 delay [s]", [](const RunScales& s) { return std::log10(0.1 * s.sample_period); },
+      [](const RunScales& s) {
+        const double longest = std::min(kMaxSensorDelay, 0.05 * s.duration);
+        return std::log10(std::max(longest, 2.0 * s.sample_period));
+      }}};
+  static void apply(Params& p, std::span<const double> x, const RunScales&) {
+    p = {true, std::min(std::pow(10.0, x[0]), kMaxSensorDelay)};
+  }
+  static void coordinates(const Params& p, const RunScales&, std::span<double> x) { x[0] = std::log10(p.delay); }
+  static std::optional<std::string> implausible(const Params& p, const RunScales& s);
+  template <typename Visitor>
+  static void report(const Params& p, Visitor&& v) {
+    v("delay_s", p.delay);
+  }
+  static void resize(Params& p, double size, double /*dissipated_energy*/) {
+    p = {true, std::min(size * p.delay, kMaxSensorDelay)};
+  }
+  static std::string size_summary(const Params& p);
+};
 }  // namespace mrd::model

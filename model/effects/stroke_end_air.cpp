@@ -1,6 +1,7 @@
 #include "model/effects/stroke_end_air.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 namespace mrd::model {
 
@@ -50,6 +51,18 @@ double StrokeEndAir::step(double x) {
   }
   factor_ = armed_ ? 1.0 - depth_ * std::exp(-std::fabs(x - reversal_) * inv_length_) : 1.0;
   return factor_;
+}
+
+std::optional<std::string> StrokeEndAirEffect::implausible(const Params& p, const RunScales&) {
+  if (p.depth < 0.05) return "depth below 5 %";
+  return std::nullopt;
+}
+
+std::string StrokeEndAirEffect::size_summary(const Params& p) {
+  char text[96];
+  std::snprintf(text, sizeof text, "depth %.2f after reversals beyond %.3g mm, recovery %.3g mm", p.depth,
+                p.threshold * 1e3, p.length * 1e3);
+  return text;
 }
 
 }  // namespace mrd::model

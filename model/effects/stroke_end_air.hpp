@@ -1,6 +1,12 @@
 #pragma once
 
+#include <cmath>
+#include <algorithm>
+#include <optional>
+#include <span>
+#include <string>
 #include "common/validation_report.hpp"
+#include "model/effects/effect_traits.hpp"
 
 namespace mrd::model {
 
@@ -18,6 +24,8 @@ struct StrokeEndAirParams {
   double depth = 0.9;              // fraction of the force lost at the reversal [-], in [0, 1]
   double length = 5e-3;            // e-folding travel of the recovery [m]
   double reversal_travel = 1e-4;   // travel back from an extreme that confirms a reversal [m]
+
+  bool operator==(const StrokeEndAirParams&) const = default;
 };
 
 ValidationReport validate(const StrokeEndAirParams& params);
@@ -55,4 +63,51 @@ class StrokeEndAir {
   double factor_ = 1.0;
 };
 
+// The descriptor (effect_traits.hpp).
+struct StrokeEndAirEffect : EffectTraitsBase<StrokeEndAirParams> {
+  using Element = StrokeEndAir;
+  static constexpr std::string_view kName = "stroke_end_air";
+  // Hook (effect_chain.hpp): a factor on the fluid force.
+  static double force_factor(Element& e, double displacement) { return e.step(displacement); }
+
+  template <typename Visitor>
+  static void fields(Params& p, Visitor&& v) {
+    v("enabled", p.enabled);
+    v("threshold", p.threshold);
+    v("depth", p.depth);
+    v("length", p.length);
+    v("reversal_travel", p.reversal_travel);
+  }
+
+  static constexpr std::array kSearch = {
+      SearchCoordinate{"threshold / stroke", [](const RunScales&) { return 0.3; },
+                       [](const RunScales&) { return 0.98; }, SearchCoordinate::Kind::kReversalThreshold},
+      SearchCoordinate{"depth", [](const RunScales&) { return 0.0; }, [](const RunScales&) { return 0.95; }},
+      SearchCoordinate{"log10 length / stroke", [](const RunScales&) { return -2.5; },
+                       [](const RunScales&) { return -0.5; }}};
+  static void apply(Params& p, std::span<const double> x, const RunScales& s) {
+    p.enabled = true;
+    p.threshold = x[0] * s.stroke;
+    p.depth = x[1];
+    p.length = std::pow(10.0, x[2]) * s.stroke;
+    p.reversal_travel = std::min(1e-4, 0.01 * s.stroke);
+  }
+  static void coordinates(const Params& p, const RunScales& s, std::span<double> x) {
+    x[0] = p.threshold / s.stroke;
+    x[1] = p.depth;
+    x[2] = std::log10(p.length / s.stroke);
+  }
+  static std::optional<std::string> implausible(const Params& p, const RunScales&);
+  template <typename Visitor>
+  static void report(const Params& p, Visitor&& v) {
+    v("threshold_m", p.threshold);
+    v("depth", p.depth);
+    v("length_m", p.length);
+  }
+  static void resize(Params& p, double size, double /*dissipated_energy*/) {
+    p.enabled = true;
+    p.depth = std::min(size * p.depth, 0.95);
+  }
+  static std::string size_summary(const Params& p);
+};
 }  // namespace mrd::model

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <cstdio>
 
 namespace mrd::model {
 
@@ -61,6 +62,40 @@ void ThermalDrift::update_factors() {
   const double rise = temperature() - p_.reference_temperature;
   viscosity_factor_ = factor(p_.viscosity_law, p_.viscosity_coefficient, rise, p_.min_factor);
   yield_factor_ = factor(p_.yield_law, p_.yield_coefficient, rise, p_.min_factor);
+}
+
+void ThermalDriftEffect::apply(Params& p, std::span<const double> x, const RunScales& s) {
+  p = ThermalDriftParams{};
+  p.enabled = true;
+  p.viscosity_law = TemperatureLaw::kExponential;
+  p.yield_law = TemperatureLaw::kLinear;
+  if (s.measured_temperature) {
+    p.viscosity_coefficient = x[0];
+    p.yield_coefficient = x[1];
+  } else {
+    p.heat_capacity = std::max(s.dissipated_energy, 1e-9) / kNominalRise;
+    p.viscosity_coefficient = x[0] / kNominalRise;
+    p.yield_coefficient = x[1] / kNominalRise;
+  }
+}
+
+void ThermalDriftEffect::coordinates(const Params& p, const RunScales& s, std::span<double> x) {
+  const double scale = s.measured_temperature ? 1.0 : kNominalRise;
+  x[0] = p.viscosity_coefficient * scale;
+  x[1] = p.yield_coefficient * scale;
+}
+
+std::optional<std::string> ThermalDriftEffect::implausible(const Params& p, const RunScales& s) {
+  std::array<double, 2> x{};
+  coordinates(p, s, x);
+  if (x[0] + x[1] < 0.01) return "drops below 1 %";
+  return std::nullopt;
+}
+
+std::string ThermalDriftEffect::size_summary(const Params&) {
+  char text[64];
+  std::snprintf(text, sizeof text, "the run heats the fluid by %.3g K", kNominalRise);
+  return text;
 }
 
 }  // namespace mrd::model

@@ -1,8 +1,16 @@
 #pragma once
 
+#include <string_view>
+#include <utility>
+#include <array>
+#include <algorithm>
+#include <optional>
+#include <span>
+#include <string>
 #include <cstdint>
 
 #include "common/validation_report.hpp"
+#include "model/effects/effect_traits.hpp"
 
 namespace mrd::model {
 
@@ -32,6 +40,8 @@ struct ThermalDriftParams {
   TemperatureLaw yield_law = TemperatureLaw::kLinear;
   double yield_coefficient = 0.004;      // [1/K]
   double min_factor = 0.05;              // [-], floor of both factors
+
+  bool operator==(const ThermalDriftParams&) const = default;
 };
 
 ValidationReport validate(const ThermalDriftParams& params);
@@ -65,4 +75,65 @@ class ThermalDrift {
   double yield_factor_ = 1.0;
 };
 
+// The descriptor (effect_traits.hpp). A run rarely logs the fluid temperature, so the search
+// asks how much viscosity and yield stress fell over a nominal rise of kNominalRise, the heat
+// capacity sized so that the run's dissipated energy gives that rise; with a logged
+// temperature it searches the two coefficients themselves.
+struct ThermalDriftEffect : EffectTraitsBase<ThermalDriftParams> {
+  using Element = ThermalDrift;
+  static constexpr std::string_view kName = "thermal_drift";
+  static constexpr double kNominalRise = 20.0;  // [K]
+  // Hooks (effect_chain.hpp): the factors on tau_y and c0, and the heat of the fluid force.
+  static double yield_factor(const Element& e) { return e.yield_factor(); }
+  static double viscosity_factor(const Element& e) { return e.viscosity_factor(); }
+  static void dissipate(Element& e, double power) { e.heat(power); }
+  static void set_measured_temperature(Element& e, double celsius) { e.set_measured_temperature(celsius); }
+  static double temperature(const Element& e, const Params& p, bool enabled) {
+    return enabled ? e.temperature() : p.ambient_temperature;
+  }
+
+  template <typename Visitor>
+  static void fields(Params& p, Visitor&& v) {
+    v("enabled", p.enabled);
+    v("initial_temperature", p.initial_temperature);
+    v("ambient_temperature", p.ambient_temperature);
+    v("reference_temperature", p.reference_temperature);
+    v("heat_capacity", p.heat_capacity);
+    v("cooling_time_constant", p.cooling_time_constant);
+    v("viscosity_law", p.viscosity_law);
+    v("viscosity_coefficient", p.viscosity_coefficient);
+    v("yield_law", p.yield_law);
+    v("yield_coefficient", p.yield_coefficient);
+    v("min_factor", p.min_factor);
+  }
+
+  static constexpr std::array kSearch = {
+      SearchCoordinate{"viscous drop over the nominal rise (or coefficient [1/K] when measured)",
+                       [](const RunScales&) { return 0.0; },
+                       [](const RunScales& s) { return s.measured_temperature ? 0.1 : 2.0; }},
+      SearchCoordinate{"yield drop over the nominal rise (or coefficient [1/K] when measured)",
+                       [](const RunScales&) { return 0.0; },
+                       [](const RunScales& s) { return s.measured_temperature ? 0.05 : 0.9; }}};
+  static void apply(Params& p, std::span<const double> x, const RunScales& s);
+  static void coordinates(const Params& p, const RunScales& s, std::span<double> x);
+  static std::optional<std::string> implausible(const Params& p, const RunScales& s);
+  template <typename Visitor>
+  static void report(const Params& p, Visitor&& v) {
+    v("heat_capacity_J_K", p.heat_capacity);
+    v("viscosity_coefficient_1_K", p.viscosity_coefficient);
+    v("yield_coefficient_1_K", p.yield_coefficient);
+  }
+  // The size scales the rise: C such that the run's dissipated energy heats the fluid by
+  // size x kNominalRise (cooling aside).
+  static void resize(Params& p, double size, double dissipated_energy) {
+    p.enabled = true;
+    p.heat_capacity = std::max(dissipated_energy, 1.0) / (size * kNominalRise);
+  }
+  static std::string size_summary(const Params& p);
+};
+
+// The names of the temperature laws in configs.
+[[nodiscard]] constexpr std::array<std::pair<std::string_view, TemperatureLaw>, 2> enum_choices(TemperatureLaw) {
+  return {{{"linear", TemperatureLaw::kLinear}, {"exponential", TemperatureLaw::kExponential}}};
+}
 }  // namespace mrd::model

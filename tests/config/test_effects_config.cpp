@@ -40,40 +40,41 @@ yield_law = "exponential"
                                           "effects.toml");
   ASSERT_TRUE(c.ok()) << c.report();
   const auto& effects = c.config.law.damper.effects;
-  EXPECT_TRUE(effects.gas_spring.enabled);
-  EXPECT_EQ(effects.gas_spring.stiffness, 30000.0);
-  EXPECT_EQ(effects.thermal_drift.yield_law, mrd::model::TemperatureLaw::kExponential);
-  EXPECT_FALSE(effects.preyield_hysteresis.enabled);
+  EXPECT_TRUE(effects.get<mrd::model::GasSpringEffect>().enabled);
+  EXPECT_EQ(effects.get<mrd::model::GasSpringEffect>().stiffness, 30000.0);
+  EXPECT_EQ(effects.get<mrd::model::ThermalDriftEffect>().yield_law, mrd::model::TemperatureLaw::kExponential);
+  EXPECT_FALSE(effects.get<mrd::model::PreyieldHysteresisEffect>().enabled);
 
   // The control law built from this config runs them: at rest with no current the force is the
   // gas spring's preload, and the coil current lags the command.
   mrd::control::ControlLaw law(c.config.law);
   mrd::control::ControlLaw base(mrd::control::ControlLawConfig{});
-  const auto out = law.step(0.0, 0.0, 1.0);
-  EXPECT_NEAR(out.estimate.force - base.step(0.0, 0.0, 1.0).estimate.force, 1500.0, 1e-6 * 1500.0);
+  const mrd::model::Measurement at_rest{.displacement = 0.0, .velocity = 0.0, .coil_current = 1.0};
+  const double force = law.observe(at_rest).estimate.force;
+  EXPECT_NEAR(force - base.observe(at_rest).estimate.force, 1500.0, 1e-6 * 1500.0);
   EXPECT_TRUE(law.observer().effects().active());
   EXPECT_NEAR(law.observer().effects().coil_current(), -std::expm1(-1e-3 / 0.02), 1e-12);
 }
 
 TEST(EffectsConfig, WrittenTablesLoadBackToTheSameEffects) {
   mrd::model::EffectSet e;
-  e.coil_lag = {true, 1.0 / 190.0};
-  e.preyield_hysteresis.enabled = true;
-  e.preyield_hysteresis.A = 301.0;
-  e.preyield_hysteresis.beta = 3.63e6;
-  e.preyield_hysteresis.gamma = -1e5;
-  e.preyield_hysteresis.max_substeps = 200;
-  e.gas_spring = {true, -71.5, 500.0};
-  e.thermal_drift.enabled = true;
-  e.thermal_drift.viscosity_law = mrd::model::TemperatureLaw::kLinear;
-  e.thermal_drift.heat_capacity = 1234.5;
-  e.sensor_delay = {true, 3.3e-3};
-  e.stroke_end_air = {true, 0.012, 0.75, 2e-3, 5e-5};
+  e.get<mrd::model::CoilLagEffect>() = {true, 1.0 / 190.0};
+  e.get<mrd::model::PreyieldHysteresisEffect>().enabled = true;
+  e.get<mrd::model::PreyieldHysteresisEffect>().A = 301.0;
+  e.get<mrd::model::PreyieldHysteresisEffect>().beta = 3.63e6;
+  e.get<mrd::model::PreyieldHysteresisEffect>().gamma = -1e5;
+  e.get<mrd::model::PreyieldHysteresisEffect>().max_substeps = 200;
+  e.get<mrd::model::GasSpringEffect>() = {true, -71.5, 500.0};
+  e.get<mrd::model::ThermalDriftEffect>().enabled = true;
+  e.get<mrd::model::ThermalDriftEffect>().viscosity_law = mrd::model::TemperatureLaw::kLinear;
+  e.get<mrd::model::ThermalDriftEffect>().heat_capacity = 1234.5;
+  e.get<mrd::model::SensorDelayEffect>() = {true, 3.3e-3};
+  e.get<mrd::model::StrokeEndAirEffect>() = {true, 0.012, 0.75, 2e-3, 5e-5};
   const std::string text = mrd::config::effects_toml(e);
   const LoadedConfig c = load_config_text(text, "written.toml");
   ASSERT_TRUE(c.ok()) << c.report() << text;
   EXPECT_EQ(mrd::config::effects_toml(c.config.law.damper.effects), text);
-  EXPECT_EQ(c.config.law.damper.effects.sensor_delay.delay, 3.3e-3);  // shortest round trip
+  EXPECT_EQ(c.config.law.damper.effects.get<mrd::model::SensorDelayEffect>().delay, 3.3e-3);  // shortest round trip
   EXPECT_NE(text.find("[damper.effects.coil_lag]\nenabled = true\n"), std::string::npos) << text;
 }
 

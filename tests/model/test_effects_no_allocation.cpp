@@ -20,13 +20,13 @@ constexpr int kSteps = 100000;
 mrd::model::DamperModel every_effect_on() {
   mrd::model::DamperModel m;
   auto& e = m.effects;
-  e.coil_lag.enabled = true;
-  e.preyield_hysteresis.enabled = true;
-  e.preyield_hysteresis.n = 1.7;  // the std::pow path as well
-  e.gas_spring = {true, 1500.0, 3e4};
-  e.thermal_drift.enabled = true;
-  e.sensor_delay = {true, 3.5e-3};
-  e.stroke_end_air.enabled = true;
+  e.get<mrd::model::CoilLagEffect>().enabled = true;
+  e.get<mrd::model::PreyieldHysteresisEffect>().enabled = true;
+  e.get<mrd::model::PreyieldHysteresisEffect>().n = 1.7;  // the std::pow path as well
+  e.get<mrd::model::GasSpringEffect>() = {true, 1500.0, 3e4};
+  e.get<mrd::model::ThermalDriftEffect>().enabled = true;
+  e.get<mrd::model::SensorDelayEffect>() = {true, 3.5e-3};
+  e.get<mrd::model::StrokeEndAirEffect>().enabled = true;
   return m;
 }
 
@@ -40,8 +40,8 @@ TEST(RealTimeEffects, ObserverStepsWithEveryEffectDoNotAllocate) {
   double sink = 0.0;
   start_counting_allocations();
   for (int k = 0; k < kSteps; ++k) {
-    sink += filtered.step(x_at(k), i_at(k)).force;
-    sink += sensed.step(x_at(k), v_at(k), i_at(k)).force;
+    sink += filtered.step({.displacement = x_at(k), .coil_current = i_at(k)}).force;
+    sink += sensed.step({.displacement = x_at(k), .velocity = v_at(k), .coil_current = i_at(k)}).force;
     if (k == kSteps / 2) sensed.set_measured_temperature(35.0);
   }
   EXPECT_EQ(stop_counting_allocations(), 0u);
@@ -63,7 +63,10 @@ TEST(RealTimeEffects, ControlLawStepWithEveryEffectDoesNotAllocate) {
   mrd::control::ControlLaw law(config);
   double coil = 0.0;
   start_counting_allocations();
-  for (int k = 0; k < kSteps; ++k) coil = law.step(x_at(k), coil).command_current;
+  for (int k = 0; k < kSteps; ++k) {
+    law.observe({.displacement = x_at(k), .coil_current = coil});
+    coil = law.command().current;
+  }
   EXPECT_EQ(stop_counting_allocations(), 0u);
   EXPECT_TRUE(std::isfinite(coil));
 }

@@ -1,5 +1,7 @@
 #include "tools/replay/replay.hpp"
 
+#include <optional>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -95,17 +97,19 @@ ReplayResult replay(const record::RecordedRun& run, const ReplayOptions& options
   for (std::size_t i = 0; i < run.size(); ++i) {
     const double x = run.displacement[i];
     const double current = run.coil[i] * gain;
+    std::optional<double> velocity;
+    if (sensor != nullptr) velocity = (*sensor)[i];
     const model::ObserverEstimate estimate =
-        sensor != nullptr ? observer.step(x, (*sensor)[i], current) : observer.step(x, current);
-    const control::ControlOutput out =
-        sensor != nullptr ? law.step(x, (*sensor)[i], flowing) : law.step(x, flowing);
-    flowing = out.command_current;
+        observer.step({.displacement = x, .velocity = velocity, .coil_current = current});
+    const double scheduled =
+        law.observe({.displacement = x, .velocity = velocity, .coil_current = flowing}).scheduled_current;
+    flowing = law.command().current;
     t.coil_current[i] = current;
     t.velocity[i] = estimate.velocity;
     t.B[i] = estimate.B;
     t.predicted_force[i] = estimate.force;
-    t.scheduled_current[i] = out.scheduled_current;
-    t.command_current[i] = out.command_current;
+    t.scheduled_current[i] = scheduled;
+    t.command_current[i] = flowing;
   }
   if (run.has_force()) result.force = force_error(run.force, t.predicted_force);
   return result;

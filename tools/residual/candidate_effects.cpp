@@ -21,10 +21,6 @@ Bounds make_bounds(std::initializer_list<std::pair<double, double>> ranges) {
   return b;
 }
 
-// Nominal heating of the lumped thermal model: the fluid warms this much over the run, and the
-// fitted coefficients say what that does to viscosity and yield.
-constexpr double kNominalRise = 20.0;  // [K]
-
 // log10 of the field gain [turns/m]: within 1.5 decades of the starting coil's.
 std::pair<double, double> field_gain_range(const model::DamperModel& start) {
   const double g = std::log10(start.circuit.turns / start.circuit.effective_length);
@@ -106,7 +102,9 @@ ParameterSpace field_gain_space(const model::DamperModel& origin, const model::D
   space.origin = origin;
   space.parameters = {"log10 field gain [turns/m]"};
   space.bounds = make_bounds({field_gain_range(start)});
-  space.with_spring = origin.effects.gas_spring.enabled;
+  for (const model::EffectInfo& e : model::effect_infos()) {
+    if (!e.linear.empty() && e.enabled(origin.effects)) space.linear.push_back(&e);
+  }
   space.edit = [](model::DamperModel m, const Point& p) {
     set_field_gain(m, p[0]);
     return m;
@@ -114,118 +112,36 @@ ParameterSpace field_gain_space(const model::DamperModel& origin, const model::D
   return space;
 }
 
-bool changes_induction(std::string_view effect) { return effect == "coil_lag"; }
-
-ParameterSpace effect_space(const std::string& name, const model::DamperModel& model,
+ParameterSpace effect_space(const model::EffectInfo& effect, const model::DamperModel& model,
                             const SeriesScales& scales) {
   ParameterSpace space;
-  space.name = name;
+  space.name = effect.name;
   space.origin = model;
-  const double T = scales.sample_period;
-  if (name == "coil_lag") {
-    space.parameters = {"log10 time constant [s]"};
-    space.bounds = make_bounds({{std::log10(0.5 * T), std::log10(0.5)}});
-    space.edit = [](model::DamperModel m, const Point& p) {
-      m.effects.coil_lag = {true, std::pow(10.0, p[0])};
-      return m;
-    };
-  } else if (name == "sensor_delay") {
-    const double longest = std::min(model::kMaxSensorDelay, 0.05 * scales.duration);
-    // Logarithmic, so that a delay below one sample is as easy to find as one of 50 ms.
-    space.parameters = {"log10 delay [s]"};
-    space.bounds = make_bounds({{std::log10(0.1 * T), std::log10(std::max(longest, 2.0 * T))}});
-    space.edit = [](model::DamperModel m, const Point& p) {
-      m.effects.sensor_delay = {true, std::min(std::pow(10.0, p[0]), model::kMaxSensorDelay)};
-      return m;
-    };
-  } else if (name == "thermal_drift") {
-    const bool measured = scales.measured_temperature;
-    const double energy = std::max(scales.dissipated_energy, 1e-9);
-    space.parameters = measured ? std::vector<std::string>{"viscosity coefficient [1/K]", "yield coefficient [1/K]"}
-                                : std::vector<std::string>{"viscous drop over the run", "yield drop over the run"};
-    space.bounds = measured ? make_bounds({{0.0, 0.1}, {0.0, 0.05}}) : make_bounds({{0.0, 2.0}, {0.0, 0.9}});
-    space.edit = [measured, energy](model::DamperModel m, const Point& p) {
-      auto& t = m.effects.thermal_drift;
-      t = model::ThermalDriftParams{};
-      t.enabled = true;
-      t.viscosity_law = model::TemperatureLaw::kExponential;
-      t.yield_law = model::TemperatureLaw::kLinear;
-      if (measured) {
-        t.viscosity_coefficient = p[0];
-        t.yield_coefficient = p[1];
-      } else {
-        // The drops are those of the nominal rise: C sized so the run's energy gives it.
-        t.heat_capacity = energy / kNominalRise;
-        t.viscosity_coefficient = p[0] / kNominalRise;
-        t.yield_coefficient = p[1] / kNominalRise;
-      }
-      return m;
-    };
-  } else if (name == "preyield_hysteresis") {
-    space.parameters = {"yield fraction w", "log10 z_max [m]"};
-    space.bounds = make_bounds({{0.0, 1.0},
-                                {std::log10(std::max(1e-6, 2e-3 * scales.stroke)), std::log10(0.2 * scales.stroke)}});
-    space.edit = [](model::DamperModel m, const Point& p) {
-      auto& h = m.effects.preyield_hysteresis;
-      const double z_max = std::pow(10.0, p[1]);
-      h.enabled = true;
-      h.A = 1.0;
-      h.n = 2.0;
-      h.beta = h.gamma = 1.0 / (2.0 * z_max * z_max);
-      h.stiffness = 0.0;
-      h.yield_fraction = p[0];
-      return m;
-    };
-  } else if (name == "stroke_end_air") {
-    const double stroke = scales.stroke;
-    space.parameters = {"threshold / stroke", "depth", "log10 length / stroke"};
-    space.bounds = make_bounds({{0.3, 0.98}, {0.0, 0.95}, {-2.5, -0.5}});
-    space.edit = [stroke](model::DamperModel m, const Point& p) {
-      auto& a = m.effects.stroke_end_air;
-      a.enabled = true;
-      a.threshold = p[0] * stroke;
-      a.depth = p[1];
-      a.length = std::pow(10.0, p[2]) * stroke;
-      a.reversal_travel = std::min(1e-4, 0.01 * stroke);
-      return m;
-    };
-  } else if (name == "gas_spring") {
-    space.parameters = {};
-    space.bounds = Bounds{Point(0), Point(0)};
-    space.with_spring = true;
-    space.edit = [](model::DamperModel m, const Point&) { return m; };
-  } else {
-    throw std::invalid_argument("unknown effect: " + name);
+  const auto n = static_cast<Eigen::Index>(effect.search.size());
+  space.bounds = Bounds{Point(n), Point(n)};
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const model::SearchCoordinate& c = effect.search[static_cast<std::size_t>(i)];
+    space.parameters.emplace_back(c.name);
+    space.bounds.lower[i] = c.lower(scales);
+    space.bounds.upper[i] = c.upper(scales);
   }
+  if (!effect.linear.empty()) space.linear.push_back(&effect);
+  const model::RunScales run = scales;
+  space.edit = [&effect, run](model::DamperModel m, const Point& p) {
+    effect.apply(m.effects, std::span<const double>(p.data(), static_cast<std::size_t>(p.size())), run);
+    return m;
+  };
   return space;
 }
 
-Point effect_coordinates(const std::string& name, const model::DamperModel& m, const SeriesScales& scales) {
-  const model::EffectSet& e = m.effects;
-  const auto point = [](std::initializer_list<double> values) {
-    Point p(static_cast<Eigen::Index>(values.size()));
-    Eigen::Index i = 0;
-    for (const double v : values) p[i++] = v;
-    return p;
-  };
-  if (name == "coil_lag") return point({std::log10(e.coil_lag.time_constant)});
-  if (name == "sensor_delay") return point({std::log10(e.sensor_delay.delay)});
-  if (name == "thermal_drift") {
-    const auto& t = e.thermal_drift;
-    if (scales.measured_temperature) return point({t.viscosity_coefficient, t.yield_coefficient});
-    return point({t.viscosity_coefficient * kNominalRise, t.yield_coefficient * kNominalRise});
-  }
-  if (name == "preyield_hysteresis")
-    return point({e.preyield_hysteresis.yield_fraction, std::log10(e.preyield_hysteresis.z_max())});
-  if (name == "stroke_end_air") {
-    const auto& a = e.stroke_end_air;
-    return point({a.threshold / scales.stroke, a.depth, std::log10(a.length / scales.stroke)});
-  }
-  return Point(0);
+Point effect_coordinates(const model::EffectInfo& effect, const model::DamperModel& m, const SeriesScales& scales) {
+  Point p(static_cast<Eigen::Index>(effect.search.size()));
+  effect.coordinates(m.effects, scales, std::span<double>(p.data(), static_cast<std::size_t>(p.size())));
+  return p;
 }
 
-std::vector<Point> stroke_threshold_trials(const FitSeries& s, const SeriesScales& scales, const Point& fit,
-                                           double lower, double upper, std::size_t count) {
+std::vector<Point> reversal_threshold_trials(const FitSeries& s, const SeriesScales& scales, const Point& fit,
+                                             Eigen::Index index, double lower, double upper, std::size_t count) {
   // Reversal amplitudes: the extreme |x| of each stretch of travel in one direction that ends
   // with a travel back of at least 1 % of the stroke (the noise cannot make one).
   std::vector<double> amplitudes;
@@ -261,63 +177,39 @@ std::vector<Point> stroke_threshold_trials(const FitSeries& s, const SeriesScale
   for (std::size_t k = 0; k < count; ++k) {
     const std::size_t i = k * (amplitudes.size() - 1) / std::max<std::size_t>(count - 1, 1);
     Point p = fit;
-    p[0] = std::clamp(0.995 * amplitudes[i] / scales.stroke, 0.3, 0.98);
-    if (std::none_of(trials.begin(), trials.end(), [&](const Point& q) { return q[0] == p[0]; })) trials.push_back(p);
+    p[index] = std::clamp(0.995 * amplitudes[i] / scales.stroke, 0.3, 0.98);
+    if (std::none_of(trials.begin(), trials.end(), [&](const Point& q) { return q[index] == p[index]; })) {
+      trials.push_back(p);
+    }
   }
   return trials;
 }
 
-FittedModel scan_stroke_threshold(const ParameterSpace& space, const FitSeries& series, const SeriesScales& scales,
-                                  const Point& theta, std::int64_t& evaluations) {
-  const auto coarse = stroke_threshold_trials(series, scales, theta);
-  const FittedModel best = best_of(space, series, coarse);
-  double lower = 0.0, upper = 1.0;
-  for (const Point& p : coarse) {
-    if (p[0] < best.theta[0]) lower = std::max(lower, p[0]);
-    if (p[0] > best.theta[0]) upper = std::min(upper, p[0]);
-  }
-  FittedModel fine = best_of(space, series, stroke_threshold_trials(series, scales, best.theta, lower, upper, 32));
-  evaluations += best.evaluations + fine.evaluations;
-  return fine;
+bool has_reversal_threshold(const model::EffectInfo& effect) {
+  return std::ranges::any_of(effect.search, [](const model::SearchCoordinate& c) {
+    return c.kind == model::SearchCoordinate::Kind::kReversalThreshold;
+  });
 }
 
-std::optional<std::string> implausible(const std::string& name, const FittedModel& fit,
-                                       const SeriesScales& scales) {
-  const model::EffectSet& e = fit.model.effects;
-  const double T = scales.sample_period;
-  if (name == "coil_lag" && e.coil_lag.time_constant < T)
-    return "time constant below one sample";
-  if (name == "sensor_delay" && e.sensor_delay.delay < 0.25 * T) return "delay below a quarter sample";
-  if (name == "thermal_drift" && fit.theta.size() == 2 && fit.theta[0] + fit.theta[1] < 0.01)
-    return "drops below 1 %";
-  if (name == "preyield_hysteresis" && e.preyield_hysteresis.yield_fraction < 0.02)
-    return "yield fraction below 2 %";
-  if (name == "stroke_end_air" && e.stroke_end_air.depth < 0.05) return "depth below 5 %";
-  if (name == "gas_spring" && e.gas_spring.stiffness < 0.0)
-    return "negative stiffness (a gas spring stiffens as it compresses)";
-  return std::nullopt;
-}
-
-std::vector<std::pair<std::string, double>> effect_parameters(const std::string& name,
-                                                              const model::EffectSet& e) {
-  if (name == "coil_lag") return {{"time_constant_s", e.coil_lag.time_constant}};
-  if (name == "sensor_delay") return {{"delay_s", e.sensor_delay.delay}};
-  if (name == "thermal_drift") {
-    const auto& t = e.thermal_drift;
-    return {{"heat_capacity_J_K", t.heat_capacity},
-            {"viscosity_coefficient_1_K", t.viscosity_coefficient},
-            {"yield_coefficient_1_K", t.yield_coefficient}};
+FittedModel scan_reversal_thresholds(const model::EffectInfo& effect, const ParameterSpace& space,
+                                     const FitSeries& series, const SeriesScales& scales, const Point& theta,
+                                     std::int64_t& evaluations) {
+  FittedModel fit;
+  fit.theta = theta;
+  for (std::size_t k = 0; k < effect.search.size(); ++k) {
+    if (effect.search[k].kind != model::SearchCoordinate::Kind::kReversalThreshold) continue;
+    const auto i = static_cast<Eigen::Index>(k);
+    const auto coarse = reversal_threshold_trials(series, scales, fit.theta, i);
+    const FittedModel best = best_of(space, series, coarse);
+    double lower = 0.0, upper = 1.0;
+    for (const Point& p : coarse) {
+      if (p[i] < best.theta[i]) lower = std::max(lower, p[i]);
+      if (p[i] > best.theta[i]) upper = std::min(upper, p[i]);
+    }
+    fit = best_of(space, series, reversal_threshold_trials(series, scales, best.theta, i, lower, upper, 32));
+    evaluations += best.evaluations + fit.evaluations;
   }
-  if (name == "preyield_hysteresis") {
-    const auto& h = e.preyield_hysteresis;
-    return {{"yield_fraction", h.yield_fraction}, {"z_max_m", h.z_max()}};
-  }
-  if (name == "stroke_end_air") {
-    const auto& a = e.stroke_end_air;
-    return {{"threshold_m", a.threshold}, {"depth", a.depth}, {"length_m", a.length}};
-  }
-  if (name == "gas_spring") return {{"preload_N", e.gas_spring.preload}, {"stiffness_N_m", e.gas_spring.stiffness}};
-  return {};
+  return fit;
 }
 
 }  // namespace mrd::tools

@@ -34,13 +34,17 @@ void run_observer(const model::DamperModel& model, const FitSeries& series, Step
 InductionTrace::InductionTrace(const model::DamperModel& model, const FitSeries& series)
     : magnetics_(model), B_(series.size()) {
   run_observer(model, series, [&](model::Observer& o, std::size_t i) {
-    B_[i] = o.step(series.displacement[i], series.velocity[i], series.current[i]).B;
+    B_[i] = o.step({.displacement = series.displacement[i], .velocity = series.velocity[i],
+                    .coil_current = series.current[i]}).B;
   });
 }
 
 bool InductionTrace::serves(const model::DamperModel& m) const {
   return m.jiles_atherton == magnetics_.jiles_atherton && m.circuit == magnetics_.circuit &&
-         m.integration == magnetics_.integration && m.effects.coil_lag == magnetics_.effects.coil_lag;
+         m.integration == magnetics_.integration &&
+         std::ranges::all_of(model::effect_infos(), [&](const model::EffectInfo& e) {
+           return !e.changes_induction || e.same(m.effects, magnetics_.effects);
+         });
 }
 
 void predict_force(const model::DamperModel& model, const FitSeries& series,
@@ -49,12 +53,13 @@ void predict_force(const model::DamperModel& model, const FitSeries& series,
   if (trace != nullptr && trace->induction().size() == series.size() && trace->serves(model)) {
     const std::vector<double>& B = trace->induction();
     run_observer(model, series, [&](model::Observer& o, std::size_t i) {
-      force[i] = o.step_at_induction(series.displacement[i], series.velocity[i], B[i]).force;
+      force[i] = o.step_at_induction({.displacement = series.displacement[i], .velocity = series.velocity[i]}, B[i]).force;
     });
     return;
   }
   run_observer(model, series, [&](model::Observer& o, std::size_t i) {
-    force[i] = o.step(series.displacement[i], series.velocity[i], series.current[i]).force;
+    force[i] = o.step({.displacement = series.displacement[i], .velocity = series.velocity[i],
+                       .coil_current = series.current[i]}).force;
   });
 }
 
@@ -77,28 +82,41 @@ ResidualRms residual_rms(const FitSeries& series, const std::vector<double>& pre
 
 namespace {
 
+// At most the base's two columns and this many of the effects'.
+constexpr int kMaxLinearColumns = 8;
+using NormalMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxLinearColumns, kMaxLinearColumns>;
+using NormalVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxLinearColumns, 1>;
+
+int column_count(const LinearEffects& effects) {
+  int n = 2;
+  for (const model::EffectInfo* e : effects) n += static_cast<int>(e->linear.size());
+  return n;
+}
+
 // Columns of the linear fit at sample i.
-int fill_columns(const FitSeries& s, const std::vector<double>& predicted, bool spring,
-                 std::size_t i, double* column) {
+void fill_columns(const FitSeries& s, const std::vector<double>& predicted, const LinearEffects& effects,
+                  std::size_t i, double* column) {
   column[0] = predicted[i];
   column[1] = s.velocity[i];
-  if (!spring) return 2;
-  column[2] = 1.0;
-  column[3] = s.displacement[i];
-  return 4;
+  int c = 2;
+  for (const model::EffectInfo* e : effects) {
+    for (const model::LinearColumn kind : e->linear) {
+      column[c++] = kind == model::LinearColumn::kConstant ? 1.0 : s.displacement[i];
+    }
+  }
 }
 
 }  // namespace
 
 LinearTerms fit_linear_terms(const FitSeries& series, const std::vector<double>& predicted,
-                             bool with_spring) {
-  const int n = with_spring ? 4 : 2;
-  Eigen::Matrix4d normal = Eigen::Matrix4d::Zero();
-  Eigen::Vector4d rhs = Eigen::Vector4d::Zero();
-  double column[4];
+                             const LinearEffects& effects) {
+  const int n = column_count(effects);
+  NormalMatrix normal = NormalMatrix::Zero(n, n);
+  NormalVector rhs = NormalVector::Zero(n);
+  double column[kMaxLinearColumns];
   for (std::size_t i = 0; i < series.size(); ++i) {
     if (series.validation[i] != 0) continue;
-    fill_columns(series, predicted, with_spring, i, column);
+    fill_columns(series, predicted, effects, i, column);
     for (int r = 0; r < n; ++r) {
       rhs[r] += column[r] * series.force[i];
       for (int c = 0; c < n; ++c) normal(r, c) += column[r] * column[c];
@@ -106,28 +124,26 @@ LinearTerms fit_linear_terms(const FitSeries& series, const std::vector<double>&
   }
   // A light ridge keeps the solve defined when a column is all zero (no force predicted at all).
   for (int r = 0; r < n; ++r) normal(r, r) += 1e-12 * (normal(r, r) + 1.0);
-  const Eigen::VectorXd solution =
-      normal.topLeftCorner(n, n).ldlt().solve(rhs.head(n));
+  const NormalVector solution = normal.ldlt().solve(rhs);
   LinearTerms t;
   t.force_scale = std::max(solution[0], 0.0);
   t.extra_viscous = solution[1];
-  if (with_spring) {
-    t.with_spring = true;
-    t.preload = solution[2];
-    t.stiffness = solution[3];
-  }
+  t.effects = effects;
+  t.coefficients.assign(solution.data() + 2, solution.data() + n);
   return t;
 }
 
 double linear_fit_rms(const FitSeries& series, const std::vector<double>& predicted,
                       const LinearTerms& t) {
+  const int n = column_count(t.effects);
+  double coefficients[kMaxLinearColumns] = {t.force_scale, t.extra_viscous};
+  std::copy(t.coefficients.begin(), t.coefficients.end(), coefficients + 2);
   double sum = 0.0;
   std::size_t count = 0;
   for (std::size_t i = 0; i < series.size(); ++i) {
     if (series.validation[i] != 0) continue;
-    double column[4];
-    const int n = fill_columns(series, predicted, t.with_spring, i, column);
-    const double coefficients[4] = {t.force_scale, t.extra_viscous, t.preload, t.stiffness};
+    double column[kMaxLinearColumns];
+    fill_columns(series, predicted, t.effects, i, column);
     double f = 0.0;
     for (int c = 0; c < n; ++c) f += coefficients[c] * column[c];
     const double r = series.force[i] - f;
@@ -146,16 +162,11 @@ model::DamperModel apply_linear_terms(model::DamperModel m, const LinearTerms& t
   const double target = std::max(a * c0 + t.extra_viscous, 1e-6 * a * c0);
   const model::BinghamDamper scaled(m.geometry, m.fluid.viscosity);
   m.fluid.viscosity *= target / scaled.viscous_coefficient();
-  auto& gas = m.effects.gas_spring;
-  if (gas.enabled) {
-    gas.preload *= a;
-    gas.stiffness *= a;
-  }
-  m.effects.preyield_hysteresis.stiffness *= a;
-  if (t.with_spring) {
-    gas.enabled = true;
-    gas.preload += t.preload;
-    gas.stiffness += t.stiffness;
+  for (const model::EffectInfo& e : model::effect_infos()) e.scale_force(m.effects, a);
+  std::size_t c = 0;
+  for (const model::EffectInfo* e : t.effects) {
+    e->add_linear(m.effects, std::span<const double>(t.coefficients).subspan(c, e->linear.size()));
+    c += e->linear.size();
   }
   return m;
 }
@@ -167,7 +178,7 @@ double fitness_at(const ParameterSpace& space, const FitSeries& series, const Po
   const model::DamperModel model = space.build(theta);
   if (!model::validate(model).ok()) return 1e300;
   predict_force(model, series, buffer, space.induction.get());
-  const LinearTerms terms = fit_linear_terms(series, buffer, space.with_spring);
+  const LinearTerms terms = fit_linear_terms(series, buffer, space.linear);
   const double rms = linear_fit_rms(series, buffer, terms);
   return std::isfinite(rms) ? rms : 1e300;
 }
@@ -205,7 +216,7 @@ FittedModel finish(const ParameterSpace& space, const FitSeries& series, const P
   std::vector<double> force;
   const model::DamperModel model = space.build(theta);
   predict_force(model, series, force, space.induction.get());
-  out.linear = fit_linear_terms(series, force, space.with_spring);
+  out.linear = fit_linear_terms(series, force, space.linear);
   out.fitting_rms = linear_fit_rms(series, force, out.linear);
   out.model = apply_linear_terms(model, out.linear);
   return out;
@@ -246,7 +257,10 @@ ParameterSpace combine(const ParameterSpace& first, const ParameterSpace& second
   joint.edit = [e1 = first.edit, e2 = second.edit, n1, n2](model::DamperModel m, const Point& p) {
     return e2(e1(std::move(m), p.head(n1)), p.tail(n2));
   };
-  joint.with_spring = first.with_spring || second.with_spring;
+  joint.linear = first.linear;
+  for (const model::EffectInfo* e : second.linear) {
+    if (std::ranges::find(joint.linear, e) == joint.linear.end()) joint.linear.push_back(e);
+  }
   return joint;
 }
 

@@ -20,7 +20,7 @@ class InductionTrace {
  public:
   InductionTrace(const model::DamperModel& model, const FitSeries& series);
   // Whether `model`'s B over the series is this one: the same J-A parameters, circuit,
-  // integration and coil lag.
+  // integration and effects that change B.
   [[nodiscard]] bool serves(const model::DamperModel& model) const;
   [[nodiscard]] const std::vector<double>& induction() const { return B_; }
 
@@ -46,29 +46,30 @@ struct ResidualRms {
 ResidualRms residual_rms(const FitSeries& series, const std::vector<double>& predicted);
 
 // Terms fitted by least squares on the fitting samples on top of a model's force F_m:
-//   F = a F_m + b v [+ F0 + k x]
+//   F = a F_m + b v [+ c_j column_j for the linear columns of `effects`]
 // a rescales the yield and viscous forces together (the damper's size), b corrects the
-// viscous coefficient, F0 + k x is a gas spring's. They make the search over the nonlinear
-// parameters cheap: each trial point costs one observer pass.
+// viscous coefficient, and an effect whose parameters enter the force linearly (a gas
+// spring's F0 + k x) has them solved here too (its descriptor's kLinear). They make the search
+// over the nonlinear parameters cheap: each trial point costs one observer pass.
+using LinearEffects = std::vector<const model::EffectInfo*>;
 struct LinearTerms {
   double force_scale = 1.0;    // a [-], >= 0
   double extra_viscous = 0.0;  // b [N s/m]
-  bool with_spring = false;
-  double preload = 0.0;        // F0 [N]
-  double stiffness = 0.0;      // k [N/m]
+  LinearEffects effects;
+  std::vector<double> coefficients;  // c_j, the effects' columns in order
 };
 LinearTerms fit_linear_terms(const FitSeries& series, const std::vector<double>& predicted,
-                             bool with_spring);
+                             const LinearEffects& effects);
 // F_fit - (a F_m + ...) as above, over the fitting samples: the search's fitness [N RMS].
 double linear_fit_rms(const FitSeries& series, const std::vector<double>& predicted,
                       const LinearTerms& terms);
 
 // The model the terms describe: the pole length times a (yield and viscous force scale with
-// it), the viscosity set so that c0 becomes a c0 + b, force-like effect parameters (gas
-// spring, Bouc-Wen stiffness) times a, and the spring's F0 and k added. The observer then
-// predicts a F_m + b v + F0 + k x exactly for the base model, and closely with effects on
-// (thermal_drift and stroke_end_air scale b v too); the reports always evaluate the model
-// itself, never this approximation.
+// it), the viscosity set so that c0 becomes a c0 + b, force-valued effect parameters times a
+// (each descriptor's scale_force), and the effects' coefficients added. The observer then
+// predicts a F_m + b v + ... exactly for the base model, and closely with effects on
+// (some effects scale b v too); the reports always evaluate the model itself, never this
+// approximation.
 model::DamperModel apply_linear_terms(model::DamperModel model, const LinearTerms& terms);
 
 // Changes a model at search coordinates p: sets a base parameter or an effect's.
@@ -81,7 +82,7 @@ struct ParameterSpace {
   Bounds bounds;                         // may have dimension 0: only the linear terms
   model::DamperModel origin;
   ModelEdit edit;
-  bool with_spring = false;  // fit F0 + k x among the linear terms
+  LinearEffects linear;  // effects whose linear columns join the linear terms
   // B of the origin over the fitting series, for the trials whose magnetics equal the origin's.
   std::shared_ptr<const InductionTrace> induction;
 

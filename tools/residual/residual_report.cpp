@@ -77,7 +77,7 @@ std::string residual_summary(const std::vector<record::RecordedRun>& runs, const
     out += "\n";
     for (const auto& e : r.accepted) {
       out += "  " + e + ":";
-      for (const auto& [key, value] : effect_parameters(e, r.final_model.effects))
+      for (const auto& [key, value] : model::find_effect(e)->report(r.final_model.effects))
         out += format(" %s %.4g", key.c_str(), value);
       out += "\n";
     }
@@ -103,7 +103,7 @@ std::string residual_json(const ResidualResult& r) {
   j << "  \"effect_params\": {";
   for (std::size_t i = 0; i < r.accepted.size(); ++i) {
     j << (i ? ", " : "") << "\n    " << json_string(r.accepted[i]) << ": {";
-    const auto params = effect_parameters(r.accepted[i], r.final_model.effects);
+    const auto params = model::find_effect(r.accepted[i])->report(r.final_model.effects);
     for (std::size_t k = 0; k < params.size(); ++k)
       j << (k ? ", " : "") << json_string(params[k].first) << ": " << json_number(params[k].second);
     j << "}";

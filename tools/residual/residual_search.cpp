@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <memory>
 #include <numeric>
+#include <span>
 
 #include "tools/residual/candidate_effects.hpp"
 #include "tools/text_format.hpp"
@@ -47,36 +48,37 @@ struct RefinePass {
   int gain_evaluations = 0;
 };
 
+using Effects = std::vector<const model::EffectInfo*>;
+
 // Nelder-Mead over the base coordinates and those of `effects` together (an effect changes
 // what the base absorbed), once per pass, each pass from the last one's model, so that its
 // linear terms come close to identity and what the search saw is what the observer runs (the
-// linear terms scale the viscous force past a thermal or stroke-end factor only
-// approximately). The first pass starts on `origin` at `effect_start`; its theta holds the
-// effects' coordinates.
+// linear terms scale the viscous force past some effects' factors only approximately). The
+// first pass starts on `origin` at `effect_start`; its theta holds the effects' coordinates.
 //
 // The field gain: an effect that changes B (a coil lag) changes what the gain absorbed, so the
-// gain joins its coordinates, as it does whenever the model already lags its current (the lag
-// and the gain shape B together, and an effect's best fit then moves both). Other effects on a
-// model without a lag leave B alone: their trials share one B trace, and the gain is refined
-// on its own between passes, since such an effect can still take over force the gain had
-// absorbed (on the Table 4 schedule the current follows the displacement, so a spring's k x
-// looks like a field). `induction`, when given, is a B trace the first pass may already use.
-FittedModel refine_jointly(const model::DamperModel& origin, const std::vector<std::string>& effects,
-                           const Point& effect_start, std::initializer_list<RefinePass> passes,
-                           const model::DamperModel& start, const SeriesScales& scales, const FitSeries& series,
-                           std::int64_t& evaluations, std::shared_ptr<const InductionTrace> induction = nullptr) {
-  const auto lags = [&](std::string_view name) {
-    return changes_induction(name) && model::is_enabled(origin.effects, name);
-  };
+// gain joins its coordinates, as it does whenever the model already has such an effect (it and
+// the gain shape B together, and an effect's best fit then moves both). Other effects on such a
+// model leave B alone: their trials share one B trace, and the gain is refined on its own
+// between passes, since such an effect can still take over force the gain had absorbed (on the
+// Table 4 schedule the current follows the displacement, so a spring's k x looks like a field).
+// `induction`, when given, is a B trace the first pass may already use.
+FittedModel refine_jointly(const model::DamperModel& origin, const Effects& effects, const Point& effect_start,
+                           std::initializer_list<RefinePass> passes, const model::DamperModel& start,
+                           const SeriesScales& scales, const FitSeries& series, std::int64_t& evaluations,
+                           std::shared_ptr<const InductionTrace> induction = nullptr) {
   const bool shapes_induction =
-      std::ranges::any_of(effects, changes_induction) || std::ranges::any_of(model::kEffectNames, lags);
+      std::ranges::any_of(effects, [](const model::EffectInfo* e) { return e->changes_induction; }) ||
+      std::ranges::any_of(model::effect_infos(), [&](const model::EffectInfo& e) {
+        return e.changes_induction && e.enabled(origin.effects);
+      });
   const FieldGain gain = shapes_induction ? FieldGain::kFitted : FieldGain::kKept;
   FittedModel fit;
   fit.model = origin;
   fit.theta = effect_start;
   for (const RefinePass& pass : passes) {
     ParameterSpace joint = base_space(fit.model, start, scales, gain);
-    for (const auto& name : effects) joint = combine(joint, effect_space(name, fit.model, scales));
+    for (const model::EffectInfo* e : effects) joint = combine(joint, effect_space(*e, fit.model, scales));
     if (gain == FieldGain::kKept) {
       // A new trace only when the gain step moved the magnetics.
       if (!induction || !induction->serves(fit.model))
@@ -101,12 +103,11 @@ FittedModel refine_jointly(const model::DamperModel& origin, const std::vector<s
   return fit;
 }
 
-// The coordinates of every effect of `names` in `model`, in that order.
-Point effect_coordinates(const std::vector<std::string>& names, const model::DamperModel& model,
-                         const SeriesScales& scales) {
+// The coordinates of every effect of `effects` in `model`, in that order.
+Point effect_coordinates(const Effects& effects, const model::DamperModel& model, const SeriesScales& scales) {
   Point all(0);
-  for (const auto& name : names) {
-    const Point more = effect_coordinates(name, model, scales);
+  for (const model::EffectInfo* e : effects) {
+    const Point more = effect_coordinates(*e, model, scales);
     Point both(all.size() + more.size());
     both << all, more;
     all = both;
@@ -114,156 +115,214 @@ Point effect_coordinates(const std::vector<std::string>& names, const model::Dam
   return all;
 }
 
+// What every step of the search shares: the series at its three resolutions, the pool, the seed
+// stream and the count of observer passes.
+struct Search {
+  Search(const FitSeries& series, const ResidualOptions& opts)
+      : full(series),
+        options(opts),
+        fit_series(decimate(full, decimation_factor(full, opts.max_fit_samples), opts.min_fit_rate)),
+        swarm_series(spread_windows(fit_series, opts.max_swarm_samples)),
+        scales(series_scales(fit_series)),
+        pool(opts.threads),
+        seed(opts.seed) {}
+
+  const FitSeries& full;
+  const ResidualOptions& options;
+  const FitSeries fit_series;    // what the fits run on
+  const FitSeries swarm_series;  // what the swarms that integrate J-A explore
+  const SeriesScales scales;
+  WorkerPool pool;
+  std::uint64_t seed;
+  std::atomic<std::int64_t> evaluations{0};
+
+  [[nodiscard]] double validation_rms(const model::DamperModel& m) const {
+    std::vector<double> force;
+    predict_force(m, fit_series, force);
+    return residual_rms(fit_series, force).validation;
+  }
+};
+
+// Step 2: the base model, a swarm on the windows and Nelder-Mead on the whole fitting series.
+FittedModel fit_base_model(Search& s, ParameterSpace& space) {
+  const model::DamperModel& start = s.options.start;
+  space = base_space(start, start, s.scales);
+  const FittedModel swarm =
+      fit_space(space, s.swarm_series, &s.pool, s.seed++, 2 * s.options.evaluations_per_parameter);
+  const FittedModel base = refine_space(space, s.fit_series, swarm.theta, 60, 0.02);
+  s.evaluations += swarm.evaluations + base.evaluations;
+  return base;
+}
+
+// The candidates: the options' names (default: every effect), less those the start declares.
+Effects candidate_effects(const ResidualOptions& options) {
+  Effects out;
+  for (const model::EffectInfo& e : model::effect_infos()) {
+    const bool listed = options.candidates.empty() ||
+                        std::ranges::find(options.candidates, e.name) != options.candidates.end();
+    if (listed && !e.enabled(options.start.effects)) out.push_back(&e);
+  }
+  return out;
+}
+
+struct Round {
+  std::vector<CandidateTrial> trials;  // one per candidate
+  std::vector<FittedModel> fits;
+  double null_validation = 0.0;  // the round's model refined with no effect added [N RMS]
+};
+
+// Step 4: each candidate on its own worker (a swarm over its parameters on the round's model,
+// its reversal thresholds scanned, then Nelder-Mead over those and the base parameters together),
+// and the null candidate: the round's model refined as a candidate that leaves B alone is, with
+// no effect added. Those that change B go first: each is one long serial chain of J-A passes,
+// which the other workers' candidates then fill around.
+Round try_candidates(Search& s, const model::DamperModel& current, double current_validation,
+                     const Effects& candidates, int round_number) {
+  Round round;
+  round.trials.resize(candidates.size());
+  round.fits.resize(candidates.size());
+  round.null_validation = current_validation;
+  const std::uint64_t round_seed = s.seed;
+  s.seed += candidates.size();
+  // The round model's B: every candidate that leaves B alone shares it during its swarm.
+  const auto round_induction = std::make_shared<const InductionTrace>(current, s.fit_series);
+  // (A candidate that changes B is refined with the gain jointly and more evaluations; on a
+  // model without such an effect it is judged against this lighter null refinement.)
+  const RefinePass kCandidatePasses[] = {{15, 0.02, 12}, {8, 0.02}};
+  const auto refine_candidate = [&](const Effects& effects, const Point& from, std::int64_t& spent) {
+    return refine_jointly(current, effects, from, {kCandidatePasses[0], kCandidatePasses[1]}, s.options.start,
+                          s.scales, s.fit_series, spent, round_induction);
+  };
+  std::vector<std::size_t> order(candidates.size() + 1);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::ranges::stable_partition(
+      order, [&](std::size_t k) { return k < candidates.size() && candidates[k]->changes_induction; });
+  s.pool.run(order.size(), [&](std::size_t slot, unsigned /*worker*/) {
+    const std::size_t k = order[slot];
+    std::vector<double> force;
+    if (k == candidates.size()) {
+      std::int64_t spent = 0;
+      const FittedModel refined = refine_candidate({}, Point(0), spent);
+      s.evaluations += spent;
+      predict_force(refined.model, s.fit_series, force);
+      round.null_validation = residual_rms(s.fit_series, force).validation;
+      return;
+    }
+    const model::EffectInfo& effect = *candidates[k];
+    ParameterSpace space = effect_space(effect, current, s.scales);
+    // Those that change B explore on windows; the others need the whole history (a slow
+    // drift does) and cost little on the round's B.
+    if (!effect.changes_induction) space.induction = round_induction;
+    const FittedModel alone = fit_space(space, effect.changes_induction ? s.swarm_series : s.fit_series, nullptr,
+                                        round_seed + k, s.options.evaluations_per_parameter);
+    std::int64_t spent = alone.evaluations;
+    FittedModel fit = alone;
+    if (has_reversal_threshold(effect)) {
+      fit = scan_reversal_thresholds(effect, space, s.fit_series, s.scales, alone.theta, spent);
+    }
+    fit = refine_candidate({&effect}, fit.theta, spent);
+    CandidateTrial& trial = round.trials[k];
+    trial.effect = std::string(effect.name);
+    trial.round = round_number;
+    predict_force(fit.model, s.fit_series, force);
+    trial.validation_rms = residual_rms(s.fit_series, force).validation;
+    s.evaluations += spent;
+    predict_force(fit.model, s.full, force);
+    const ResidualRms on_full = residual_rms(s.full, force);
+    trial.rms_after = on_full.all;
+    trial.max_after = on_full.max;
+    trial.parameters = effect.report(fit.model.effects);
+    if (const auto why = effect.implausible(fit.model.effects, s.scales)) trial.verdict = "not physical: " + *why;
+    round.fits[k] = std::move(fit);
+  });
+  return round;
+}
+
+// Step 5: each effect is credited only with what it adds to the same refinement without it
+// (the better of the round's model and the null candidate); the best physical candidate that
+// passes the threshold wins. Returns its index, or trials.size() when none passes.
+std::size_t judge_round(Round& round, double current_validation, double threshold) {
+  const double baseline = std::min(current_validation, round.null_validation);
+  for (CandidateTrial& trial : round.trials) {
+    trial.validation_before = baseline;
+    const double reduction = 1.0 - trial.validation_rms / std::max(baseline, 1e-300);
+    if (trial.verdict.empty() && reduction < threshold)
+      trial.verdict = format("validation RMS falls %.1f%%, below the %.0f%% threshold", 100.0 * reduction,
+                             100.0 * threshold);
+  }
+  std::size_t best = round.trials.size();
+  for (std::size_t i = 0; i < round.trials.size(); ++i) {
+    if (!round.trials[i].verdict.empty()) continue;
+    if (best == round.trials.size() || round.trials[i].validation_rms < round.trials[best].validation_rms) best = i;
+  }
+  if (best == round.trials.size()) return best;
+  CandidateTrial& winner = round.trials[best];
+  winner.accepted = true;
+  winner.verdict = format("accepted: validation RMS %.4g -> %.4g N", winner.validation_before, winner.validation_rms);
+  for (CandidateTrial& trial : round.trials) {
+    if (trial.verdict.empty()) trial.verdict = format("passes, but %s lowers the validation error more", winner.effect.c_str());
+  }
+  return best;
+}
+
+// After an acceptance, the model refined to convergence (all accepted effects and the base
+// together), so the next round's candidates are not credited with what a longer refinement of
+// this one would have found. Kept only if it validates at least as well: the polish minimises
+// the fitting error.
+model::DamperModel polish_accepted(Search& s, const model::DamperModel& accepted, const Effects& effects,
+                                   double& validation) {
+  std::int64_t spent = 0;
+  const model::DamperModel polished =
+      refine_jointly(accepted, effects, effect_coordinates(effects, accepted, s.scales),
+                     {{20, 0.02, 20}, {20, 0.005}, {20, 0.005}}, s.options.start, s.scales, s.fit_series, spent)
+          .model;
+  s.evaluations += spent;
+  const double polished_validation = s.validation_rms(polished);
+  const bool keep = polished_validation <= validation;
+  validation = std::min(polished_validation, validation);
+  return keep ? polished : accepted;
+}
+
 }  // namespace
 
 ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions& options) {
   const auto started = std::chrono::steady_clock::now();
+  Search s(full, options);
   ResidualResult result;
   result.samples = full.size();
   result.notes = full.notes;
-  const FitSeries fit_series =
-      decimate(full, decimation_factor(full, options.max_fit_samples), options.min_fit_rate);
-  result.fit_samples = fit_series.size();
+  result.fit_samples = s.fit_series.size();
   result.decimation = static_cast<std::size_t>(
-      std::lround(static_cast<double>(full.size()) / static_cast<double>(fit_series.size())));
-  const FitSeries swarm_series = spread_windows(fit_series, options.max_swarm_samples);
-  const SeriesScales scales = series_scales(fit_series);
-  WorkerPool pool(options.threads);
-  std::uint64_t seed = options.seed;
+      std::lround(static_cast<double>(full.size()) / static_cast<double>(s.fit_series.size())));
 
-  // 1. The base model.
-  const model::DamperModel& start = options.start;
-  const ParameterSpace base_fit_space = base_space(start, start, scales);
-  const FittedModel swarm =
-      fit_space(base_fit_space, swarm_series, &pool, seed++, 2 * options.evaluations_per_parameter);
-  const FittedModel base = refine_space(base_fit_space, fit_series, swarm.theta, 60, 0.02);
-  std::atomic<std::int64_t> evaluations = swarm.evaluations + base.evaluations;
+  // 1-3. The base model and its residual.
+  ParameterSpace base_fit_space;
+  const FittedModel base = fit_base_model(s, base_fit_space);
   result.base = base.model;
   result.base_parameters = describe_base(base_fit_space, base, options.start);
   predict_force(result.base, full, result.predicted_before);
   result.before = residual_rms(full, result.predicted_before);
   result.structure_before = analyse_residual(full, residual_of(full, result.predicted_before));
 
-  // 2-4. Greedy rounds over the candidates.
-  std::vector<std::string> candidates = options.candidates;
-  if (candidates.empty()) candidates.assign(model::kEffectNames.begin(), model::kEffectNames.end());
-  std::erase_if(candidates, [&](const std::string& name) { return model::is_enabled(options.start.effects, name); });
-
+  // 4-5. Greedy rounds over the candidates.
+  Effects candidates = candidate_effects(options);
+  Effects accepted;
   model::DamperModel current = base.model;
-  std::vector<double> scratch;
-  predict_force(current, fit_series, scratch);
-  double current_validation = residual_rms(fit_series, scratch).validation;
-  for (int round = 1; !candidates.empty(); ++round) {
-    // Each candidate on its own worker: a swarm over its parameters on the round's model,
-    // then Nelder-Mead over those and the base parameters together (an effect can change what
-    // the base fit absorbed, as a coil lag does the field gain).
-    std::vector<CandidateTrial> trials(candidates.size());
-    std::vector<FittedModel> fits(candidates.size());
-    const std::uint64_t round_seed = seed;
-    seed += candidates.size();
-    // The round model's B: every candidate but coil_lag leaves it as it is during its swarm.
-    const auto round_induction = std::make_shared<const InductionTrace>(current, fit_series);
-    // Those that change B first: each is one long serial chain of J-A passes, which the other
-    // workers' candidates then fill around. The last task is the null candidate: the round's
-    // model refined as a candidate that leaves B alone is, with no effect added. (coil_lag's
-    // refinement moves the gain jointly with more evaluations; on a model without a lag it is
-    // judged against this lighter refinement.)
-    const RefinePass kCandidatePasses[] = {{15, 0.02, 12}, {8, 0.02}};
-    const auto refine_candidate = [&](const std::vector<std::string>& effects, const Point& from,
-                                      std::int64_t& spent) {
-      return refine_jointly(current, effects, from, {kCandidatePasses[0], kCandidatePasses[1]}, options.start,
-                            scales, fit_series, spent, round_induction);
-    };
-    std::vector<std::size_t> order(candidates.size() + 1);
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    std::ranges::stable_partition(order, [&](std::size_t k) {
-      return k < candidates.size() && changes_induction(candidates[k]);
-    });
-    double null_validation = current_validation;
-    pool.run(order.size(), [&](std::size_t slot, unsigned /*worker*/) {
-      const std::size_t k = order[slot];
-      std::vector<double> force;
-      if (k == candidates.size()) {
-        std::int64_t spent = 0;
-        const FittedModel refined = refine_candidate({}, Point(0), spent);
-        evaluations += spent;
-        predict_force(refined.model, fit_series, force);
-        null_validation = residual_rms(fit_series, force).validation;
-        return;
-      }
-      const std::string& name = candidates[k];
-      ParameterSpace effect = effect_space(name, current, scales);
-      // Those that change B explore on windows; the others need the whole history (a thermal
-      // drift does) and cost little on the round's B.
-      const bool magnetic = changes_induction(name);
-      if (!magnetic) effect.induction = round_induction;
-      const FittedModel alone = fit_space(effect, magnetic ? swarm_series : fit_series, nullptr, round_seed + k,
-                                          options.evaluations_per_parameter);
-      std::int64_t spent = alone.evaluations;
-      FittedModel fit = alone;
-      if (name == "stroke_end_air") fit = scan_stroke_threshold(effect, fit_series, scales, alone.theta, spent);
-      fit = refine_candidate({name}, fit.theta, spent);
-      CandidateTrial& trial = trials[k];
-      trial.effect = name;
-      trial.round = round;
-      predict_force(fit.model, fit_series, force);
-      trial.validation_rms = residual_rms(fit_series, force).validation;
-      evaluations += spent;
-      predict_force(fit.model, full, force);
-      const ResidualRms on_full = residual_rms(full, force);
-      trial.rms_after = on_full.all;
-      trial.max_after = on_full.max;
-      trial.parameters = effect_parameters(name, fit.model.effects);
-      if (const auto why = implausible(name, fit, scales)) trial.verdict = "not physical: " + *why;
-      fits[k] = std::move(fit);
-    });
-    // An effect is credited only with what it adds to the same refinement without it.
-    const double baseline = std::min(current_validation, null_validation);
-    for (CandidateTrial& trial : trials) {
-      trial.validation_before = baseline;
-      const double reduction = 1.0 - trial.validation_rms / std::max(baseline, 1e-300);
-      if (trial.verdict.empty() && reduction < options.minimum_reduction)
-        trial.verdict = format("validation RMS falls %.1f%%, below the %.0f%% threshold", 100.0 * reduction,
-                               100.0 * options.minimum_reduction);
-    }
-    // The best passing candidate by validation error.
-    std::size_t best = trials.size();
-    for (std::size_t i = 0; i < trials.size(); ++i) {
-      if (!trials[i].verdict.empty()) continue;
-      if (best == trials.size() || trials[i].validation_rms < trials[best].validation_rms) best = i;
-    }
-    if (best < trials.size()) {
-      trials[best].accepted = true;
-      trials[best].verdict = format("accepted: validation RMS %.4g -> %.4g N", trials[best].validation_before,
-                                    trials[best].validation_rms);
-      result.accepted.push_back(trials[best].effect);
-      // The next round compares its candidates with this model refined to convergence, so
-      // no candidate is credited with what a longer refinement of this one would have found.
-      // Kept only if it validates at least as well: the polish minimises the fitting error.
-      std::int64_t polish_evaluations = 0;
-      const model::DamperModel& accepted = fits[best].model;
-      const model::DamperModel polished =
-          refine_jointly(accepted, result.accepted, effect_coordinates(result.accepted, accepted, scales),
-                         {{20, 0.02, 20}, {20, 0.005}, {20, 0.005}}, start, scales, fit_series,
-                         polish_evaluations)
-              .model;
-      evaluations += polish_evaluations;
-      predict_force(polished, fit_series, scratch);
-      const double polished_validation = residual_rms(fit_series, scratch).validation;
-      current = polished_validation <= trials[best].validation_rms ? polished : accepted;
-      current_validation = std::min(polished_validation, trials[best].validation_rms);
-      std::erase(candidates, trials[best].effect);
-    }
-    for (std::size_t i = 0; i < trials.size(); ++i) {
-      if (trials[i].verdict.empty())
-        trials[i].verdict = format("passes, but %s lowers the validation error more", trials[best].effect.c_str());
-    }
-    result.trials.insert(result.trials.end(), trials.begin(), trials.end());
-    if (best == trials.size()) break;
+  double current_validation = s.validation_rms(current);
+  for (int round_number = 1; !candidates.empty(); ++round_number) {
+    Round round = try_candidates(s, current, current_validation, candidates, round_number);
+    const std::size_t best = judge_round(round, current_validation, options.minimum_reduction);
+    result.trials.insert(result.trials.end(), round.trials.begin(), round.trials.end());
+    if (best == round.trials.size()) break;
+    accepted.push_back(candidates[best]);
+    result.accepted.push_back(round.trials[best].effect);
+    current_validation = round.trials[best].validation_rms;
+    current = polish_accepted(s, round.fits[best].model, accepted, current_validation);
+    candidates.erase(candidates.begin() + static_cast<std::ptrdiff_t>(best));
   }
 
   result.final_model = current;
-  result.evaluations = evaluations;
+  result.evaluations = s.evaluations;
   predict_force(current, full, result.predicted_after);
   result.after = residual_rms(full, result.predicted_after);
   result.structure_after = analyse_residual(full, residual_of(full, result.predicted_after));

@@ -8,6 +8,40 @@
 
 namespace mrd::tools {
 
+namespace {
+
+// The sizes of the effects at size 1 on one class (the thermal drift is sized by the run's
+// energy: its descriptor's nominal rise).
+struct NominalSizes {
+  double coil_time_constant;    // [s]
+  double preyield_travel;       // z_max of the Bouc-Wen element [m]
+  double preyield_fraction;     // share w of the yield force it carries [-]
+  double gas_preload;           // [N]
+  double gas_stiffness;         // [N/m]
+  double sensor_delay;          // [s]
+  double stroke_end_threshold;  // [m]
+  double stroke_end_length;     // [m]
+  double stroke_end_depth;      // [-], capped at 0.95 when sized up
+};
+
+void set_nominal_effects(model::EffectSet& e, const NominalSizes& n) {
+  e.get<model::CoilLagEffect>().time_constant = n.coil_time_constant;
+  auto& h = e.get<model::PreyieldHysteresisEffect>();
+  h.A = 1.0;
+  h.n = 2.0;
+  h.beta = 0.5 / (n.preyield_travel * n.preyield_travel);  // (A / (beta + gamma))^(1/2) = z_max
+  h.gamma = h.beta;
+  h.yield_fraction = n.preyield_fraction;
+  e.get<model::GasSpringEffect>() = {false, n.gas_preload, n.gas_stiffness};
+  e.get<model::SensorDelayEffect>().delay = n.sensor_delay;
+  auto& a = e.get<model::StrokeEndAirEffect>();
+  a.threshold = n.stroke_end_threshold;
+  a.length = n.stroke_end_length;
+  a.depth = n.stroke_end_depth;
+}
+
+}  // namespace
+
 DamperClass damper_class_50kN() {
   DamperClass c;
   c.name = "50kN";
@@ -18,16 +52,16 @@ DamperClass damper_class_50kN() {
   c.force_noise = 25.0;  // 0.05 % of the peak force
   c.random_low = 0.05;
   c.random_high = 1.0;
-  c.coil_time_constant = 20e-3;  // a large coil: L/R of tens of ms
-  c.preyield_travel = 0.5e-3;
-  c.preyield_fraction = 0.1;
-  c.gas_preload = 1500.0;
-  c.gas_stiffness = 30e3;
-  c.thermal_rise = 20.0;
-  c.sensor_delay = 5e-3;
-  c.stroke_end_threshold = 0.030;  // Section 4.3: 30-40 mm
-  c.stroke_end_length = 5e-3;
-  c.stroke_end_depth = 0.45;
+  set_nominal_effects(c.nominal_effects, {
+      .coil_time_constant = 20e-3,  // a large coil: L/R of tens of ms
+      .preyield_travel = 0.5e-3,
+      .preyield_fraction = 0.1,
+      .gas_preload = 1500.0,
+      .gas_stiffness = 30e3,
+      .sensor_delay = 5e-3,
+      .stroke_end_threshold = 0.030,  // Section 4.3: 30-40 mm
+      .stroke_end_length = 5e-3,
+      .stroke_end_depth = 0.45});
   return c;
 }
 
@@ -50,16 +84,16 @@ DamperClass damper_class_1kN() {
   c.force_noise = 2.0;
   c.random_low = 0.1;
   c.random_high = 5.0;
-  c.coil_time_constant = 1.0 / 190.0;  // Spencer 1997, Dyke's damper
-  c.preyield_travel = 0.2e-3;
-  c.preyield_fraction = 0.1;
-  c.gas_preload = 70.0;                // Spencer's k1 x0 = 71.5 N
-  c.gas_stiffness = 500.0;             // Spencer's k1
-  c.thermal_rise = 20.0;
-  c.sensor_delay = 1.5e-3;  // motion up to 5 Hz: a few ms is already a large phase error
-  c.stroke_end_threshold = 0.015;
-  c.stroke_end_length = 2.5e-3;
-  c.stroke_end_depth = 0.45;
+  set_nominal_effects(c.nominal_effects, {
+      .coil_time_constant = 1.0 / 190.0,  // Spencer 1997, Dyke's damper
+      .preyield_travel = 0.2e-3,
+      .preyield_fraction = 0.1,
+      .gas_preload = 70.0,      // Spencer's k1 x0 = 71.5 N
+      .gas_stiffness = 500.0,   // Spencer's k1
+      .sensor_delay = 1.5e-3,   // motion up to 5 Hz: a few ms is already a large phase error
+      .stroke_end_threshold = 0.015,
+      .stroke_end_length = 2.5e-3,
+      .stroke_end_depth = 0.45});
   return c;
 }
 
@@ -72,8 +106,7 @@ std::optional<DamperClass> find_damper_class(std::string_view name) {
 std::optional<EffectRequest> parse_effect_request(std::string_view text, std::string& error) {
   const auto colon = text.find(':');
   EffectRequest request{std::string(text.substr(0, colon)), 1.0};
-  if (std::find(model::kEffectNames.begin(), model::kEffectNames.end(), request.name) ==
-      model::kEffectNames.end()) {
+  if (model::find_effect(request.name) == nullptr) {
     error = "unknown effect '" + request.name + "'; known: ";
     for (const auto name : model::kEffectNames) error += std::string(name) + " ";
     return std::nullopt;
@@ -97,31 +130,9 @@ std::optional<EffectRequest> parse_effect_request(std::string_view text, std::st
   return request;
 }
 
-void apply_effect(const DamperClass& c, const EffectRequest& r, double dissipated_energy,
-                  model::EffectSet& e) {
-  const double s = r.size;
-  if (r.name == "coil_lag") {
-    e.coil_lag = {true, s * c.coil_time_constant};
-  } else if (r.name == "preyield_hysteresis") {
-    const double z_max = c.preyield_travel;
-    e.preyield_hysteresis.enabled = true;
-    e.preyield_hysteresis.A = 1.0;
-    e.preyield_hysteresis.n = 2.0;
-    e.preyield_hysteresis.beta = 0.5 / (z_max * z_max);  // (A / (beta + gamma))^(1/2) = z_max
-    e.preyield_hysteresis.gamma = e.preyield_hysteresis.beta;
-    e.preyield_hysteresis.yield_fraction = std::min(s * c.preyield_fraction, 1.0);
-  } else if (r.name == "gas_spring") {
-    e.gas_spring = {true, s * c.gas_preload, s * c.gas_stiffness};
-  } else if (r.name == "thermal_drift") {
-    e.thermal_drift.enabled = true;
-    e.thermal_drift.heat_capacity = std::max(dissipated_energy, 1.0) / (s * c.thermal_rise);
-  } else if (r.name == "sensor_delay") {
-    e.sensor_delay = {true, std::min(s * c.sensor_delay, model::kMaxSensorDelay)};
-  } else if (r.name == "stroke_end_air") {
-    e.stroke_end_air.enabled = true;
-    e.stroke_end_air.threshold = c.stroke_end_threshold;
-    e.stroke_end_air.length = c.stroke_end_length;
-    e.stroke_end_air.depth = std::min(s * c.stroke_end_depth, 0.95);
+void apply_effect(const DamperClass& c, const EffectRequest& r, double dissipated_energy, model::EffectSet& e) {
+  if (const model::EffectInfo* effect = model::find_effect(r.name)) {
+    effect->resize(e, c.nominal_effects, r.size, dissipated_energy);
   }
 }
 

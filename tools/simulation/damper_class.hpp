@@ -6,6 +6,7 @@
 
 #include "model/current_schedule.hpp"
 #include "model/damper_model.hpp"
+#include "model/effects/effect_set.hpp"
 
 namespace mrd::tools {
 
@@ -22,17 +23,9 @@ struct DamperClass {
   double force_noise = 0.0;              // load cell [N RMS]
   double random_low = 0.0;               // band of random motion [Hz]
   double random_high = 0.0;
-  // The effects at size 1:
-  double coil_time_constant = 0.0;       // [s]
-  double preyield_travel = 0.0;          // z_max of the Bouc-Wen element [m]
-  double preyield_fraction = 0.0;        // share w of the yield force it carries [-]
-  double gas_preload = 0.0;              // [N]
-  double gas_stiffness = 0.0;            // [N/m]
-  double thermal_rise = 0.0;             // fluid temperature rise over the run [K]
-  double sensor_delay = 0.0;             // [s]
-  double stroke_end_threshold = 0.0;     // [m]
-  double stroke_end_length = 0.0;        // [m]
-  double stroke_end_depth = 0.0;         // [-], capped at 0.95 when sized up
+  // Each effect's parameters at size 1 (all off: --effect switches one on, each descriptor's
+  // resize() says what a size does to it).
+  model::EffectSet nominal_effects;
 };
 
 // The project's default damper (docs/MODEL.md): 100 mm piston, 0..1.2 A, +-40 mm.
@@ -51,16 +44,9 @@ struct EffectRequest {
 // nullopt with `error` set for an unknown name or a bad size.
 std::optional<EffectRequest> parse_effect_request(std::string_view text, std::string& error);
 
-// Switches the effect on in `effects`, sized for the damper class:
-//   coil_lag             tau = size x coil_time_constant
-//   preyield_hysteresis  w = min(size x preyield_fraction, 1), z_max = preyield_travel
-//                        (A = 1, n = 2, beta = gamma)
-//   gas_spring           F0 = size x gas_preload, k = size x gas_stiffness
-//   thermal_drift        C such that the run's dissipated energy heats the fluid by
-//                        size x thermal_rise (cooling aside): C = E / (size x rise)
-//   sensor_delay         d = size x sensor_delay (at most model::kMaxSensorDelay)
-//   stroke_end_air       depth = min(size x stroke_end_depth, 0.95), the class's threshold and length
-// `dissipated_energy` [J] is the clean run's, used by thermal_drift only.
+// Switches the effect on in `effects`, the class's nominal instance scaled by the request's
+// size (model/effects/: each descriptor's resize()). `dissipated_energy` [J] is the clean run's,
+// for effects sized by how much the run heats them.
 void apply_effect(const DamperClass& damper, const EffectRequest& request, double dissipated_energy,
                   model::EffectSet& effects);
 

@@ -16,14 +16,9 @@ void list_effects() {
   for (const char* name : {"50kN", "1kN"}) {
     const auto c = *mrd::tools::find_damper_class(name);
     std::printf("%s class, size 1 (small = 0.5, large = 2 times it):\n", name);
-    std::printf("  coil_lag             tau = %.3g ms\n", c.coil_time_constant * 1e3);
-    std::printf("  preyield_hysteresis  %.3g of the yield force on z, z_max = %.3g mm\n", c.preyield_fraction,
-                c.preyield_travel * 1e3);
-    std::printf("  gas_spring           F0 = %.4g N, k = %.4g N/m\n", c.gas_preload, c.gas_stiffness);
-    std::printf("  thermal_drift        the run heats the fluid by %.3g K\n", c.thermal_rise);
-    std::printf("  sensor_delay         %.3g ms\n", c.sensor_delay * 1e3);
-    std::printf("  stroke_end_air       depth %.2f after reversals beyond %.3g mm, recovery %.3g mm\n",
-                c.stroke_end_depth, c.stroke_end_threshold * 1e3, c.stroke_end_length * 1e3);
+    for (const mrd::model::EffectInfo& e : mrd::model::effect_infos()) {
+      std::printf("  %-20s %s\n", std::string(e.name).c_str(), e.size_summary(c.nominal_effects).c_str());
+    }
   }
 }
 

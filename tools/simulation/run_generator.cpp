@@ -152,7 +152,7 @@ double model_residual(const SimulatedRun& run, const model::EffectSet& effects) 
   model::Observer observer(damper, {1.0 / run.options.rate});
   double sum = 0.0;
   for (const auto& s : run.samples) {
-    const double e = observer.step(s.displacement, s.velocity, s.current).force - s.force;
+    const double e = observer.step({.displacement = s.displacement, .velocity = s.velocity, .coil_current = s.current}).force - s.force;
     sum += e * e;
   }
   return run.samples.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(run.samples.size()));

@@ -13,6 +13,12 @@ namespace {
 using mrd::model::DamperModel;
 using mrd::model::EffectSet;
 using mrd::model::Observer;
+using mrd::model::CoilLagEffect;
+using mrd::model::GasSpringEffect;
+using mrd::model::PreyieldHysteresisEffect;
+using mrd::model::SensorDelayEffect;
+using mrd::model::StrokeEndAirEffect;
+using mrd::model::ThermalDriftEffect;
 
 constexpr double kT = 1e-3;
 
@@ -31,7 +37,7 @@ double rms_force_change(const DamperModel& a, const DamperModel& b) {
   Observer oa(a), ob(b);
   double sum = 0.0;
   for (int k = 0; k < 4000; ++k) {
-    const double d = oa.step(x_at(k), v_at(k), i_at(k)).force - ob.step(x_at(k), v_at(k), i_at(k)).force;
+    const double d = oa.step({.displacement = x_at(k), .velocity = v_at(k), .coil_current = i_at(k)}).force - ob.step({.displacement = x_at(k), .velocity = v_at(k), .coil_current = i_at(k)}).force;
     sum += d * d;
   }
   return std::sqrt(sum / 4000);
@@ -39,14 +45,14 @@ double rms_force_change(const DamperModel& a, const DamperModel& b) {
 
 TEST(ObserverEffects, AllOffIsTheBaseModelBitForBit) {
   DamperModel m;
-  m.effects.coil_lag.time_constant = 0.5;  // parameters of disabled effects change nothing
-  m.effects.gas_spring.preload = 1e4;
+  m.effects.get<CoilLagEffect>().time_constant = 0.5;  // parameters of disabled effects change nothing
+  m.effects.get<GasSpringEffect>().preload = 1e4;
   Observer observer(m);
   mrd::model::JilesAtherton ja(m.jiles_atherton, m.circuit, m.integration);
   const mrd::model::YieldStress tau(m.fluid);
   const mrd::model::BinghamDamper bingham(m.geometry, m.fluid.viscosity);
   for (int k = 0; k < 3000; ++k) {
-    const auto e = observer.step(x_at(k), v_at(k), i_at(k));
+    const auto e = observer.step({.displacement = x_at(k), .velocity = v_at(k), .coil_current = i_at(k)});
     const double B = ja.apply_current(i_at(k));
     ASSERT_EQ(e.B, B);
     ASSERT_EQ(e.force, bingham.force(v_at(k), tau(B)));
@@ -59,16 +65,16 @@ TEST(ObserverEffects, StepAtInductionGivesTheStepsForceForItsB) {
   for (const bool effects : {false, true}) {
     DamperModel m;
     if (effects) {
-      m.effects.thermal_drift.enabled = true;
-      m.effects.preyield_hysteresis.enabled = true;
-      m.effects.gas_spring.enabled = true;
-      m.effects.stroke_end_air.enabled = true;
-      m.effects.sensor_delay.enabled = true;
+      m.effects.get<ThermalDriftEffect>().enabled = true;
+      m.effects.get<PreyieldHysteresisEffect>().enabled = true;
+      m.effects.get<GasSpringEffect>().enabled = true;
+      m.effects.get<StrokeEndAirEffect>().enabled = true;
+      m.effects.get<SensorDelayEffect>().enabled = true;
     }
     Observer full(m), at_B(m);
     for (int k = 0; k < 3000; ++k) {
-      const auto e = full.step(x_at(k), v_at(k), i_at(k));
-      const auto f = at_B.step_at_induction(x_at(k), v_at(k), e.B);
+      const auto e = full.step({.displacement = x_at(k), .velocity = v_at(k), .coil_current = i_at(k)});
+      const auto f = at_B.step_at_induction({.displacement = x_at(k), .velocity = v_at(k)}, e.B);
       ASSERT_EQ(f.force, e.force) << "effects " << effects << ", step " << k;
       ASSERT_EQ(f.yield_stress, e.yield_stress);
     }
@@ -77,69 +83,69 @@ TEST(ObserverEffects, StepAtInductionGivesTheStepsForceForItsB) {
 }
 
 TEST(ObserverEffects, GasSpringAddsExactlyItsForce) {
-  const auto m = with([](EffectSet& e) { e.gas_spring = {true, 1500.0, 3e4}; });
+  const auto m = with([](EffectSet& e) { e.get<GasSpringEffect>() = {true, 1500.0, 3e4}; });
   Observer base(DamperModel{}), sprung(m);
   for (int k = 0; k < 2000; ++k) {
-    const double d = sprung.step(x_at(k), v_at(k), i_at(k)).force - base.step(x_at(k), v_at(k), i_at(k)).force;
+    const double d = sprung.step({.displacement = x_at(k), .velocity = v_at(k), .coil_current = i_at(k)}).force - base.step({.displacement = x_at(k), .velocity = v_at(k), .coil_current = i_at(k)}).force;
     ASSERT_NEAR(d, 1500.0 + 3e4 * x_at(k), 1e-9) << k;
   }
 }
 
 TEST(ObserverEffects, CoilLagDelaysTheField) {
-  const auto m = with([](EffectSet& e) { e.coil_lag = {true, 20e-3}; });
+  const auto m = with([](EffectSet& e) { e.get<CoilLagEffect>() = {true, 20e-3}; });
   Observer lagged(m);
   Observer base{DamperModel{}};
-  const auto step_b = base.step(0.0, 0.1, 1.0);
-  const auto step_l = lagged.step(0.0, 0.1, 1.0);
+  const auto step_b = base.step({.displacement = 0.0, .velocity = 0.1, .coil_current = 1.0});
+  const auto step_l = lagged.step({.displacement = 0.0, .velocity = 0.1, .coil_current = 1.0});
   EXPECT_LT(step_l.B, 0.2 * step_b.B);  // after one period the current is 1 - exp(-1/20) = 5 %
   EXPECT_NEAR(lagged.effects().coil_current(), -std::expm1(-1.0 / 20.0), 1e-12);
-  for (int k = 0; k < 200; ++k) lagged.step(0.0, 0.1, 1.0);  // 10 tau later it has caught up
-  EXPECT_NEAR(lagged.estimate().B, base.step(0.0, 0.1, 1.0).B, 1e-3);
+  for (int k = 0; k < 200; ++k) lagged.step({.displacement = 0.0, .velocity = 0.1, .coil_current = 1.0});  // 10 tau later it has caught up
+  EXPECT_NEAR(lagged.estimate().B, base.step({.displacement = 0.0, .velocity = 0.1, .coil_current = 1.0}).B, 1e-3);
 }
 
 TEST(ObserverEffects, ThermalDriftLowersTheForceAsTheFluidHeats) {
   auto m = with([](EffectSet& e) {
-    e.thermal_drift.enabled = true;
-    e.thermal_drift.heat_capacity = 2000.0;  // small: it heats within the test
+    e.get<ThermalDriftEffect>().enabled = true;
+    e.get<ThermalDriftEffect>().heat_capacity = 2000.0;  // small: it heats within the test
   });
   Observer hot(m), base{DamperModel{}};
   for (int k = 0; k < 4000; ++k) {
-    hot.step(x_at(k), v_at(k), i_at(k));
-    base.step(x_at(k), v_at(k), i_at(k));
+    hot.step({.displacement = x_at(k), .velocity = v_at(k), .coil_current = i_at(k)});
+    base.step({.displacement = x_at(k), .velocity = v_at(k), .coil_current = i_at(k)});
   }
   EXPECT_GT(hot.effects().temperature(), 25.0);
   EXPECT_LT(std::fabs(hot.estimate().force), std::fabs(base.estimate().force));
   EXPECT_LT(hot.estimate().yield_stress, base.estimate().yield_stress);
   // A measured temperature at the reference gives the base model's yield stress back.
   hot.set_measured_temperature(20.0);
-  const auto e = hot.step(x_at(4000), v_at(4000), i_at(4000));
-  EXPECT_NEAR(e.yield_stress, base.step(x_at(4000), v_at(4000), i_at(4000)).yield_stress, 1e-6);
+  const auto e = hot.step({.displacement = x_at(4000), .velocity = v_at(4000), .coil_current = i_at(4000)});
+  EXPECT_NEAR(e.yield_stress, base.step({.displacement = x_at(4000), .velocity = v_at(4000), .coil_current = i_at(4000)}).yield_stress, 1e-6);
 }
 
 TEST(ObserverEffects, EachEffectChangesTheForce) {
   const DamperModel base;
-  EXPECT_GT(rms_force_change(base, with([](EffectSet& e) { e.coil_lag.enabled = true; })), 100.0);
-  EXPECT_GT(rms_force_change(base, with([](EffectSet& e) { e.preyield_hysteresis.enabled = true; })), 100.0);
-  EXPECT_GT(rms_force_change(base, with([](EffectSet& e) { e.thermal_drift = {.enabled = true, .heat_capacity = 500.0}; })), 100.0);
-  EXPECT_GT(rms_force_change(base, with([](EffectSet& e) { e.stroke_end_air.enabled = true; })), 100.0);
-  EXPECT_GT(rms_force_change(base, with([](EffectSet& e) { e.gas_spring = {true, 100.0, 0.0}; })), 99.0);
-  EXPECT_GT(rms_force_change(base, with([](EffectSet& e) { e.sensor_delay = {true, 5e-3}; })), 10.0);
+  EXPECT_GT(rms_force_change(base, with([](EffectSet& e) { e.get<CoilLagEffect>().enabled = true; })), 100.0);
+  EXPECT_GT(rms_force_change(base, with([](EffectSet& e) { e.get<PreyieldHysteresisEffect>().enabled = true; })), 100.0);
+  EXPECT_GT(rms_force_change(base, with([](EffectSet& e) { e.get<ThermalDriftEffect>() = {.enabled = true, .heat_capacity = 500.0}; })), 100.0);
+  EXPECT_GT(rms_force_change(base, with([](EffectSet& e) { e.get<StrokeEndAirEffect>().enabled = true; })), 100.0);
+  EXPECT_GT(rms_force_change(base, with([](EffectSet& e) { e.get<GasSpringEffect>() = {true, 100.0, 0.0}; })), 99.0);
+  EXPECT_GT(rms_force_change(base, with([](EffectSet& e) { e.get<SensorDelayEffect>() = {true, 5e-3}; })), 10.0);
 }
 
 // The observer fed by a late LVDT: with sensor_delay on it predicts the motion across the delay
 // and its force is closer to the force of an observer that sees the true displacement.
 TEST(ObserverEffects, SensorDelayCompensationBringsBackTheTrueForce) {
   const double delay = 8e-3;
-  const auto compensating = with([](EffectSet& e) { e.sensor_delay = {true, 8e-3}; });
+  const auto compensating = with([](EffectSet& e) { e.get<SensorDelayEffect>() = {true, 8e-3}; });
   Observer truth{DamperModel{}}, naive{DamperModel{}}, predicted(compensating);
   mrd::model::SensorDelay lvdt({true, delay}, kT);
   double naive_sq = 0.0;
   double predicted_sq = 0.0;
   for (int k = 0; k < 6000; ++k) {
     const double late = lvdt.step(x_at(k));
-    const double f = truth.step(x_at(k), i_at(k)).force;
-    const double a = naive.step(late, i_at(k)).force - f;
-    const double b = predicted.step(late, i_at(k)).force - f;
+    const double f = truth.step({.displacement = x_at(k), .coil_current = i_at(k)}).force;
+    const double a = naive.step({.displacement = late, .coil_current = i_at(k)}).force - f;
+    const double b = predicted.step({.displacement = late, .coil_current = i_at(k)}).force - f;
     if (k >= 2000) {
       naive_sq += a * a;
       predicted_sq += b * b;
@@ -150,20 +156,20 @@ TEST(ObserverEffects, SensorDelayCompensationBringsBackTheTrueForce) {
 
 TEST(ObserverEffects, ResetRestartsEveryEffect) {
   auto m = with([](EffectSet& e) {
-    e.coil_lag.enabled = true;
-    e.preyield_hysteresis.enabled = true;
-    e.thermal_drift = {.enabled = true, .heat_capacity = 500.0};
-    e.stroke_end_air.enabled = true;
+    e.get<CoilLagEffect>().enabled = true;
+    e.get<PreyieldHysteresisEffect>().enabled = true;
+    e.get<ThermalDriftEffect>() = {.enabled = true, .heat_capacity = 500.0};
+    e.get<StrokeEndAirEffect>().enabled = true;
   });
   Observer a(m), b(m);
-  for (int k = 0; k < 3000; ++k) a.step(x_at(k), i_at(k));
+  for (int k = 0; k < 3000; ++k) a.step({.displacement = x_at(k), .coil_current = i_at(k)});
   a.reset();
-  for (int k = 0; k < 3000; ++k) ASSERT_EQ(a.step(x_at(k), i_at(k)).force, b.step(x_at(k), i_at(k)).force);
+  for (int k = 0; k < 3000; ++k) ASSERT_EQ(a.step({.displacement = x_at(k), .coil_current = i_at(k)}).force, b.step({.displacement = x_at(k), .coil_current = i_at(k)}).force);
 }
 
 TEST(ObserverEffects, ValidateReportsEffectFieldsUnderTheirPath) {
   DamperModel m;
-  m.effects.coil_lag.time_constant = -1.0;
+  m.effects.get<CoilLagEffect>().time_constant = -1.0;
   const auto report = validate(m);
   ASSERT_FALSE(report.ok());
   EXPECT_EQ(report.issues().front().field, "effects.coil_lag.time_constant");

@@ -57,7 +57,7 @@ TEST(MissingEffects, CoilLagOfAConstantCurrentRunFromItsSwitchOn) {
   const mrd::record::RecordedRun run = residual_testing::simulated_recorded_run(RunProfile::kSine, "1kN", {{"coil_lag", 2.0}}, 4.0);
   const ResidualResult r = residual_testing::analyse(run);
   ASSERT_EQ(r.accepted, std::vector<std::string>{"coil_lag"}) << residual_summary({run}, r);
-  EXPECT_NEAR(r.final_model.effects.coil_lag.time_constant, 2.0 * 5.3e-3, 1e-3);
+  EXPECT_NEAR(r.final_model.effects.get<mrd::model::CoilLagEffect>().time_constant, 2.0 * 5.3e-3, 1e-3);
 }
 
 }  // namespace

@@ -24,11 +24,13 @@ TEST(ModelFit, LinearTermsAreTheModelTheyDescribe) {
   const mrd::model::DamperModel base;
   std::vector<double> f, scaled;
   predict_force(base, s, f);
-  const LinearTerms t{0.37, 2500.0, true, 120.0, 4000.0};
+  // The gas spring's F0 and k are linear columns (its descriptor's kLinear).
+  const LinearTerms t{0.37, 2500.0, {mrd::model::find_effect("gas_spring")}, {120.0, 4000.0}};
   predict_force(apply_linear_terms(base, t), s, scaled);
   double worst = 0.0, largest = 0.0;
   for (std::size_t i = 0; i < s.size(); ++i) {
-    const double expected = t.force_scale * f[i] + t.extra_viscous * s.velocity[i] + t.preload + t.stiffness * s.displacement[i];
+    const double expected =
+        t.force_scale * f[i] + t.extra_viscous * s.velocity[i] + 120.0 + 4000.0 * s.displacement[i];
     worst = std::max(worst, std::fabs(scaled[i] - expected));
     largest = std::max(largest, std::fabs(expected));
   }
@@ -43,7 +45,7 @@ TEST(ModelFit, InductionTraceServesOnlyTheSameMagnetics) {
   const InductionTrace trace(base, s);
   mrd::model::DamperModel after_B = base;
   after_B.fluid.viscosity *= 1.3;
-  after_B.effects.gas_spring.enabled = true;
+  after_B.effects.get<mrd::model::GasSpringEffect>().enabled = true;
   ASSERT_TRUE(trace.serves(after_B));
   std::vector<double> direct, traced;
   predict_force(after_B, s, direct);
@@ -54,7 +56,7 @@ TEST(ModelFit, InductionTraceServesOnlyTheSameMagnetics) {
   gain.circuit.turns *= 1.01;
   EXPECT_FALSE(trace.serves(gain));
   mrd::model::DamperModel lag = base;
-  lag.effects.coil_lag.enabled = true;
+  lag.effects.get<mrd::model::CoilLagEffect>().enabled = true;
   EXPECT_FALSE(trace.serves(lag));
   predict_force(gain, s, direct);
   predict_force(gain, s, traced, &trace);  // not served: J-A runs
@@ -67,7 +69,7 @@ TEST(ModelFit, LinearTermsComeBackFromAScaledForce) {
   predict_force(mrd::model::DamperModel{}, truth, f);
   FitSeries s = truth;
   for (std::size_t i = 0; i < s.size(); ++i) s.force[i] = 0.5 * f[i] - 800.0 * s.velocity[i];
-  const LinearTerms t = fit_linear_terms(s, f, false);
+  const LinearTerms t = fit_linear_terms(s, f, {});
   EXPECT_NEAR(t.force_scale, 0.5, 1e-9);
   EXPECT_NEAR(t.extra_viscous, -800.0, 1e-6);
   EXPECT_LT(linear_fit_rms(s, f, t), 1e-6);
@@ -76,11 +78,11 @@ TEST(ModelFit, LinearTermsComeBackFromAScaledForce) {
 TEST(ModelFit, SwarmThenNelderMeadFindTheCoilTimeConstant) {
   const FitSeries s = table4_series({{"coil_lag", 1.0}});  // tau 20 ms on the 50 kN class
   const SeriesScales scales = series_scales(s);
-  const ParameterSpace space = effect_space("coil_lag", mrd::model::DamperModel{}, scales);
+  const ParameterSpace space = effect_space(*mrd::model::find_effect("coil_lag"), mrd::model::DamperModel{}, scales);
   WorkerPool pool(2);
   const FittedModel swarm = fit_space(space, s, &pool, 7, 32);
   const FittedModel fit = refine_space(space, s, swarm.theta, 40, 0.02);
-  EXPECT_NEAR(fit.model.effects.coil_lag.time_constant, 0.020, 0.001);
+  EXPECT_NEAR(fit.model.effects.get<mrd::model::CoilLagEffect>().time_constant, 0.020, 0.001);
   EXPECT_LE(fit.fitting_rms, swarm.fitting_rms + 1e-9);
   EXPECT_LT(fit.fitting_rms, 40.0);  // the load cell's 25 N noise, and little else
 }

@@ -46,14 +46,14 @@ TEST(ResidualReport, UpdatedConfigLoadsWithTheEffectOnAndTheFittedDamper) {
   const auto loaded = mrd::config::load_config_text(text, "updated.toml");
   ASSERT_TRUE(loaded.ok()) << loaded.report() << text;
   const auto& d = loaded.config.law.damper;
-  EXPECT_TRUE(d.effects.gas_spring.enabled);
-  EXPECT_FALSE(d.effects.coil_lag.enabled);
-  EXPECT_DOUBLE_EQ(d.effects.gas_spring.stiffness, r.final_model.effects.gas_spring.stiffness);
+  EXPECT_TRUE(d.effects.get<mrd::model::GasSpringEffect>().enabled);
+  EXPECT_FALSE(d.effects.get<mrd::model::CoilLagEffect>().enabled);
+  EXPECT_DOUBLE_EQ(d.effects.get<mrd::model::GasSpringEffect>().stiffness, r.final_model.effects.get<mrd::model::GasSpringEffect>().stiffness);
   EXPECT_DOUBLE_EQ(d.geometry.pole_length, r.final_model.geometry.pole_length);
   EXPECT_DOUBLE_EQ(d.fluid.viscosity, r.final_model.fluid.viscosity);
   // The 1 kN class: 70 N preload and 500 N/m at size 1.
-  EXPECT_NEAR(d.effects.gas_spring.preload, 70.0, 5.0);
-  EXPECT_NEAR(d.effects.gas_spring.stiffness, 500.0, 100.0);
+  EXPECT_NEAR(d.effects.get<mrd::model::GasSpringEffect>().preload, 70.0, 5.0);
+  EXPECT_NEAR(d.effects.get<mrd::model::GasSpringEffect>().stiffness, 500.0, 100.0);
 }
 
 }  // namespace

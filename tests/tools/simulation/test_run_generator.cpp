@@ -95,11 +95,11 @@ TEST(RunGenerator, EffectsAreSizedForTheDamperClass) {
   auto o = short_run(RunProfile::kTable4, "1kN");
   o.effects = {{"coil_lag", 2.0}, {"gas_spring", 0.5}, {"stroke_end_air", 4.0}};
   const SimulatedRun run = mrd::tools::simulate_run(o);
-  EXPECT_DOUBLE_EQ(run.effects.coil_lag.time_constant, 2.0 / 190.0);
-  EXPECT_DOUBLE_EQ(run.effects.gas_spring.preload, 35.0);
-  EXPECT_DOUBLE_EQ(run.effects.stroke_end_air.depth, 0.95);  // capped
-  EXPECT_DOUBLE_EQ(run.effects.stroke_end_air.threshold, 0.015);
-  EXPECT_FALSE(run.effects.thermal_drift.enabled);
+  EXPECT_DOUBLE_EQ(run.effects.get<mrd::model::CoilLagEffect>().time_constant, 2.0 / 190.0);
+  EXPECT_DOUBLE_EQ(run.effects.get<mrd::model::GasSpringEffect>().preload, 35.0);
+  EXPECT_DOUBLE_EQ(run.effects.get<mrd::model::StrokeEndAirEffect>().depth, 0.95);  // capped
+  EXPECT_DOUBLE_EQ(run.effects.get<mrd::model::StrokeEndAirEffect>().threshold, 0.015);
+  EXPECT_FALSE(run.effects.get<mrd::model::ThermalDriftEffect>().enabled);
 }
 
 TEST(RunGenerator, ThermalDriftHeatsTheFluidByItsSize) {

@@ -1,0 +1,72 @@
+#pragma once
+
+#include <array>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace mrd::model {
+
+// What an effect's descriptor holds (one struct per effect, next to its model: CoilLagEffect,
+// GasSpringEffect, ...). The config, the observer's effect chain, the residual search, the
+// simulator and the reports loop over the descriptors listed in effect_set.hpp, so adding an
+// effect is its model file with its descriptor, one line in that list, and its tests
+// (docs/ARCHITECTURE.md, "Adding an effect"). A descriptor derives from EffectTraitsBase and
+// overrides what applies to it:
+//   kName               the effect's name in configs ([damper.effects.<name>]), tools and reports
+//   Params, Element     its parameters, and the run-time element the observer steps
+//   kChangesInduction   whether it changes B for a given coil current (fits that hold B
+//                       fixed cannot share a B trace with it)
+//   fields(p, v)        its TOML keys, v(key, field&) each, in file order
+//   kSearch, apply, coordinates
+//                       the parameters a run can identify, as search coordinates whose
+//                       ranges follow the run's scales (RunScales)
+//   kLinear, add_linear parameters that enter the force linearly (fitted by least squares)
+//   scale_force         rescales its force-valued parameters with the damper's force scale
+//   implausible         why a fitted instance is not a physical one, nullopt when it is
+//   report(p, v)        the fitted values for reports, v(json_key_with_unit, value) each
+//   resize, size_summary
+//                       what "size" means for runs the simulator makes (mrd-simulate-run)
+
+// What a recorded run's scales say about the ranges worth searching.
+struct RunScales {
+  double sample_period = 0.0;      // [s]
+  double duration = 0.0;           // of the longest run [s]
+  double stroke = 0.0;             // 99.9th percentile of |x| [m]
+  double speed = 0.0;              // 99th percentile of |v| [m/s]
+  double dissipated_energy = 0.0;  // sum of max(F v, 0) dt over the longest run [J]
+  bool measured_temperature = false;
+};
+
+// One search coordinate, in the units the search works in (often log10 of a parameter).
+// kReversalThreshold: the coordinate is a stroke-end threshold over the stroke; the fitness
+// is flat between two reversal amplitudes and jumps at each, so the search also scans them.
+struct SearchCoordinate {
+  enum class Kind { kContinuous, kReversalThreshold };
+  std::string_view name;
+  double (*lower)(const RunScales&);
+  double (*upper)(const RunScales&);
+  Kind kind = Kind::kContinuous;
+};
+
+// A column of the linear least-squares fit that an effect's parameter multiplies.
+enum class LinearColumn { kConstant, kDisplacement };
+
+template <typename P>
+struct EffectTraitsBase {
+  using Params = P;
+  static constexpr bool kChangesInduction = false;
+  static constexpr std::array<SearchCoordinate, 0> kSearch{};
+  static constexpr std::array<LinearColumn, 0> kLinear{};
+
+  static void apply(P&, std::span<const double>, const RunScales&) {}
+  static void coordinates(const P&, const RunScales&, std::span<double>) {}
+  static void add_linear(P&, std::span<const double>) {}
+  static void scale_force(P&, double) {}
+  static std::optional<std::string> implausible(const P&, const RunScales&) { return std::nullopt; }
+  template <typename Visitor>
+  static void report(const P&, Visitor&&) {}
+};
+
+}  // namespace mrd::model
