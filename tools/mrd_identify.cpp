@@ -107,99 +107,47 @@ int reproduce_paper(const StudyOptions& study, double table1_H_max, const std::s
   return 0;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  CLI::App app{"Identify Jiles-Atherton parameters from measured B-H loops (Eq. 15)"};
-  std::string file, algo = "improved-pso", json_path, plot_dir, start_text, evaluate_text, out_path;
-  std::vector<std::string> bound_texts, algo_names;
-  IdentifyOptions options;
-  bool polish = false, reproduce = false, compare = false;
-  int seeds = 20;
-  double table1_H_max = 60.0;
-  double step_fraction = mrd::model::JilesAthertonSettings{}.max_field_step_fraction;
-  double turns = 0.0, length = 0.0;
-  app.add_option("file", file, "CSV with H<n>_A_per_m,B<n>_T column pairs (or I<n>_A for B-I)");
-  app.add_option("--algo", algo,
-                 "pso | improved-pso | pagmo-pso | pagmo-de | pagmo-sade | pagmo-cmaes")
-      ->capture_default_str();
-  app.add_option("--seed", options.seed, "random seed; a seed gives the same run")->capture_default_str();
-  app.add_option("--population", options.budget.population)->check(CLI::Range(5, 10000))->capture_default_str();
-  app.add_option("--evaluations", options.budget.evaluations, "budget of model evaluations")
+// Options every search shares: the budget, the seed, the threads and the improved PSO's constants.
+void add_search_options(CLI::App& cmd, IdentifyOptions& options) {
+  cmd.add_option("--seed", options.seed, "random seed; a seed gives the same run")->capture_default_str();
+  cmd.add_option("--population", options.budget.population)->check(CLI::Range(5, 10000))->capture_default_str();
+  cmd.add_option("--evaluations", options.budget.evaluations, "budget of model evaluations")
       ->check(CLI::Range(10, 100000000))->capture_default_str();
-  app.add_option("--threads", options.threads, "0 = all cores (pagmo runs serially)")->capture_default_str();
-  app.add_option("--start", start_text, "start point Ms,a,alpha,k,c (default: estimated from the loops)");
-  app.add_option("--bounds", bound_texts, "name=lo:hi, repeatable (default: +-100% of the start)");
-  app.add_flag("--polish", polish, "refine with Levenberg-Marquardt after the global search");
-  app.add_option("--json", json_path, "write the result as JSON");
-  app.add_option("--plot", plot_dir, "write the B-H overlay and convergence PNGs here");
-  app.add_option("--turns", turns, "N, for B-I files [-]");
-  app.add_option("--length", length, "Le, for B-I files [m]");
-  app.add_option("--step-fraction", step_fraction,
-                 "J-A sub-step as a fraction of min(a, k); larger is faster, less accurate")
-      ->check(CLI::Range(0.01, 4.0))->capture_default_str();
-  app.add_option("--evaluate", evaluate_text, "only print the RMSE of Ms,a,alpha,k,c on the file");
-  std::string synthetic_path, truth_text;
-  double synthetic_H_max = 0.0;
-  std::size_t synthetic_points = 1000;
-  app.add_option("--write-synthetic", synthetic_path,
-                 "write one simulated major loop of --truth at --H-max to this CSV, then exit");
-  app.add_option("--truth", truth_text, "Ms,a,alpha,k,c for --write-synthetic");
-  app.add_option("--H-max", synthetic_H_max, "loop amplitude for --write-synthetic [A/m]");
-  app.add_option("--points", synthetic_points, "points for --write-synthetic")->capture_default_str();
-  app.add_flag("--reproduce-paper", reproduce, "Section 4.1 protocol on two known sets, all algorithms");
-  app.add_option("--table1-amplitude", table1_H_max,
-                 "--reproduce-paper: loop amplitude for the Table 1 set [A/m]; physical up to ~81")
-      ->check(CLI::Range(1.0, 1e6))->capture_default_str();
-  app.add_flag("--compare", compare, "run every algorithm over --seeds seeds on the file");
-  app.add_option("--seeds", seeds, "seeds for --reproduce-paper and --compare")->check(CLI::Range(1, 1000))
-      ->capture_default_str();
-  app.add_option("--algos", algo_names, "algorithms for --reproduce-paper and --compare (default: all)");
+  cmd.add_option("--threads", options.threads, "0 = all cores (pagmo runs serially)")->capture_default_str();
   auto& ips = options.improved;
-  app.add_option("--w-max", ips.w_max, "improved-pso: inertia at the start, Eq. 16")->capture_default_str();
-  app.add_option("--w-min", ips.w_min, "improved-pso: inertia at the end, Eq. 16")->capture_default_str();
-  app.add_option("--c1", ips.c1, "improved-pso: cognitive factor, Eq. 14")->capture_default_str();
-  app.add_option("--c2", ips.c2, "improved-pso: social factor, Eq. 14")->capture_default_str();
-  app.add_option("--velocity-limit", ips.velocity_limit, "improved-pso: |v| limit, fraction of the range")
+  cmd.add_option("--w-max", ips.w_max, "improved-pso: inertia at the start, Eq. 16")->capture_default_str();
+  cmd.add_option("--w-min", ips.w_min, "improved-pso: inertia at the end, Eq. 16")->capture_default_str();
+  cmd.add_option("--c1", ips.c1, "improved-pso: cognitive factor, Eq. 14")->capture_default_str();
+  cmd.add_option("--c2", ips.c2, "improved-pso: social factor, Eq. 14")->capture_default_str();
+  cmd.add_option("--velocity-limit", ips.velocity_limit, "improved-pso: |v| limit, fraction of the range")
       ->capture_default_str();
-  app.add_option("--F", ips.F, "improved-pso: DE scaling factor, Eq. 18")->capture_default_str();
-  app.add_option("--F-spread", ips.F_spread, "improved-pso: F drawn from [F, F + spread] per trial")
+  cmd.add_option("--F", ips.F, "improved-pso: DE scaling factor, Eq. 18")->capture_default_str();
+  cmd.add_option("--F-spread", ips.F_spread, "improved-pso: F drawn from [F, F + spread] per trial")
       ->capture_default_str();
-  app.add_option("--CR", ips.CR, "improved-pso: DE crossover probability, Eq. 19")->capture_default_str();
-  app.add_option("--stall", ips.stall_iterations, "improved-pso: iterations without gain before Cauchy")
+  cmd.add_option("--CR", ips.CR, "improved-pso: DE crossover probability, Eq. 19")->capture_default_str();
+  cmd.add_option("--stall", ips.stall_iterations, "improved-pso: iterations without gain before Cauchy")
       ->capture_default_str();
-  app.add_option("--cauchy-scale", ips.cauchy_scale, "improved-pso: Eq. 22 step scale")->capture_default_str();
-  app.add_option("--cauchy-trials", ips.cauchy_trials, "improved-pso: Eq. 22 draws per stall")->capture_default_str();
-  app.add_option("--out", out_path, "also write the --reproduce-paper/--compare table here (Markdown)");
-  CLI11_PARSE(app, argc, argv);
+  cmd.add_option("--cauchy-scale", ips.cauchy_scale, "improved-pso: Eq. 22 step scale")->capture_default_str();
+  cmd.add_option("--cauchy-trials", ips.cauchy_trials, "improved-pso: Eq. 22 draws per stall")
+      ->capture_default_str();
+}
 
-  try {
-    StudyOptions study;
-    study.seeds = seeds;
-    study.budget = options.budget;
-    study.threads = options.threads;
-    study.improved = options.improved;
-    if (!algo_names.empty()) study.algorithms = parse_algorithms(algo_names);
-    if (reproduce) return reproduce_paper(study, table1_H_max, out_path);
-    if (!synthetic_path.empty()) {
-      if (!(synthetic_H_max > 0.0)) throw CLI::ValidationError("--H-max", "must be > 0");
-      const Point truth = parse_parameter_list("--truth", truth_text);
-      const BHCurve curve = synthetic_loop(to_params(truth), synthetic_H_max, synthetic_points);
-      std::ostringstream csv;
-      csv.precision(12);
-      csv << "H_A_per_m,B_T\n";
-      for (std::size_t i = 0; i < curve.loops[0].H.size(); ++i) {
-        csv << curve.loops[0].H[i] << ',' << curve.loops[0].B[i] << '\n';
-      }
-      return write_file(synthetic_path, csv.str()) ? 0 : 1;
-    }
+// The input loops and how they are played through the model.
+struct CurveArguments {
+  std::string file;
+  double turns = 0.0;
+  double length = 0.0;
+  double step_fraction = mrd::model::JilesAthertonSettings{}.max_field_step_fraction;
 
-    if (file.empty()) throw CLI::ValidationError("file", "a B-H curve file is required");
-    const auto algorithm = parse_algorithm(algo);
-    if (!algorithm) throw CLI::ValidationError("--algo", "unknown algorithm '" + algo + "'");
-    options.algorithm = *algorithm;
-    options.polish = polish;
-
+  void add_to(CLI::App& cmd) {
+    cmd.add_option("file", file, "CSV with H<n>_A_per_m,B<n>_T column pairs (or I<n>_A for B-I)")->required();
+    cmd.add_option("--turns", turns, "N, for B-I files [-]");
+    cmd.add_option("--length", length, "Le, for B-I files [m]");
+    cmd.add_option("--step-fraction", step_fraction,
+                   "J-A sub-step as a fraction of min(a, k); larger is faster, less accurate")
+        ->check(CLI::Range(0.01, 4.0))->capture_default_str();
+  }
+  BHCurve read() const {
     BHCurveOptions curve_options;
     if (turns > 0.0 || length > 0.0) {
       if (!(turns > 0.0 && length > 0.0)) {
@@ -208,52 +156,176 @@ int main(int argc, char** argv) {
       curve_options.has_circuit = true;
       curve_options.circuit = {turns, length};
     }
-    const BHCurve curve = read_bh_curve(file, curve_options);
-    mrd::model::JilesAthertonSettings settings;
-    settings.max_field_step_fraction = step_fraction;
-    const BHObjective objective(curve, settings);
+    return read_bh_curve(file, curve_options);
+  }
+  mrd::model::JilesAthertonSettings settings() const {
+    mrd::model::JilesAthertonSettings s;
+    s.max_field_step_fraction = step_fraction;
+    return s;
+  }
+};
 
-    if (!evaluate_text.empty()) {
-      const Point x = parse_parameter_list("--evaluate", evaluate_text);
-      const auto report = mrd::model::validate(to_params(x));
-      std::fputs(report.to_string().c_str(), stderr);
-      const FitEvaluation fit = objective.evaluate(to_params(x));
-      std::printf("%s: %zu points, RMSE %.6g T (%.4g%% of rms B %.4g T)%s\n", file.c_str(),
-                  objective.points(), fit.rmse, 100.0 * fit.rmse / objective.rms_B(),
-                  objective.rms_B(), fit.penalised ? " [non-physical: Eq. 10 guard fired]" : "");
-      return 0;
-    }
-    if (compare) {
-      const auto rows = measured_fit_study(curve, study);
-      char summary[160];
-      std::snprintf(summary, sizeof summary, "%zu loops, %zu points, rms B %.4g T; %d seeds each.\n\n",
-                    curve.loops.size(), objective.points(), objective.rms_B(), study.seeds);
-      const std::string table = summary + fit_table_markdown(rows, objective.rms_B());
-      std::fputs(table.c_str(), stdout);
-      if (!out_path.empty() && !write_file(out_path, table)) return 1;
-      return 0;
-    }
+// Options of the studies over several seeds and algorithms.
+struct StudyArguments {
+  int seeds = 20;
+  std::vector<std::string> algo_names;
+  std::string out_path;
 
-    if (!start_text.empty()) options.start = parse_parameter_list("--start", start_text);
-    const Point start = options.start ? *options.start : estimate_start_point(curve);
-    if (!bound_texts.empty()) options.start = start;  // the box is the user's: no re-centring
-    if (!start_text.empty()) options.start = start;
-    if (!bound_texts.empty()) {
-      Bounds bounds = bounds_around(start);
-      for (const auto& b : bound_texts) apply_bound(bounds, b);
-      options.bounds = bounds;
-    }
-    const IdentifyResult result = identify(objective, curve, options);
-    std::fputs(identify_text(result, objective).c_str(), stdout);
-    if (!json_path.empty() && !write_file(json_path, identify_json(result))) {
-      std::fprintf(stderr, "mrd-identify: cannot write %s\n", json_path.c_str());
-      return 1;
-    }
-    if (!plot_dir.empty()) {
-      const std::string why = plot_identification(result, objective, curve, plot_dir);
-      if (!why.empty()) std::fprintf(stderr, "mrd-identify: plot skipped: %s\n", why.c_str());
-    }
-    return 0;
+  void add_to(CLI::App& cmd) {
+    cmd.add_option("--seeds", seeds, "seeds per algorithm")->check(CLI::Range(1, 1000))->capture_default_str();
+    cmd.add_option("--algos", algo_names, "algorithms to run (default: all)");
+    cmd.add_option("--out", out_path, "also write the table here (Markdown)");
+  }
+  StudyOptions study(const IdentifyOptions& options) const {
+    StudyOptions s;
+    s.seeds = seeds;
+    s.budget = options.budget;
+    s.threads = options.threads;
+    s.improved = options.improved;
+    if (!algo_names.empty()) s.algorithms = parse_algorithms(algo_names);
+    return s;
+  }
+};
+
+struct FitArguments {
+  CurveArguments curve;
+  IdentifyOptions options;
+  std::string algo = "improved-pso", start_text, json_path, plot_dir;
+  std::vector<std::string> bound_texts;
+  bool polish = false;
+};
+
+int run_fit(const FitArguments& args) {
+  IdentifyOptions options = args.options;
+  const auto algorithm = parse_algorithm(args.algo);
+  if (!algorithm) throw CLI::ValidationError("--algo", "unknown algorithm '" + args.algo + "'");
+  options.algorithm = *algorithm;
+  options.polish = args.polish;
+  const BHCurve curve = args.curve.read();
+  const BHObjective objective(curve, args.curve.settings());
+
+  if (!args.start_text.empty()) options.start = parse_parameter_list("--start", args.start_text);
+  const Point start = options.start ? *options.start : estimate_start_point(curve);
+  if (!args.bound_texts.empty()) {
+    options.start = start;  // the box is the user's: no re-centring
+    Bounds bounds = bounds_around(start);
+    for (const auto& b : args.bound_texts) apply_bound(bounds, b);
+    options.bounds = bounds;
+  }
+  const IdentifyResult result = identify(objective, curve, options);
+  std::fputs(identify_text(result, objective).c_str(), stdout);
+  if (!args.json_path.empty() && !write_file(args.json_path, identify_json(result))) {
+    std::fprintf(stderr, "mrd-identify: cannot write %s\n", args.json_path.c_str());
+    return 1;
+  }
+  if (!args.plot_dir.empty()) {
+    const std::string why = plot_identification(result, objective, curve, args.plot_dir);
+    if (!why.empty()) std::fprintf(stderr, "mrd-identify: plot skipped: %s\n", why.c_str());
+  }
+  return 0;
+}
+
+int run_evaluate(const CurveArguments& curve_args, const std::string& parameter_text) {
+  const Point x = parse_parameter_list("params", parameter_text);
+  const BHObjective objective(curve_args.read(), curve_args.settings());
+  std::fputs(mrd::model::validate(to_params(x)).to_string().c_str(), stderr);
+  const FitEvaluation fit = objective.evaluate(to_params(x));
+  std::printf("%s: %zu points, RMSE %.6g T (%.4g%% of rms B %.4g T)%s\n", curve_args.file.c_str(),
+              objective.points(), fit.rmse, 100.0 * fit.rmse / objective.rms_B(), objective.rms_B(),
+              fit.penalised ? " [non-physical: Eq. 10 guard fired]" : "");
+  return 0;
+}
+
+int run_compare(const CurveArguments& curve_args, const StudyOptions& study, const std::string& out_path) {
+  const BHCurve curve = curve_args.read();
+  const BHObjective objective(curve, curve_args.settings());
+  const auto rows = measured_fit_study(curve, study);
+  char summary[160];
+  std::snprintf(summary, sizeof summary, "%zu loops, %zu points, rms B %.4g T; %d seeds each.\n\n",
+                curve.loops.size(), objective.points(), objective.rms_B(), study.seeds);
+  const std::string table = summary + fit_table_markdown(rows, objective.rms_B());
+  std::fputs(table.c_str(), stdout);
+  if (!out_path.empty() && !write_file(out_path, table)) return 1;
+  return 0;
+}
+
+struct SyntheticArguments {
+  std::string path, truth_text;
+  double H_max = 0.0;
+  std::size_t points = 1000;
+};
+
+int run_synthetic(const SyntheticArguments& args) {
+  const Point truth = parse_parameter_list("--truth", args.truth_text);
+  const BHCurve curve = synthetic_loop(to_params(truth), args.H_max, args.points);
+  std::ostringstream csv;
+  csv.precision(12);
+  csv << "H_A_per_m,B_T\n";
+  for (std::size_t i = 0; i < curve.loops[0].H.size(); ++i) {
+    csv << curve.loops[0].H[i] << ',' << curve.loops[0].B[i] << '\n';
+  }
+  if (write_file(args.path, csv.str())) return 0;
+  std::fprintf(stderr, "mrd-identify: cannot write %s\n", args.path.c_str());
+  return 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Identify Jiles-Atherton parameters from measured B-H loops (Eq. 15)"};
+  app.require_subcommand(1);
+
+  FitArguments fit;
+  auto* fit_cmd = app.add_subcommand("fit", "fit Ms, a, alpha, k, c to the loops of a file");
+  fit.curve.add_to(*fit_cmd);
+  add_search_options(*fit_cmd, fit.options);
+  fit_cmd->add_option("--algo", fit.algo, "pso | improved-pso | pagmo-pso | pagmo-de | pagmo-sade | pagmo-cmaes")
+      ->capture_default_str();
+  fit_cmd->add_option("--start", fit.start_text, "start point Ms,a,alpha,k,c (default: estimated from the loops)");
+  fit_cmd->add_option("--bounds", fit.bound_texts, "name=lo:hi, repeatable (default: +-100% of the start)");
+  fit_cmd->add_flag("--polish", fit.polish, "refine with Levenberg-Marquardt after the global search");
+  fit_cmd->add_option("--json", fit.json_path, "write the result as JSON");
+  fit_cmd->add_option("--plot", fit.plot_dir, "write the B-H overlay and convergence PNGs here");
+
+  CurveArguments evaluate_curve;
+  std::string evaluate_text;
+  auto* evaluate_cmd = app.add_subcommand("evaluate", "print the RMSE of a given Ms,a,alpha,k,c on a file");
+  evaluate_curve.add_to(*evaluate_cmd);
+  evaluate_cmd->add_option("params", evaluate_text, "Ms,a,alpha,k,c")->required();
+
+  CurveArguments compare_curve;
+  IdentifyOptions compare_options;
+  StudyArguments compare_study;
+  auto* compare_cmd = app.add_subcommand("compare", "run every algorithm over several seeds on a file");
+  compare_curve.add_to(*compare_cmd);
+  add_search_options(*compare_cmd, compare_options);
+  compare_study.add_to(*compare_cmd);
+
+  IdentifyOptions paper_options;
+  StudyArguments paper_study;
+  double table1_H_max = 60.0;
+  auto* paper_cmd = app.add_subcommand("reproduce-paper", "Section 4.1 protocol on two known sets, all algorithms");
+  add_search_options(*paper_cmd, paper_options);
+  paper_study.add_to(*paper_cmd);
+  paper_cmd->add_option("--table1-amplitude", table1_H_max,
+                        "loop amplitude for the Table 1 set [A/m]; physical up to ~81")
+      ->check(CLI::Range(1.0, 1e6))->capture_default_str();
+
+  SyntheticArguments synthetic;
+  auto* synthetic_cmd = app.add_subcommand("synthetic", "write one simulated major loop of a known set to a CSV");
+  synthetic_cmd->add_option("out", synthetic.path, "CSV to write")->required();
+  synthetic_cmd->add_option("--truth", synthetic.truth_text, "Ms,a,alpha,k,c")->required();
+  synthetic_cmd->add_option("--H-max", synthetic.H_max, "loop amplitude [A/m]")->required()
+      ->check(CLI::PositiveNumber);
+  synthetic_cmd->add_option("--points", synthetic.points, "points on the loop")->capture_default_str();
+
+  CLI11_PARSE(app, argc, argv);
+  try {
+    if (*fit_cmd) return run_fit(fit);
+    if (*evaluate_cmd) return run_evaluate(evaluate_curve, evaluate_text);
+    if (*compare_cmd) return run_compare(compare_curve, compare_study.study(compare_options), compare_study.out_path);
+    if (*paper_cmd) return reproduce_paper(paper_study.study(paper_options), table1_H_max, paper_study.out_path);
+    return run_synthetic(synthetic);
   } catch (const CLI::Error& e) {
     return app.exit(e);
   } catch (const mrd::record::InputError& e) {

@@ -14,9 +14,9 @@ trap 'rm -rf "$work"' EXIT
 mkdir -p "$out"
 
 truth=1.3e6,25.3,8.43e-5,66.6,0.2
-"$identify" --write-synthetic "$work/table1.csv" --truth "$truth" --H-max 40 --points 1000
+"$identify" synthetic "$work/table1.csv" --truth "$truth" --H-max 40 --points 1000
 for algo in pso improved-pso; do
-  "$identify" "$work/table1.csv" --start "$truth" --algo "$algo" --seed 1 --plot "$work/$algo" \
+  "$identify" fit "$work/table1.csv" --start "$truth" --algo "$algo" --seed 1 --plot "$work/$algo" \
     > "$work/$algo.txt"
   cat "$work/$algo.txt"
 done
@@ -36,7 +36,7 @@ plot '$work/improved-pso/identify_bh.dat' using 1:2 with points pt 7 ps 0.3 lc r
      '$work/improved-pso/identify_bh.dat' using 1:3 with lines lw 2 dt 2 title 'improved PSO'
 GP
 
-"$identify" "$here/data/bh-loops/szewczyk-jamodel/MnZn_ferrite_loops.csv" --polish --seed 1 \
+"$identify" fit "$here/data/bh-loops/szewczyk-jamodel/MnZn_ferrite_loops.csv" --polish --seed 1 \
   --plot "$work/ferrite"
 cp "$work/ferrite/identify_bh.png" "$out/ferrite_bh.png"
 cp "$work/ferrite/identify_convergence.png" "$out/ferrite_convergence.png"

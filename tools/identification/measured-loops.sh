@@ -17,7 +17,7 @@ for material in MnZn_ferrite MnZn_HP_ferrite M130_27s amorf; do
   n=$seeds
   # k of about 1 A/m over an 800 A/m loop: one evaluation costs 20x the others.
   if [[ $material == amorf && $n -gt 3 ]]; then n=3; fi
-  "$identify" --compare --seeds "$n" "$file"
+  "$identify" compare --seeds "$n" "$file"
   echo
 done
 
@@ -25,5 +25,5 @@ author=$(tail -n 1 "$data/MnZn_ferrite_JA_params_author.csv" | awk -F, '{print $
 echo "### The author's Mn-Zn ferrite fit, evaluated by our model and objective"
 echo
 echo '```'
-"$identify" "$data/MnZn_ferrite_loops.csv" --evaluate "$author" 2>&1
+"$identify" evaluate "$data/MnZn_ferrite_loops.csv" "$author" 2>&1
 echo '```'
