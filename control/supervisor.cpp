@@ -69,7 +69,7 @@ ValidationReport SupervisorConfig::validate() const {
 
 std::uint64_t TransitionCounts::total() const {
   std::uint64_t sum = 0;
-  for (const auto& c : counts_) sum += c.load(std::memory_order_relaxed);
+  for (const auto& c : counts_) sum += c.get();
   return sum;
 }
 

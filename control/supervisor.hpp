@@ -8,6 +8,7 @@
 
 #include "control/sample_check.hpp"
 #include "hal/clock.hpp"
+#include "common/single_writer_counter.hpp"
 #include "common/validation_report.hpp"
 
 namespace mrd::control {
@@ -79,18 +80,17 @@ struct SupervisorDecision {
 };
 
 // Transition counts by (from, to, trigger). Written by the loop thread only, read by any thread
-// (relaxed atomics, no locks, no allocation).
+// (SingleWriterCounter: no locks, no allocation).
 class TransitionCounts {
  public:
   static constexpr std::size_t kStates = static_cast<std::size_t>(SupervisorState::kCount);
   static constexpr std::size_t kTriggers = static_cast<std::size_t>(Trigger::kCount);
 
   void count(SupervisorState from, SupervisorState to, Trigger why) {
-    auto& c = counts_[index(from, to, why)];
-    c.store(c.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
+    counts_[index(from, to, why)].add();
   }
   [[nodiscard]] std::uint64_t get(SupervisorState from, SupervisorState to, Trigger why) const {
-    return counts_[index(from, to, why)].load(std::memory_order_relaxed);
+    return counts_[index(from, to, why)].get();
   }
   [[nodiscard]] std::uint64_t total() const;
   // Every transition into `to`, whatever the trigger and the state it left.
@@ -101,7 +101,7 @@ class TransitionCounts {
     return (static_cast<std::size_t>(from) * kStates + static_cast<std::size_t>(to)) * kTriggers +
            static_cast<std::size_t>(why);
   }
-  std::array<std::atomic<std::uint64_t>, kStates * kStates * kTriggers> counts_{};
+  std::array<SingleWriterCounter, kStates * kStates * kTriggers> counts_{};
 };
 
 // The safety state machine: a pure function of (state, inputs, now). It reads no clock and does

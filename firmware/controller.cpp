@@ -3,7 +3,6 @@
 #include <chrono>
 #include <memory>
 #include <optional>
-#include <thread>
 #include <vector>
 
 #include "firmware/control_loop.hpp"
@@ -11,8 +10,7 @@
 #include "firmware/hal_set.hpp"
 #include "hal/mock/mock_motion.hpp"
 #include "runtime/loop_report.hpp"
-#include "runtime/rt_runner.hpp"
-#include "runtime/rt_setup.hpp"
+#include "runtime/rt_main.hpp"
 
 namespace mrd::firmware {
 
@@ -35,7 +33,7 @@ void print_stats(std::FILE* out, const runtime::LoopStatistics& stats, const Con
 }  // namespace
 
 int run_controller(const config::ControllerConfig& config, const RunOptions& options,
-                   ControllerSignals& signals, std::FILE* out, const sigset_t* unblock) {
+                   runtime::ProcessSignals& signals, std::FILE* out, const sigset_t* unblock) {
   runtime::RtSetupResult rt;
   runtime::lock_memory(config.realtime, rt);
 
@@ -46,7 +44,6 @@ int run_controller(const config::ControllerConfig& config, const RunOptions& opt
     return 1;
   }
   const std::vector<hal::IoThread*> io_threads = hal.io_threads();
-  runtime::make_io_threads_realtime(config.realtime, io_threads, rt);
 
   std::unique_ptr<runtime::TelemetryQueue> queue;
   std::unique_ptr<runtime::CsvTelemetryWriter> writer;
@@ -82,43 +79,25 @@ int run_controller(const config::ControllerConfig& config, const RunOptions& opt
                config.telemetry.enabled() ? (", telemetry " + config.telemetry.resolved_path()).c_str() : "");
 
   runtime::LoopStatistics stats;
-  std::atomic<bool> stop{false};
-  std::atomic<bool> setup_done{false};
-  std::atomic<bool> finished{false};
-  const runtime::RealTimeRunner runner(config.period());
-  const auto max_cycles = static_cast<std::uint64_t>(options.duration_s * config.rate + 0.5);
-
-  std::thread rt_thread([&] {
-    runtime::make_current_thread_realtime(config.realtime, rt);
-    setup_done.store(true);
-    runtime::RealTimeRunner r = runner;
-    const hal::Timestamp next = r.run(cycle, stop, max_cycles, stats);
-    // Stop: one more cycle, in SAFE, so the driver holds the fail-safe current before exit.
-    loop.request_shutdown();
-    cycle(std::max(next, clock.now()));
-    finished.store(true);
-  });
-
-  if (unblock != nullptr) pthread_sigmask(SIG_UNBLOCK, unblock, nullptr);
-  while (!setup_done.load()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  std::fprintf(out, "real-time: memory %s, scheduling %s, cpu %s, bus threads %s\n",
-               rt.memory_locked ? "locked" : "NOT locked",
-               rt.fifo ? ("SCHED_FIFO " + std::to_string(config.realtime.priority)).c_str()
-                       : "SCHED_OTHER",
-               rt.pinned ? std::to_string(config.realtime.cpu).c_str() : "any",
-               io_threads.empty() ? "none"
-               : rt.io_fifo == io_threads.size()
-                   ? ("SCHED_FIFO " + std::to_string(config.realtime.io_priority)).c_str()
-                   : "SCHED_OTHER");
-  for (const auto& w : rt.warnings) std::fprintf(stderr, "mrd-controller: warning: %s\n", w.c_str());
-  std::fflush(out);
-
-  while (!finished.load()) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    if (signals.stop.load()) stop.store(true);
-    if (signals.print_stats.exchange(false)) print_stats(out, stats, loop, hal, options.bench);
-  }
-  rt_thread.join();
+  const runtime::RealTimeRun run{.realtime = config.realtime,
+                                 .period = config.period(),
+                                 .max_cycles = static_cast<std::uint64_t>(options.duration_s * config.rate + 0.5),
+                                 .io_threads = io_threads};
+  const runtime::RealTimeHooks hooks{
+      // One more cycle, in SAFE, so the driver holds the fail-safe current before exit.
+      .finish =
+          [&](hal::Timestamp next) {
+            loop.request_shutdown();
+            cycle(std::max(next, clock.now()));
+          },
+      .ready =
+          [&](const runtime::RtSetupResult& done) {
+            std::fprintf(out, "%s\n", runtime::describe_rt_setup(config.realtime, done, io_threads.size()).c_str());
+            for (const auto& w : done.warnings) std::fprintf(stderr, "mrd-controller: warning: %s\n", w.c_str());
+            std::fflush(out);
+          },
+      .print_stats = [&] { print_stats(out, stats, loop, hal, options.bench); }};
+  runtime::run_real_time(run, signals, unblock, rt, stats, cycle, hooks);
   if (writer) writer->stop();
   hal.stop();
 

@@ -2,22 +2,16 @@
 
 #include <signal.h>
 
-#include <atomic>
 #include <cstdint>
 #include <cstdio>
 
 #include "config/controller_config.hpp"
+#include "runtime/rt_main.hpp"
 
 namespace mrd::firmware {
 
-// Flags the signal handlers set (async-signal-safe: lock-free atomics only).
-struct ControllerSignals {
-  std::atomic<bool> stop{false};         // SIGTERM, SIGINT
-  std::atomic<bool> print_stats{false};  // SIGUSR1
-};
-
 struct RunOptions {
-  double duration_s = 0.0;  // 0: until SIGTERM/SIGINT
+  double duration_s = 0.0;  // 0: until SIGTERM, SIGINT or SIGHUP
   bool bench = false;       // also print the latency histograms
 };
 
@@ -27,6 +21,6 @@ struct RunOptions {
 // `unblock`, if given, is the set of signals the caller blocked so that the threads started
 // here inherit it; it is unblocked on the calling thread once they run.
 int run_controller(const config::ControllerConfig& config, const RunOptions& options,
-                   ControllerSignals& signals, std::FILE* out, const sigset_t* unblock = nullptr);
+                   runtime::ProcessSignals& signals, std::FILE* out, const sigset_t* unblock = nullptr);
 
 }  // namespace mrd::firmware

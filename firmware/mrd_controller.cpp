@@ -4,7 +4,6 @@
 #include <CLI/CLI.hpp>
 #include <filesystem>
 
-#include <csignal>
 #include <cstdio>
 #include <string>
 
@@ -13,20 +12,7 @@
 
 namespace {
 
-mrd::firmware::ControllerSignals g_signals;
-
-extern "C" void on_stop_signal(int) { g_signals.stop.store(true); }
-extern "C" void on_stats_signal(int) { g_signals.print_stats.store(true); }
-
-void install_handlers() {
-  struct sigaction sa{};
-  sigemptyset(&sa.sa_mask);
-  sa.sa_handler = on_stop_signal;
-  sigaction(SIGTERM, &sa, nullptr);
-  sigaction(SIGINT, &sa, nullptr);
-  sa.sa_handler = on_stats_signal;
-  sigaction(SIGUSR1, &sa, nullptr);
-}
+mrd::runtime::ProcessSignals g_signals;
 
 int print_report(const mrd::config::LoadedConfig& loaded, const std::string& name) {
   std::fputs(loaded.report().c_str(), loaded.ok() ? stdout : stderr);
@@ -40,7 +26,6 @@ int print_report(const mrd::config::LoadedConfig& loaded, const std::string& nam
 }  // namespace
 
 int main(int argc, char** argv) {
-  static_assert(std::atomic<bool>::is_always_lock_free, "signal handlers set atomic flags");
   CLI::App app{"mrd-controller: real-time MR damper controller (default: the simulated rig)"};
   std::string config_path;
   std::string check_path;
@@ -51,7 +36,7 @@ int main(int argc, char** argv) {
   app.add_option("--config", config_path, "TOML config file (default: the embedded config, "
                                           "also installed as etc/mrd/mrd.toml)");
   app.add_option("--check-config", check_path, "validate FILE, print every problem, exit 0 or 1");
-  app.add_option("--duration", options.duration_s, "run this many seconds (0: until SIGTERM/SIGINT)")
+  app.add_option("--duration", options.duration_s, "run this many seconds (0: until SIGTERM, SIGINT or SIGHUP)")
       ->check(CLI::Range(0.0, 1e7))->capture_default_str();
   app.add_option("--telemetry", telemetry_path, "write telemetry CSV here (overrides telemetry.path, and telemetry.directory with its directory)");
   app.add_option("--rate", rate, "control rate [Hz] (overrides loop.rate)")->check(CLI::Range(10.0, 20000.0));
@@ -93,14 +78,8 @@ int main(int argc, char** argv) {
   const auto checked = mrd::config::revalidate(config, "command line");
   if (print_report(checked, "command line") != 0) return 1;
 
-  // The loop, bus and telemetry threads inherit a mask without these signals, so only the
-  // main thread takes them; it polls the flags the handlers set.
-  sigset_t mask;
-  sigemptyset(&mask);
-  sigaddset(&mask, SIGTERM);
-  sigaddset(&mask, SIGINT);
-  sigaddset(&mask, SIGUSR1);
-  install_handlers();
-  pthread_sigmask(SIG_BLOCK, &mask, nullptr);
+  // The loop, bus and telemetry threads inherit a mask without the signals, so only the main
+  // thread takes them; it polls the flags the handlers set.
+  const sigset_t mask = mrd::runtime::install_process_signals(g_signals);
   return mrd::firmware::run_controller(checked.config, options, g_signals, stdout, &mask);
 }

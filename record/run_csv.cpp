@@ -234,37 +234,4 @@ RecordedRun parse_run_csv(std::string_view text, const std::string& name,
   return RunCsvParser(text, name, options).parse();
 }
 
-std::string format_run_csv(const RecordedRun& run) {
-  struct Out {
-    const char* header;
-    const std::vector<double>* values;
-    double per_si;  // file unit per SI unit
-  };
-  const bool voltage = run.coil_signal == CoilSignal::kCommandVoltage;
-  const Out all[] = {{"time_s", &run.time, 1.0},
-                     {"displacement_mm", &run.displacement, 1e3},
-                     {voltage ? "voltage_V" : "current_A", &run.coil, 1.0},
-                     {"force_N", &run.force, 1.0},
-                     {"velocity_mm_s", &run.velocity, 1e3},
-                     {"B_T", &run.B, 1.0},
-                     {"temperature_C", &run.temperature, 1.0}};
-  std::vector<Out> columns;
-  for (const auto& c : all) {
-    if (c.values->size() == run.size()) columns.push_back(c);
-  }
-  std::string text;
-  for (const auto& c : columns) text.append(text.empty() ? "" : ",").append(c.header);
-  text += '\n';
-  char cell[40];
-  for (std::size_t i = 0; i < run.size(); ++i) {
-    for (std::size_t j = 0; j < columns.size(); ++j) {
-      std::snprintf(cell, sizeof cell, j ? ",%.12g" : "%.12g",
-                    (*columns[j].values)[i] * columns[j].per_si);
-      text += cell;
-    }
-    text += '\n';
-  }
-  return text;
-}
-
 }  // namespace mrd::record

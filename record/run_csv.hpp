@@ -11,7 +11,7 @@ namespace mrd::record {
 // Reads a run from delimited text: commas when the first line has one, otherwise blanks.
 //
 // - The project's own format: a header naming every column with its unit (time_s,
-//   displacement_mm, current_A or voltage_V, force_kN, velocity_mm_s, B_T, temperature_C, ...;
+//   displacement_mm, current_A or voltage_V, force_N or force_kN, velocity_mm_s, B_T, temperature_C, ...;
 //   known_unit_names() lists them), in any order. A column it does not know is an error.
 // - A foreign file through options.columns: by header name (quoted names and a trailing
 //   comma are fine; unmapped columns are ignored and listed in the run's notes), or by
@@ -22,10 +22,5 @@ namespace mrd::record {
 // throws InputError "file:line: column 'name': message", the first problem found.
 RecordedRun parse_run_csv(std::string_view text, const std::string& name,
                           const RunReadOptions& options = {});
-
-// The run in the project's own format: time_s, displacement_mm, current_A (or voltage_V),
-// then force_N, velocity_mm_s, B_T and temperature_C when recorded; 12 significant digits.
-// parse_run_csv reads it back.
-[[nodiscard]] std::string format_run_csv(const RecordedRun& run);
 
 }  // namespace mrd::record

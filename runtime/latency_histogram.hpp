@@ -1,16 +1,17 @@
 #pragma once
 
 #include <array>
-#include <atomic>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+
+#include "common/single_writer_counter.hpp"
 
 namespace mrd::runtime {
 
 // A fixed-bucket histogram of durations in nanoseconds, log-linear like HdrHistogram: exact
 // below 64 ns, then 64 buckets per power of two (under 1.6 % relative width) up to 2^40 ns
-// (18 min). Recording is a bucket index and two relaxed stores: no allocation, no lock. One
+// (18 min). Recording is a bucket index and single-writer counts: no allocation, no lock. One
 // thread records; any thread may read (each count is exact, a read is not one instant).
 class LatencyHistogram {
  public:
@@ -21,18 +22,16 @@ class LatencyHistogram {
 
   void record(std::int64_t ns) {
     const std::uint64_t v = ns < 0 ? 0u : static_cast<std::uint64_t>(ns);
-    bump(counts_[index(v)]);
-    bump(total_);
-    if (v > max_.load(std::memory_order_relaxed)) max_.store(v, std::memory_order_relaxed);
+    counts_[index(v)].add();
+    total_.add();
+    max_.raise_to(v);
   }
 
-  [[nodiscard]] std::uint64_t count() const { return total_.load(std::memory_order_relaxed); }
-  [[nodiscard]] std::uint64_t max() const { return max_.load(std::memory_order_relaxed); }
+  [[nodiscard]] std::uint64_t count() const { return total_.get(); }
+  [[nodiscard]] std::uint64_t max() const { return max_.get(); }
   // The smallest bucket upper edge below which a fraction q of the values lie (never above max).
   [[nodiscard]] std::uint64_t percentile(double q) const;
-  [[nodiscard]] std::uint64_t bucket_count(std::size_t i) const {
-    return counts_[i].load(std::memory_order_relaxed);
-  }
+  [[nodiscard]] std::uint64_t bucket_count(std::size_t i) const { return counts_[i].get(); }
 
   static constexpr std::size_t index(std::uint64_t v) {
     if (v >= (std::uint64_t{1} << kMaxBits)) return kBuckets - 1;
@@ -48,13 +47,9 @@ class LatencyHistogram {
   }
 
  private:
-  static void bump(std::atomic<std::uint64_t>& c) {
-    c.store(c.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
-  }
-
-  std::array<std::atomic<std::uint64_t>, kBuckets> counts_{};
-  std::atomic<std::uint64_t> total_{0};
-  std::atomic<std::uint64_t> max_{0};
+  std::array<SingleWriterCounter, kBuckets> counts_{};
+  SingleWriterCounter total_;
+  SingleWriterCounter max_;
 };
 
 inline std::uint64_t LatencyHistogram::percentile(double q) const {

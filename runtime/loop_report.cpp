@@ -71,8 +71,8 @@ std::string format_transitions(const control::TransitionCounts& counts) {
 }
 
 std::string format_loop_statistics(const LoopStatistics& stats) {
-  std::string out = "cycles " + std::to_string(stats.cycles.load()) + ", overruns " +
-                    std::to_string(stats.overruns.load()) + "\n";
+  std::string out = "cycles " + std::to_string(stats.cycles.get()) + ", overruns " +
+                    std::to_string(stats.overruns.get()) + "\n";
   out += format_percentiles("wake-up latency [us]", stats.wake_latency);
   out += format_percentiles("execution time [us]", stats.execution);
   return out;

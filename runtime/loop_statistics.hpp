@@ -1,7 +1,8 @@
 #pragma once
 
-#include <atomic>
 #include <cstdint>
+
+#include "common/single_writer_counter.hpp"
 
 #include "runtime/latency_histogram.hpp"
 
@@ -11,14 +12,12 @@ namespace mrd::runtime {
 struct LoopStatistics {
   LatencyHistogram wake_latency;  // actual wake-up - release time [ns]
   LatencyHistogram execution;     // cycle end - wake-up [ns]
-  std::atomic<std::uint64_t> cycles{0};
-  std::atomic<std::uint64_t> overruns{0};  // sum of ceil(elapsed / period) - 1 over the cycles
+  SingleWriterCounter cycles;
+  SingleWriterCounter overruns;  // sum of ceil(elapsed / period) - 1 over the cycles
 
   void add_cycle(std::uint64_t missed) {
-    cycles.store(cycles.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
-    if (missed > 0) {
-      overruns.store(overruns.load(std::memory_order_relaxed) + missed, std::memory_order_relaxed);
-    }
+    cycles.add();
+    if (missed > 0) overruns.add(missed);
   }
 };
 

@@ -1,10 +1,10 @@
 #pragma once
 
-#include <atomic>
 #include <boost/lockfree/spsc_queue.hpp>
 #include <cstddef>
 #include <cstdint>
 
+#include "common/single_writer_counter.hpp"
 #include "runtime/telemetry_record.hpp"
 
 namespace mrd::runtime {
@@ -19,8 +19,8 @@ class TelemetryQueue {
 
   // Loop side.
   void offer(const TelemetryRecord& r) {
-    bump(offered_);
-    if (!queue_.push(r)) bump(dropped_);
+    offered_.add();
+    if (!queue_.push(r)) dropped_.add();
   }
 
   // Writer side: hands every queued record to `sink`, returns how many.
@@ -29,18 +29,13 @@ class TelemetryQueue {
     return queue_.consume_all(sink);
   }
 
-  [[nodiscard]] std::uint64_t offered() const { return offered_.load(std::memory_order_relaxed); }
-  [[nodiscard]] std::uint64_t dropped() const { return dropped_.load(std::memory_order_relaxed); }
+  [[nodiscard]] std::uint64_t offered() const { return offered_.get(); }
+  [[nodiscard]] std::uint64_t dropped() const { return dropped_.get(); }
 
  private:
-  // Single writer: a relaxed load and store, no locked read-modify-write on the hot path.
-  static void bump(std::atomic<std::uint64_t>& c) {
-    c.store(c.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
-  }
-
   boost::lockfree::spsc_queue<TelemetryRecord> queue_;
-  std::atomic<std::uint64_t> offered_{0};
-  std::atomic<std::uint64_t> dropped_{0};
+  SingleWriterCounter offered_;  // the loop is the one writer of both
+  SingleWriterCounter dropped_;
 };
 
 }  // namespace mrd::runtime

@@ -2,24 +2,6 @@
 
 namespace mrd::sim {
 
-namespace {
-// The physics without the sensor: sensor_delay is the LVDT's, applied to its reading.
-model::DamperModel physics_of(model::DamperModel truth) {
-  truth.effects.get<model::SensorDelayEffect>().enabled = false;
-  return truth;
-}
-}  // namespace
-
-DamperPlant::DamperPlant(const model::DamperModel& truth, const PlantSettings& settings)
-    : physics_(physics_of(truth), model::ObserverSettings{settings.sample_period}),
-      delayed_(truth.effects.get<model::SensorDelayEffect>().enabled),
-      lvdt_delay_(truth.effects.get<model::SensorDelayEffect>(), settings.sample_period),
-      velocity_delay_(truth.effects.get<model::SensorDelayEffect>(), settings.sample_period),
-      rng_(settings.seed),
-      noise_(0.0, settings.lvdt_noise_rms),
-      force_rng_(settings.seed ^ 0x9e3779b97f4a7c15ULL),
-      force_noise_(0.0, settings.force_noise_rms) {}
-
 DamperPlant::DamperPlant(const model::DamperModel& truth, double lvdt_noise_rms, unsigned seed)
     : DamperPlant(truth, PlantSettings{1e-3, lvdt_noise_rms, 0.0, seed}) {}
 

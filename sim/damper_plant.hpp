@@ -35,7 +35,15 @@ struct PlantSettings {
 // Allocation-free per step.
 class DamperPlant {
  public:
-  DamperPlant(const model::DamperModel& truth, const PlantSettings& settings);
+  DamperPlant(const model::DamperModel& truth, const PlantSettings& settings)
+      : physics_(physics_of(truth), model::ObserverSettings{settings.sample_period}),
+        delayed_(truth.effects.get<model::SensorDelayEffect>().enabled),
+        lvdt_delay_(truth.effects.get<model::SensorDelayEffect>(), settings.sample_period),
+        velocity_delay_(truth.effects.get<model::SensorDelayEffect>(), settings.sample_period),
+        rng_(settings.seed),
+        noise_(0.0, settings.lvdt_noise_rms),
+        force_rng_(settings.seed ^ 0x9e3779b97f4a7c15ULL),
+        force_noise_(0.0, settings.force_noise_rms) {}
   // The firmware's simulated rig: 1 kHz, no load-cell noise.
   DamperPlant(const model::DamperModel& truth, double lvdt_noise_rms, unsigned seed);
 
@@ -45,6 +53,12 @@ class DamperPlant {
   [[nodiscard]] const model::Observer& physics() const { return physics_; }
 
  private:
+  // The physics without the sensor: the delay is the LVDT's, applied to its reading.
+  static model::DamperModel physics_of(model::DamperModel truth) {
+    truth.effects.get<model::SensorDelayEffect>().enabled = false;
+    return truth;
+  }
+
   model::Observer physics_;
   bool delayed_;
   model::SensorDelay lvdt_delay_;

@@ -24,6 +24,7 @@ EffectInfo info_of() {
   EffectInfo info;
   info.name = E::kName;
   info.changes_induction = E::kChangesInduction;
+  info.sized_by_dissipated_energy = E::kSizedByDissipatedEnergy;
   info.search = E::kSearch;
   info.linear = E::kLinear;
   info.enabled = [](const EffectSet& s) { return s.get<E>().enabled; };

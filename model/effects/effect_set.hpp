@@ -95,6 +95,7 @@ ValidationReport validate(const EffectSet& effects);
 struct EffectInfo {
   std::string_view name;
   bool changes_induction = false;
+  bool sized_by_dissipated_energy = false;
   std::span<const SearchCoordinate> search;
   std::span<const LinearColumn> linear;
   bool (*enabled)(const EffectSet&);

@@ -57,6 +57,8 @@ template <typename P>
 struct EffectTraitsBase {
   using Params = P;
   static constexpr bool kChangesInduction = false;
+  // The simulator sizes it by the energy the clean run dissipates (resize's dissipated_energy).
+  static constexpr bool kSizedByDissipatedEnergy = false;
   static constexpr std::array<SearchCoordinate, 0> kSearch{};
   static constexpr std::array<LinearColumn, 0> kLinear{};
 

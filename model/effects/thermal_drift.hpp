@@ -83,6 +83,7 @@ struct ThermalDriftEffect : EffectTraitsBase<ThermalDriftParams> {
   using Element = ThermalDrift;
   static constexpr std::string_view kName = "thermal_drift";
   static constexpr double kNominalRise = 20.0;  // [K]
+  static constexpr bool kSizedByDissipatedEnergy = true;
   // Hooks (effect_chain.hpp): the factors on tau_y and c0, and the heat of the fluid force.
   static double yield_factor(const Element& e) { return e.yield_factor(); }
   static double viscosity_factor(const Element& e) { return e.viscosity_factor(); }

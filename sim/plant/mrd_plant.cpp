@@ -4,16 +4,15 @@
 // the faults its config scripts, and logs the run as a recorded-run CSV.
 #include <CLI/CLI.hpp>
 
-#include <atomic>
-#include <csignal>
+#include <chrono>
+#include <optional>
 #include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "runtime/loop_report.hpp"
-#include "runtime/rt_runner.hpp"
-#include "runtime/rt_setup.hpp"
+#include "runtime/rt_main.hpp"
 #include "sim/plant/can_node.hpp"
 #include "sim/plant/modbus_server.hpp"
 #include "sim/plant/plant_config.hpp"
@@ -23,8 +22,7 @@
 
 namespace {
 
-std::atomic<bool> g_stop{false};
-extern "C" void on_stop_signal(int) { g_stop.store(true); }
+mrd::runtime::ProcessSignals g_signals;
 
 void print_summary(std::FILE* out, const mrd::runtime::LoopStatistics& stats,
                    const mrd::plant::ModbusServer* modbus, const mrd::plant::CanNode* can,
@@ -110,6 +108,8 @@ int main(int argc, char** argv) {
     return 1;
   }
 
+  // Before the bus threads start, so they inherit a mask without the signals.
+  const sigset_t signal_mask = mrd::runtime::install_process_signals(g_signals);
   mrd::runtime::RtSetupResult rt;
   mrd::runtime::lock_memory(config.realtime, rt);
   mrd::plant::RunLog log;
@@ -143,12 +143,6 @@ int main(int argc, char** argv) {
   const bool current_from_can =
       can && (config.controller.backends.driver == mrd::config::DeviceBackend::kCan || !modbus);
 
-  struct sigaction sa{};
-  sigemptyset(&sa.sa_mask);
-  sa.sa_handler = on_stop_signal;
-  sigaction(SIGTERM, &sa, nullptr);
-  sigaction(SIGINT, &sa, nullptr);
-
   std::printf("mrd-plant: %.0f Hz, profile %s, %s%s%s%s\n", config.rate,
               std::string(to_string(config.profile.kind)).c_str(),
               config.duration > 0.0 ? (std::to_string(config.duration) + " s").c_str() : "until SIGTERM",
@@ -163,37 +157,44 @@ int main(int argc, char** argv) {
   std::vector<mrd::hal::IoThread*> io_threads;
   if (modbus) io_threads.push_back(&modbus->io_thread());
   if (can) io_threads.push_back(&can->io_thread());
-  mrd::runtime::make_io_threads_realtime(config.realtime, io_threads, rt);
-  mrd::runtime::make_current_thread_realtime(config.realtime, rt);
-  for (const auto& w : rt.warnings) std::fprintf(stderr, "mrd-plant: warning: %s\n", w.c_str());
-  std::printf("mrd-plant: ready\n");
-  std::fflush(stdout);
 
-  const auto period = std::chrono::nanoseconds{static_cast<std::int64_t>(1e9 / config.rate + 0.5)};
-  mrd::runtime::RealTimeRunner runner(period);
-  mrd::runtime::LoopStatistics stats;
   std::optional<mrd::hal::Timestamp> start;
   std::optional<double> fault_origin;  // plant time of fault time 0
   const auto commanded_yet = [&] {
     return (can && can->counters().commands > 0) || (modbus && modbus->counters().setpoints > 0);
   };
-  const auto max_cycles = static_cast<std::uint64_t>(config.duration * config.rate + 0.5);
-  runner.run(
-      [&](mrd::hal::Timestamp release) {
-        if (!start) start = release;
-        const double t = std::chrono::duration<double>(release - *start).count();
-        if (!fault_origin && (config.faults_from == mrd::plant::FaultClock::kStart || commanded_yet())) {
-          fault_origin = t;
-        }
-        const double commanded = current_from_can ? (can->enabled() ? can->setpoint() : 0.0)
-                                 : modbus         ? modbus->setpoint()
-                                                  : 0.0;
-        const auto& s = rig->step(t, fault_origin ? t - *fault_origin : -1.0, commanded);
-        if (modbus) modbus->publish(s.lvdt, s.reading.coil_current, s.faults);
-        if (can) can->send(t, s.lvdt, s.reading.coil_current, s.faults);
-        log.write(s);
-      },
-      g_stop, max_cycles, stats);
+  const auto cycle = [&](mrd::hal::Timestamp release) {
+    if (!start) start = release;
+    const double t = std::chrono::duration<double>(release - *start).count();
+    if (!fault_origin && (config.faults_from == mrd::plant::FaultClock::kStart || commanded_yet())) {
+      fault_origin = t;
+    }
+    const double commanded = current_from_can ? (can->enabled() ? can->setpoint() : 0.0)
+                             : modbus         ? modbus->setpoint()
+                                              : 0.0;
+    const auto& s = rig->step(t, fault_origin ? t - *fault_origin : -1.0, commanded);
+    if (modbus) modbus->publish(s.lvdt, s.reading.coil_current, s.faults);
+    if (can) can->send(t, s.lvdt, s.reading.coil_current, s.faults);
+    log.write(s);
+  };
+  mrd::runtime::LoopStatistics stats;
+  const mrd::runtime::RealTimeRun run{
+      .realtime = config.realtime,
+      .period = std::chrono::nanoseconds{static_cast<std::int64_t>(1e9 / config.rate + 0.5)},
+      .max_cycles = static_cast<std::uint64_t>(config.duration * config.rate + 0.5),
+      .io_threads = io_threads};
+  const mrd::runtime::RealTimeHooks hooks{
+      .finish = nullptr,
+      .ready =
+          [&](const mrd::runtime::RtSetupResult& done) {
+            std::printf("mrd-plant: %s\n",
+                        mrd::runtime::describe_rt_setup(config.realtime, done, io_threads.size()).c_str());
+            for (const auto& w : done.warnings) std::fprintf(stderr, "mrd-plant: warning: %s\n", w.c_str());
+            std::printf("mrd-plant: ready\n");
+            std::fflush(stdout);
+          },
+      .print_stats = [&] { print_summary(stdout, stats, modbus.get(), can.get(), log, config.log); }};
+  mrd::runtime::run_real_time(run, g_signals, &signal_mask, rt, stats, cycle, hooks);
 
   if (modbus) modbus->stop();
   if (can) can->stop();

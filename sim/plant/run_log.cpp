@@ -11,15 +11,19 @@ hal::StartResult RunLog::open(const std::string& path) {
     return hal::StartResult::failure("cannot write the plant log " + path + ": " + std::strerror(errno));
   }
   std::setvbuf(file_, nullptr, _IOFBF, 1 << 20);
-  std::fputs(kHeader, file_);
+  std::fputs(writer_.header().c_str(), file_);
   return hal::StartResult::success();
 }
 
 void RunLog::write(const RigSample& s) {
   if (file_ == nullptr) return;
   const auto& r = s.reading;
-  std::fprintf(file_, "%.6f,%.5f,%.6g,%.6g,%.6g,%.5g\n", s.time, r.lvdt_displacement * 1e3,
-               r.coil_current, r.measured_force * 1e-3, r.B, r.temperature);
+  char line[record::RunCsvWriter::kMaxRowChars];
+  const std::size_t n = writer_.format_row(
+      {.time = s.time, .displacement = r.lvdt_displacement, .coil = r.coil_current, .force = r.measured_force,
+       .B = r.B, .temperature = r.temperature},
+      line);
+  std::fwrite(line, 1, n, file_);
   ++rows_;
 }
 

@@ -4,12 +4,13 @@
 #include <string>
 
 #include "hal/status.hpp"
+#include "record/run_csv_writer.hpp"
 #include "sim/plant/rig.hpp"
 
 namespace mrd::plant {
 
-// The plant's run as a recorded-run CSV (tools/replay reads it; mrd-replay replays it):
-// time_s,displacement_mm,current_A,force_kN,B_T,temperature_C. The displacement is the LVDT's
+// The plant's run as a recorded-run CSV (record::RunCsvWriter; mrd-replay replays it):
+// time_s,displacement_mm,current_A,force_N,B_T,temperature_C. The displacement is the LVDT's
 // reading before the LVDT faults, the current the one that flows in the coil, the force the
 // load cell's. Buffered: a row is a formatted line in memory, written out in large blocks.
 class RunLog {
@@ -24,11 +25,12 @@ class RunLog {
   void close();
   [[nodiscard]] std::uint64_t rows() const { return rows_; }
 
-  static constexpr const char* kHeader = "time_s,displacement_mm,current_A,force_kN,B_T,temperature_C\n";
+  static constexpr record::RunCsvLayout kLayout{.B = true, .temperature = true};
 
  private:
   std::FILE* file_ = nullptr;
   std::uint64_t rows_ = 0;
+  record::RunCsvWriter writer_{kLayout};
 };
 
 }  // namespace mrd::plant

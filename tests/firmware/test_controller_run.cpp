@@ -17,7 +17,7 @@ namespace {
 std::string run(const mrd::config::ControllerConfig& config, double seconds,
                 bool stop_at_once = false) {
   std::FILE* out = std::tmpfile();
-  mrd::firmware::ControllerSignals signals;
+  mrd::runtime::ProcessSignals signals;
   signals.stop.store(stop_at_once);  // as if SIGTERM arrived before the first cycle
   mrd::firmware::RunOptions options;
   options.duration_s = seconds;

@@ -5,6 +5,7 @@
 
 #include "tests/record/input_error_of.hpp"
 #include "record/run_csv.hpp"
+#include "record/run_csv_writer.hpp"
 #include "record/run_reader.hpp"
 
 namespace {
@@ -259,3 +260,29 @@ TEST(RunCsvFiles, ReadsAQuirozFileAndTheValidationRecord) {
 }
 
 }  // namespace
+
+TEST(RunCsvWriter, WritesTheChosenColumnsInFileUnits) {
+  const mrd::record::RunCsvWriter writer({.coil_signal = mrd::record::CoilSignal::kCommandVoltage,
+                                          .velocity = true,
+                                          .temperature = true,
+                                          .significant_digits = 6});
+  EXPECT_EQ(writer.header(), "time_s,displacement_mm,voltage_V,force_N,velocity_mm_s,temperature_C\n");
+  std::string text;
+  writer.append_row({.time = 0.5, .displacement = 0.0125, .coil = 1.25, .force = -850.0, .velocity = -0.0625,
+                     .B = 9.0, .temperature = 41.5},
+                    text);
+  EXPECT_EQ(text, "0.5,12.5,1.25,-850,-62.5,41.5\n");
+  char small[8];
+  EXPECT_EQ(writer.format_row({}, small), 0u);
+}
+
+TEST(RunCsvWriter, AWrittenRunReadsBackInSi) {
+  std::string text = mrd::record::RunCsvWriter({.B = true}).header();
+  mrd::record::RunCsvWriter({.B = true}).append_row({0.0, 0.001, 0.5, 1234.5, 0, 0.25, 0}, text);
+  mrd::record::RunCsvWriter({.B = true}).append_row({0.001, 0.002, 0.5, 1250.0, 0, 0.3, 0}, text);
+  const auto run = parse_run_csv(text, "written.csv");
+  ASSERT_EQ(run.size(), 2u);
+  EXPECT_DOUBLE_EQ(run.force[1], 1250.0);
+  EXPECT_DOUBLE_EQ(run.displacement[0], 0.001);
+  EXPECT_DOUBLE_EQ(run.B[1], 0.3);
+}

@@ -19,7 +19,7 @@ def load(name):
     return rows[0], [list(map(float, r)) for r in rows[1:]]
 def write(name, header, rows):
     w = csv.writer(open(f"{out}/{name}.csv", "w")); w.writerow(header); w.writerows(rows)
-def add(source, name, extra_kN):
+def add(source, name, extra_N):
     h, rows = load(source)
     col = {k: h.index(k) for k in h}
     n = len(rows); dt = rows[1][col["time_s"]] - rows[0][col["time_s"]]
@@ -28,20 +28,20 @@ def add(source, name, extra_kN):
         return (rows[min(i + 1, n - 1)][v] - rows[max(i - 1, 0)][v]) / 1000.0 / (2 * dt)
     result = []
     for i, r in enumerate(rows):
-        r2 = list(r); r2[col["force_kN"]] += extra_kN(r, col, accel(i)); result.append(r2)
+        r2 = list(r); r2[col["force_N"]] += extra_N(r, col, accel(i)); result.append(r2)
     write(name, h, result)
 # Inertia of a moving mass: 50 kg on the 1 kN class, 2 t on the 50 kN class.
-add("1kN-telegraph", "inertia-1kN-telegraph", lambda r, c, a: 50.0 * a / 1000.0)
-add("50kN-table4", "inertia-50kN-table4", lambda r, c, a: 2000.0 * a / 1000.0)
+add("1kN-telegraph", "inertia-1kN-telegraph", lambda r, c, a: 50.0 * a)
+add("50kN-table4", "inertia-50kN-table4", lambda r, c, a: 2000.0 * a)
 # Coulomb friction of the seals, 40 N.
-add("1kN-telegraph", "friction-1kN-telegraph", lambda r, c, a: 0.040 * math.tanh(r[c["velocity_mm_s"]] / 1.0))
+add("1kN-telegraph", "friction-1kN-telegraph", lambda r, c, a: 40.0 * math.tanh(r[c["velocity_mm_s"]] / 1.0))
 # Mains hum on the load cell, 300 N at 50 Hz.
-add("50kN-table4", "hum-50kN-table4", lambda r, c, a: 0.3 * math.sin(2 * math.pi * 50 * r[c["time_s"]]))
+add("50kN-table4", "hum-50kN-table4", lambda r, c, a: 300.0 * math.sin(2 * math.pi * 50 * r[c["time_s"]]))
 # Viscosity rising with the field (Spencer's c0b): +50 % at the class's largest current.
 add("50kN-table4", "field-viscosity-50kN-table4",
-    lambda r, c, a: 0.5 * 53.0 * (r[c["current_A"]] / 1.2) * r[c["velocity_mm_s"]] / 1000.0)
+    lambda r, c, a: 0.5 * 53.0e3 * (r[c["current_A"]] / 1.2) * r[c["velocity_mm_s"]] / 1000.0)
 # A cubic bump stop: 100 N at the 20 mm stroke.
-add("1kN-table4", "bump-stop-1kN-table4", lambda r, c, a: 0.1 * (r[c["displacement_mm"]] / 20.0) ** 3)
+add("1kN-table4", "bump-stop-1kN-table4", lambda r, c, a: 100.0 * (r[c["displacement_mm"]] / 20.0) ** 3)
 PY
 echo "| run | added | named | RMS before [N] | RMS after [N] | what remains |"
 echo "|---|---|---|---:|---:|---|"

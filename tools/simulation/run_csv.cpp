@@ -1,38 +1,20 @@
 #include "tools/simulation/run_csv.hpp"
 
-#include <cstdio>
 
 #include "config/effects_config.hpp"
+#include "record/run_csv_writer.hpp"
 #include "tools/json.hpp"
 
 namespace mrd::tools {
 
-namespace {
-
-std::string csv_number(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.9g", value);
-  return buffer;
-}
-
-}  // namespace
-
 void write_run_csv(std::ostream& out, const SimulatedRun& run, const RunColumns& columns) {
-  out << "time_s,displacement_mm,current_A,force_kN";
-  if (columns.velocity) out << ",velocity_mm_s";
-  if (columns.B) out << ",B_T";
-  if (columns.temperature) out << ",temperature_C";
-  out << '\n';
-  std::string row;
+  const record::RunCsvWriter writer({.velocity = columns.velocity, .B = columns.B, .temperature = columns.temperature});
+  out << writer.header();
+  std::string rows;
   for (const RunSample& s : run.samples) {
-    row = csv_number(s.time) + ',' + csv_number(s.displacement * 1e3) + ',' +
-          csv_number(s.current) + ',' + csv_number(s.force * 1e-3);
-    if (columns.velocity) row += ',' + csv_number(s.velocity * 1e3);
-    if (columns.B) row += ',' + csv_number(s.B);
-    if (columns.temperature) row += ',' + csv_number(s.temperature);
-    row += '\n';
-    out << row;
+    writer.append_row({s.time, s.displacement, s.current, s.force, s.velocity, s.B, s.temperature}, rows);
   }
+  out << rows;
 }
 
 std::string run_manifest_json(const SimulatedRun& run) {

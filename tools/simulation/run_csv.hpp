@@ -14,8 +14,9 @@ struct RunColumns {
   bool temperature = false;  // temperature_C (a thermocouple on the body)
 };
 
-// The project's recorded-run format: a header naming each column with its unit, then one row
-// per sample: time_s,displacement_mm,current_A,force_kN[,velocity_mm_s][,B_T][,temperature_C].
+// The project's recorded-run format (record::RunCsvWriter): a header naming each column with its
+// unit, then one row per sample: time_s,displacement_mm,current_A,force_N[,velocity_mm_s][,B_T]
+// [,temperature_C].
 // Only what a rig measures: the LVDT, the commanded current and the load cell. The effects the
 // plant carried are not declared in it.
 void write_run_csv(std::ostream& out, const SimulatedRun& run, const RunColumns& columns);

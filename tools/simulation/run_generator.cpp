@@ -137,9 +137,11 @@ SimulatedRun simulate_run(const RunOptions& options) {
   const RunOptions& o = run.options;
   double dissipated = 0.0;
   for (const auto& request : o.effects) {
-    if (request.name != "thermal_drift") continue;
-    // Thermal drift is sized by the energy the clean run dissipates (damper_class.hpp).
+    const model::EffectInfo* info = model::find_effect(request.name);
+    if (info == nullptr || !info->sized_by_dissipated_energy) continue;
+    // Sized by the energy the clean run dissipates (damper_class.hpp): one clean run suffices.
     for (const auto& s : run_plant(o, {})) dissipated += std::max(s.true_force * s.velocity, 0.0) / o.rate;
+    break;
   }
   for (const auto& request : o.effects) apply_effect(o.damper, request, dissipated, run.effects);
   run.samples = run_plant(o, run.effects);

@@ -8,6 +8,7 @@
 #include "config/config_loader.hpp"
 #include "tests/record/input_error_of.hpp"
 #include "record/run_csv.hpp"
+#include "record/run_csv_writer.hpp"
 #include "tools/replay/simulated_run.hpp"
 
 namespace {

@@ -149,19 +149,19 @@ TEST(RunGenerator, CsvHasTheRecordedRunHeaderAndUnits) {
   std::getline(in, header);
   std::getline(in, first);
   std::getline(in, second);
-  EXPECT_EQ(header, "time_s,displacement_mm,current_A,force_kN,velocity_mm_s,B_T,temperature_C");
-  double t = 0, x_mm = 0, i = 0, f_kN = 0, v_mm_s = 0, B = 0, temperature = 0;
-  ASSERT_EQ(std::sscanf(second.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf,%lf", &t, &x_mm, &i, &f_kN, &v_mm_s, &B,
+  EXPECT_EQ(header, "time_s,displacement_mm,current_A,force_N,velocity_mm_s,B_T,temperature_C");
+  double t = 0, x_mm = 0, i = 0, f_N = 0, v_mm_s = 0, B = 0, temperature = 0;
+  ASSERT_EQ(std::sscanf(second.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf,%lf", &t, &x_mm, &i, &f_N, &v_mm_s, &B,
                         &temperature),
             7);
   EXPECT_DOUBLE_EQ(t, 1e-3);
   EXPECT_NEAR(x_mm, run.samples[1].displacement * 1e3, 1e-6);
-  EXPECT_NEAR(f_kN, run.samples[1].force * 1e-3, 1e-7);  // nine significant digits
+  EXPECT_NEAR(f_N, run.samples[1].force, 1e-8 * std::fabs(run.samples[1].force));  // nine significant digits
   EXPECT_NEAR(v_mm_s, 40.0 * 2.0 * std::numbers::pi * std::cos(2.0 * std::numbers::pi * 1e-3), 1e-5);
   EXPECT_EQ(temperature, 20.0);
   std::ostringstream plain;
   mrd::tools::write_run_csv(plain, run, {false, false, false});
-  EXPECT_EQ(plain.str().substr(0, plain.str().find('\n')), "time_s,displacement_mm,current_A,force_kN");
+  EXPECT_EQ(plain.str().substr(0, plain.str().find('\n')), "time_s,displacement_mm,current_A,force_N");
 }
 
 TEST(RunGenerator, ManifestNamesTheCarriedEffects) {

@@ -1,0 +1,82 @@
+#pragma once
+
+#include <signal.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <string>
+#include <thread>
+
+#include "hal/io_thread.hpp"
+#include "runtime/loop_statistics.hpp"
+#include "runtime/rt_runner.hpp"
+#include "runtime/rt_setup.hpp"
+
+namespace mrd::runtime {
+
+// Flags the process's signal handlers set (async-signal-safe: lock-free atomics only).
+struct ProcessSignals {
+  std::atomic<bool> stop{false};         // SIGTERM, SIGINT, SIGHUP: end the run through the final cycle
+  std::atomic<bool> print_stats{false};  // SIGUSR1
+};
+
+// Installs the handlers for `signals` and blocks those signals on the calling thread, so the
+// threads it starts afterwards inherit a mask without them and only the main thread takes
+// them. Returns the blocked set, for run_real_time to unblock once the threads run.
+sigset_t install_process_signals(ProcessSignals& signals);
+
+struct RealTimeRun {
+  const RealtimeConfig& realtime;
+  std::chrono::nanoseconds period;
+  std::uint64_t max_cycles = 0;                 // 0: until a stop signal
+  std::span<hal::IoThread* const> io_threads;   // already started
+  std::chrono::milliseconds poll_period{20};    // how often the main thread looks at the flags
+};
+
+// The parts of a real-time program that are not its cycle; all but `finish` run on the
+// calling (non-real-time) thread.
+struct RealTimeHooks {
+  std::function<void(hal::Timestamp next_release)> finish;  // on the loop thread, after the stop
+  std::function<void(const RtSetupResult&)> ready;          // once the loop thread is set up
+  std::function<void()> print_stats;                        // on SIGUSR1
+};
+
+// The one skeleton of mrd-controller and mrd-plant: the bus threads at their priority, the
+// loop on its own thread (SCHED_FIFO, pinned, pre-faulted stack) releasing `cycle` on a fixed
+// period, the calling thread polling the signal flags; on stop, `finish` runs one last time on
+// the loop thread (the controller drives the fail-safe current there) before it ends.
+// lock_memory() is the caller's, before it allocates the run's buffers.
+template <typename Cycle>
+void run_real_time(const RealTimeRun& run, ProcessSignals& signals, const sigset_t* unblock,
+                   RtSetupResult& rt, LoopStatistics& stats, Cycle&& cycle, const RealTimeHooks& hooks) {
+  make_io_threads_realtime(run.realtime, run.io_threads, rt);
+  std::atomic<bool> stop{false};
+  std::atomic<bool> setup_done{false};
+  std::atomic<bool> finished{false};
+  std::thread loop_thread([&] {
+    make_current_thread_realtime(run.realtime, rt);
+    setup_done.store(true);
+    RealTimeRunner runner(run.period);
+    const hal::Timestamp next = runner.run(cycle, stop, run.max_cycles, stats);
+    if (hooks.finish) hooks.finish(next);
+    finished.store(true);
+  });
+  if (unblock != nullptr) pthread_sigmask(SIG_UNBLOCK, unblock, nullptr);
+  while (!setup_done.load()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  if (hooks.ready) hooks.ready(rt);
+  while (!finished.load()) {
+    std::this_thread::sleep_for(run.poll_period);
+    if (signals.stop.load()) stop.store(true);
+    if (signals.print_stats.exchange(false) && hooks.print_stats) hooks.print_stats();
+  }
+  loop_thread.join();
+}
+
+// "real-time: memory locked, scheduling SCHED_FIFO 80, cpu any, bus threads SCHED_FIFO 60".
+[[nodiscard]] std::string describe_rt_setup(const RealtimeConfig& config, const RtSetupResult& rt,
+                                            std::size_t io_threads);
+
+}  // namespace mrd::runtime
