@@ -56,58 +56,102 @@ void print_summary(std::FILE* out, const mrd::runtime::LoopStatistics& stats,
   std::fflush(out);
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  CLI::App app{"mrd-plant: the simulated damper rig, serving the controller over Modbus and CAN"};
-  std::string config_path;
-  std::string check_path;
+// The command line's overrides of the plant config.
+struct Overrides {
   double duration = -1.0;
   int port = -2;
   std::string log_path;
   bool no_log = false;
-  app.add_option("--config", config_path, "plant TOML file (etc/mrd/plant.toml lists every key)");
-  app.add_option("--check-config", check_path, "validate FILE, print every problem, exit 0 or 1");
-  app.add_option("--duration", duration, "run this many seconds (overrides plant.duration; 0: until SIGTERM)")
-      ->check(CLI::Range(0.0, 1e7));
-  app.add_option("--port", port, "Modbus TCP port (overrides modbus.port; 0: any free port, printed)")
-      ->check(CLI::Range(0, 65535));
-  app.add_option("--log", log_path, "recorded-run CSV (overrides plant.log)");
-  app.add_flag("--no-log", no_log, "write no log");
-  CLI11_PARSE(app, argc, argv);
 
-  if (!check_path.empty()) {
-    const auto loaded = mrd::plant::load_plant_config_file(check_path);
-    std::fputs(loaded.report().c_str(), loaded.ok() ? stdout : stderr);
-    if (loaded.ok()) std::printf("%s: ok\n", check_path.c_str());
-    return loaded.ok() ? 0 : 1;
+  void apply(mrd::plant::PlantConfig& config) const {
+    if (duration >= 0.0) config.duration = duration;
+    if (port >= 0) config.modbus.port = port;
+    if (!log_path.empty()) config.log = log_path;
+    if (no_log) config.log.clear();
   }
-  if (config_path.empty()) {
+};
+
+std::optional<mrd::plant::PlantConfig> load_config(const std::string& path, const Overrides& overrides) {
+  if (path.empty()) {
     std::fprintf(stderr, "mrd-plant: --config FILE is required (etc/mrd/plant.toml lists every key)\n");
-    return 1;
+    return std::nullopt;
   }
-  auto loaded = mrd::plant::load_plant_config_file(config_path);
+  auto loaded = mrd::plant::load_plant_config_file(path);
   std::fputs(loaded.report().c_str(), loaded.ok() ? stdout : stderr);
   if (!loaded.ok()) {
-    std::fprintf(stderr, "%s: %zu error(s)\n", config_path.c_str(), loaded.errors.size());
-    return 1;
+    std::fprintf(stderr, "%s: %zu error(s)\n", path.c_str(), loaded.errors.size());
+    return std::nullopt;
   }
   mrd::plant::PlantConfig config = loaded.config;
-  if (duration >= 0.0) config.duration = duration;
-  if (port >= 0) config.modbus.port = port;
-  if (!log_path.empty()) config.log = log_path;
-  if (no_log) config.log.clear();
+  overrides.apply(config);
+  return config;
+}
 
-  std::unique_ptr<mrd::plant::Rig> rig;
-  try {
-    auto motion = mrd::plant::make_motion(config);
-    if (config.duration == 0.0) config.duration = mrd::plant::motion_length(motion);
-    rig = std::make_unique<mrd::plant::Rig>(config, std::move(motion));
-  } catch (const mrd::record::InputError& e) {
-    std::fprintf(stderr, "mrd-plant: profile.file: %s\n", e.what());
-    return 1;
+// The buses the plant serves, started; and which one carries the coil current.
+struct PlantBuses {
+  std::unique_ptr<mrd::plant::ModbusServer> modbus;
+  std::unique_ptr<mrd::plant::CanNode> can;
+  bool current_from_can = false;
+
+  [[nodiscard]] std::vector<mrd::hal::IoThread*> io_threads() const {
+    std::vector<mrd::hal::IoThread*> threads;
+    if (modbus) threads.push_back(&modbus->io_thread());
+    if (can) threads.push_back(&can->io_thread());
+    return threads;
   }
+  [[nodiscard]] bool commanded_yet() const {
+    return (can && can->counters().commands > 0) || (modbus && modbus->counters().setpoints > 0);
+  }
+  [[nodiscard]] double commanded_current() const {
+    if (current_from_can) return can->enabled() ? can->setpoint() : 0.0;
+    return modbus ? modbus->setpoint() : 0.0;
+  }
+  void stop() {
+    if (modbus) modbus->stop();
+    if (can) can->stop();
+  }
+};
 
+bool start_buses(const mrd::plant::PlantConfig& config, PlantBuses& buses) {
+  if (config.modbus.enabled) {
+    buses.modbus = std::make_unique<mrd::plant::ModbusServer>(config.controller.modbus, config.listen_host(),
+                                                              config.listen_port(), config.modbus.rtu_link,
+                                                              config.seed);
+    if (const auto started = buses.modbus->start(); !started.ok) {
+      std::fprintf(stderr, "mrd-plant: %s\n", started.error.c_str());
+      return false;
+    }
+  }
+  if (config.can.enabled) {
+    buses.can = std::make_unique<mrd::plant::CanNode>(config.controller.can, config.can_interface(),
+                                                      config.can.feedback, config.can.fault_pull, config.seed);
+    if (const auto started = buses.can->start(); !started.ok) {
+      std::fprintf(stderr, "mrd-plant: %s\n", started.error.c_str());
+      return false;
+    }
+  }
+  // The controller's driver back end when the plant serves it, else whichever bus it serves.
+  buses.current_from_can =
+      buses.can && (config.controller.backends.driver == mrd::config::DeviceBackend::kCan || !buses.modbus);
+  return true;
+}
+
+void print_banner(const mrd::plant::PlantConfig& config, const PlantBuses& buses) {
+  std::printf("mrd-plant: %.0f Hz, profile %s, %s%s%s%s\n", config.rate,
+              std::string(to_string(config.profile.kind)).c_str(),
+              config.duration > 0.0 ? (std::to_string(config.duration) + " s").c_str() : "until SIGTERM",
+              config.faults.empty() ? "" : (", " + std::to_string(config.faults.size()) + " scripted fault(s)").c_str(),
+              config.log.empty() ? "" : ", log ", config.log.c_str());
+  if (buses.modbus) {
+    std::printf("mrd-plant: modbus %s %s\n",
+                config.controller.modbus.transport == mrd::hal::modbus::Transport::kTcp ? "tcp" : "rtu",
+                buses.modbus->endpoint().c_str());
+  }
+  if (buses.can) std::printf("mrd-plant: can %s\n", buses.can->interface().c_str());
+}
+
+// Moves the rig in real time until the duration ends or a stop signal; prints the summary.
+int run_plant(const mrd::plant::PlantConfig& config, mrd::plant::Rig& rig) {
   // Before the bus threads start, so they inherit a mask without the signals.
   const sigset_t signal_mask = mrd::runtime::install_process_signals(g_signals);
   mrd::runtime::RtSetupResult rt;
@@ -119,62 +163,22 @@ int main(int argc, char** argv) {
       return 1;
     }
   }
-  std::unique_ptr<mrd::plant::ModbusServer> modbus;
-  if (config.modbus.enabled) {
-    modbus = std::make_unique<mrd::plant::ModbusServer>(config.controller.modbus, config.listen_host(),
-                                                        config.listen_port(), config.modbus.rtu_link,
-                                                        config.seed);
-    if (const auto started = modbus->start(); !started.ok) {
-      std::fprintf(stderr, "mrd-plant: %s\n", started.error.c_str());
-      return 1;
-    }
-  }
-  std::unique_ptr<mrd::plant::CanNode> can;
-  if (config.can.enabled) {
-    can = std::make_unique<mrd::plant::CanNode>(config.controller.can, config.can_interface(),
-                                                config.can.feedback, config.can.fault_pull, config.seed);
-    if (const auto started = can->start(); !started.ok) {
-      std::fprintf(stderr, "mrd-plant: %s\n", started.error.c_str());
-      return 1;
-    }
-  }
-  // Which bus the coil current comes from: the controller's driver back end when the plant
-  // serves it, else whichever bus the plant serves.
-  const bool current_from_can =
-      can && (config.controller.backends.driver == mrd::config::DeviceBackend::kCan || !modbus);
-
-  std::printf("mrd-plant: %.0f Hz, profile %s, %s%s%s%s\n", config.rate,
-              std::string(to_string(config.profile.kind)).c_str(),
-              config.duration > 0.0 ? (std::to_string(config.duration) + " s").c_str() : "until SIGTERM",
-              config.faults.empty() ? "" : (", " + std::to_string(config.faults.size()) + " scripted fault(s)").c_str(),
-              config.log.empty() ? "" : ", log ", config.log.c_str());
-  if (modbus) {
-    std::printf("mrd-plant: modbus %s %s\n",
-                config.controller.modbus.transport == mrd::hal::modbus::Transport::kTcp ? "tcp" : "rtu",
-                modbus->endpoint().c_str());
-  }
-  if (can) std::printf("mrd-plant: can %s\n", can->interface().c_str());
-  std::vector<mrd::hal::IoThread*> io_threads;
-  if (modbus) io_threads.push_back(&modbus->io_thread());
-  if (can) io_threads.push_back(&can->io_thread());
+  PlantBuses buses;
+  if (!start_buses(config, buses)) return 1;
+  print_banner(config, buses);
+  const std::vector<mrd::hal::IoThread*> io_threads = buses.io_threads();
 
   std::optional<mrd::hal::Timestamp> start;
   std::optional<double> fault_origin;  // plant time of fault time 0
-  const auto commanded_yet = [&] {
-    return (can && can->counters().commands > 0) || (modbus && modbus->counters().setpoints > 0);
-  };
   const auto cycle = [&](mrd::hal::Timestamp release) {
     if (!start) start = release;
     const double t = std::chrono::duration<double>(release - *start).count();
-    if (!fault_origin && (config.faults_from == mrd::plant::FaultClock::kStart || commanded_yet())) {
+    if (!fault_origin && (config.faults_from == mrd::plant::FaultClock::kStart || buses.commanded_yet())) {
       fault_origin = t;
     }
-    const double commanded = current_from_can ? (can->enabled() ? can->setpoint() : 0.0)
-                             : modbus         ? modbus->setpoint()
-                                              : 0.0;
-    const auto& s = rig->step(t, fault_origin ? t - *fault_origin : -1.0, commanded);
-    if (modbus) modbus->publish(s.lvdt, s.reading.coil_current, s.faults);
-    if (can) can->send(t, s.lvdt, s.reading.coil_current, s.faults);
+    const auto& s = rig.step(t, fault_origin ? t - *fault_origin : -1.0, buses.commanded_current());
+    if (buses.modbus) buses.modbus->publish(s.lvdt, s.reading.coil_current, s.faults);
+    if (buses.can) buses.can->send(t, s.lvdt, s.reading.coil_current, s.faults);
     log.write(s);
   };
   mrd::runtime::LoopStatistics stats;
@@ -193,13 +197,12 @@ int main(int argc, char** argv) {
             std::printf("mrd-plant: ready\n");
             std::fflush(stdout);
           },
-      .print_stats = [&] { print_summary(stdout, stats, modbus.get(), can.get(), log, config.log); }};
+      .print_stats = [&] { print_summary(stdout, stats, buses.modbus.get(), buses.can.get(), log, config.log); }};
   mrd::runtime::run_real_time(run, g_signals, &signal_mask, rt, stats, cycle, hooks);
 
-  if (modbus) modbus->stop();
-  if (can) can->stop();
+  buses.stop();
   log.close();
-  print_summary(stdout, stats, modbus.get(), can.get(), log, config.log);
+  print_summary(stdout, stats, buses.modbus.get(), buses.can.get(), log, config.log);
   if (start) {
     std::printf("plant log: time_s 0 is CLOCK_MONOTONIC %.9f s\n", std::chrono::duration<double>(*start).count());
   }
@@ -210,4 +213,42 @@ int main(int argc, char** argv) {
     std::printf("plant faults: none ran, no command came\n");
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"mrd-plant: the simulated damper rig, serving the controller over Modbus and CAN"};
+  std::string config_path;
+  std::string check_path;
+  Overrides overrides;
+  app.add_option("--config", config_path, "plant TOML file (etc/mrd/plant.toml lists every key)");
+  app.add_option("--check-config", check_path, "validate FILE, print every problem, exit 0 or 1");
+  app.add_option("--duration", overrides.duration,
+                 "run this many seconds (overrides plant.duration; 0: until SIGTERM)")
+      ->check(CLI::Range(0.0, 1e7));
+  app.add_option("--port", overrides.port, "Modbus TCP port (overrides modbus.port; 0: any free port, printed)")
+      ->check(CLI::Range(0, 65535));
+  app.add_option("--log", overrides.log_path, "recorded-run CSV (overrides plant.log)");
+  app.add_flag("--no-log", overrides.no_log, "write no log");
+  CLI11_PARSE(app, argc, argv);
+
+  if (!check_path.empty()) {
+    const auto loaded = mrd::plant::load_plant_config_file(check_path);
+    std::fputs(loaded.report().c_str(), loaded.ok() ? stdout : stderr);
+    if (loaded.ok()) std::printf("%s: ok\n", check_path.c_str());
+    return loaded.ok() ? 0 : 1;
+  }
+  auto config = load_config(config_path, overrides);
+  if (!config) return 1;
+  std::unique_ptr<mrd::plant::Rig> rig;
+  try {
+    auto motion = mrd::plant::make_motion(*config);
+    if (config->duration == 0.0) config->duration = mrd::plant::motion_length(motion);
+    rig = std::make_unique<mrd::plant::Rig>(*config, std::move(motion));
+  } catch (const mrd::record::InputError& e) {
+    std::fprintf(stderr, "mrd-plant: profile.file: %s\n", e.what());
+    return 1;
+  }
+  return run_plant(*config, *rig);
 }
