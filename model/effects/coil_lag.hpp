@@ -46,6 +46,8 @@ class CoilLag {
 struct CoilLagEffect : EffectTraitsBase<CoilLagParams> {
   using Element = CoilLag;
   static constexpr std::string_view kName = "coil_lag";
+  static constexpr std::string_view kSeparatedBy =
+      "current steps at a held displacement or a slow motion (the lag shows at each switch)";
   static constexpr bool kChangesInduction = true;
   // Hook (effect_chain.hpp): the current that flows, from the one commanded.
   static double coil_current(Element& lag, double command) { return lag.step(command); }

@@ -23,11 +23,13 @@ EffectInfo info_of() {
   using P = typename E::Params;
   EffectInfo info;
   info.name = E::kName;
+  info.separated_by = E::kSeparatedBy;
   info.changes_induction = E::kChangesInduction;
   info.sized_by_dissipated_energy = E::kSizedByDissipatedEnergy;
   info.search = E::kSearch;
   info.linear = E::kLinear;
   info.enabled = [](const EffectSet& s) { return s.get<E>().enabled; };
+  info.disable = [](EffectSet& s) { s.get<E>().enabled = false; };
   info.apply = [](EffectSet& s, std::span<const double> x, const RunScales& scales) {
     E::apply(s.get<E>(), x, scales);
   };

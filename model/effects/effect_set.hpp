@@ -94,11 +94,13 @@ ValidationReport validate(const EffectSet& effects);
 // effects by name: the residual search, the simulator and the reports.
 struct EffectInfo {
   std::string_view name;
+  std::string_view separated_by;  // the test run that tells it from its look-alikes
   bool changes_induction = false;
   bool sized_by_dissipated_energy = false;
   std::span<const SearchCoordinate> search;
   std::span<const LinearColumn> linear;
   bool (*enabled)(const EffectSet&);
+  void (*disable)(EffectSet&);
   // The search coordinates x of the effect set into `effects` (the effect on), and back.
   void (*apply)(EffectSet& effects, std::span<const double> x, const RunScales& scales);
   void (*coordinates)(const EffectSet& effects, const RunScales& scales, std::span<double> x);

@@ -59,6 +59,9 @@ struct EffectTraitsBase {
   static constexpr bool kChangesInduction = false;
   // The simulator sizes it by the energy the clean run dissipates (resize's dissipated_energy).
   static constexpr bool kSizedByDissipatedEnergy = false;
+  // A test run that tells this effect apart from the look-alikes the residual search can
+  // confuse it with (reported when a run cannot decide between them).
+  static constexpr std::string_view kSeparatedBy = "a run at other amplitudes and frequencies";
   static constexpr std::array<SearchCoordinate, 0> kSearch{};
   static constexpr std::array<LinearColumn, 0> kLinear{};
 

@@ -40,6 +40,8 @@ class GasSpring {
 struct GasSpringEffect : EffectTraitsBase<GasSpringParams> {
   using Element = GasSpring;
   static constexpr std::string_view kName = "gas_spring";
+  static constexpr std::string_view kSeparatedBy =
+      "a slow stroke at zero current (the spring is the only force that does not reverse with the velocity)";
   // Hook (effect_chain.hpp): a force added to the fluid's.
   static double added_force(const Element& spring, double displacement) { return spring.force(displacement); }
 

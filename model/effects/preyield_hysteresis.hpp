@@ -88,6 +88,8 @@ class PreyieldHysteresis {
 struct PreyieldHysteresisEffect : EffectTraitsBase<PreyieldHysteresisParams> {
   using Element = PreyieldHysteresis;
   static constexpr std::string_view kName = "preyield_hysteresis";
+  static constexpr std::string_view kSeparatedBy =
+      "small-amplitude motion that never reaches the stroke-end threshold (pre-yield acts at every reversal)";
   // Hook (effect_chain.hpp): the fluid force with z, in place of Eq. 11-12's.
   static double fluid_force(Element& e, double yield_force, double sign_term, double viscous_force,
                             double velocity) {

@@ -82,6 +82,8 @@ class SensorDelayPrediction {
 struct SensorDelayEffect : EffectTraitsBase<SensorDelayParams> {
   using Element = SensorDelayPrediction;
   static constexpr std::string_view kName = "sensor_delay";
+  static constexpr std::string_view kSeparatedBy =
+      "a faster motion at constant current (a delay grows with the frequency; most effects do not)";
   // Hook (effect_chain.hpp): the motion now from the delayed reading; needs the tracked
   // acceleration, so the observer runs its velocity tracker even with a velocity sensor.
   static constexpr bool kNeedsAcceleration = true;

@@ -67,6 +67,8 @@ class StrokeEndAir {
 struct StrokeEndAirEffect : EffectTraitsBase<StrokeEndAirParams> {
   using Element = StrokeEndAir;
   static constexpr std::string_view kName = "stroke_end_air";
+  static constexpr std::string_view kSeparatedBy =
+      "reversals both inside and beyond the stroke-end threshold (the air acts only after those beyond)";
   // Hook (effect_chain.hpp): a factor on the fluid force.
   static double force_factor(Element& e, double displacement) { return e.step(displacement); }
 

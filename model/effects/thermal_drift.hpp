@@ -82,6 +82,8 @@ class ThermalDrift {
 struct ThermalDriftEffect : EffectTraitsBase<ThermalDriftParams> {
   using Element = ThermalDrift;
   static constexpr std::string_view kName = "thermal_drift";
+  static constexpr std::string_view kSeparatedBy =
+      "a long run with a rest, and the fluid temperature logged (drift follows the dissipated energy)";
   static constexpr double kNominalRise = 20.0;  // [K]
   static constexpr bool kSizedByDissipatedEnergy = true;
   // Hooks (effect_chain.hpp): the factors on tau_y and c0, and the heat of the fluid force.

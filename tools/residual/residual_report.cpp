@@ -69,6 +69,12 @@ std::string residual_summary(const std::vector<record::RecordedRun>& runs, const
       out += "\n";
     }
   }
+  for (const auto& line : r.revisions) out += "set revision: " + line + "\n";
+  for (std::size_t g = 0; g < r.ambiguous.size(); ++g) {
+    out += "ambiguous:";
+    for (const auto& e : r.ambiguous[g]) out += " " + e;
+    out += format(" (kept %s; %s)\n", r.ambiguous[g].front().c_str(), r.ambiguity_tests[g].c_str());
+  }
   if (r.accepted.empty()) {
     out += "effect: none\n";
   } else {
@@ -116,7 +122,17 @@ std::string residual_json(const ResidualResult& r) {
       << json_number(t.rms_after) << ", \"validation_rms_N\": " << json_number(t.validation_rms)
       << ", \"accepted\": " << (t.accepted ? "true" : "false") << "}";
   }
-  j << (trials.empty() ? "" : "\n  ") << "],\n  \"unexplained\": " << json_string(r.unexplained) << "\n}\n";
+  j << (trials.empty() ? "" : "\n  ") << "],\n  \"ambiguous\": [";
+  for (std::size_t g = 0; g < r.ambiguous.size(); ++g) {
+    j << (g ? ", " : "") << "[";
+    for (std::size_t i = 0; i < r.ambiguous[g].size(); ++i) j << (i ? ", " : "") << json_string(r.ambiguous[g][i]);
+    j << "]";
+  }
+  j << "],\n  \"ambiguity_tests\": [";
+  for (std::size_t g = 0; g < r.ambiguity_tests.size(); ++g) j << (g ? ", " : "") << json_string(r.ambiguity_tests[g]);
+  j << "],\n  \"set_revisions\": [";
+  for (std::size_t g = 0; g < r.revisions.size(); ++g) j << (g ? ", " : "") << json_string(r.revisions[g]);
+  j << "],\n  \"unexplained\": " << json_string(r.unexplained) << "\n}\n";
   return j.str();
 }
 

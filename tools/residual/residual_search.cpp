@@ -265,6 +265,23 @@ std::size_t judge_round(Round& round, double current_validation, double threshol
   return best;
 }
 
+// Step 5b: the candidates that passed but came within the threshold of the winner: on this run
+// they explain the residual as well as it does, so the run cannot decide between them.
+Effects ambiguous_with_winner(Round& round, const Effects& candidates, std::size_t best, double threshold) {
+  Effects alike;
+  const CandidateTrial& winner = round.trials[best];
+  for (std::size_t i = 0; i < round.trials.size(); ++i) {
+    CandidateTrial& trial = round.trials[i];
+    if (i == best || !trial.verdict.starts_with("passes")) continue;
+    const double margin = 1.0 - winner.validation_rms / std::max(trial.validation_rms, 1e-300);
+    if (margin >= threshold) continue;
+    trial.verdict = format("ambiguous with %s: validation RMS %.4g N, within %.1f%% of it (threshold %.0f%%)",
+                           winner.effect.c_str(), trial.validation_rms, 100.0 * margin, 100.0 * threshold);
+    alike.push_back(candidates[i]);
+  }
+  return alike;
+}
+
 // After an acceptance, the model refined to convergence (all accepted effects and the base
 // together), so the next round's candidates are not credited with what a longer refinement of
 // this one would have found. Kept only if it validates at least as well: the polish minimises
@@ -281,6 +298,130 @@ model::DamperModel polish_accepted(Search& s, const model::DamperModel& accepted
   const bool keep = polished_validation <= validation;
   validation = std::min(polished_validation, validation);
   return keep ? polished : accepted;
+}
+
+// The accepted set without `dropped`, refined: what the others explain on their own.
+struct Reduced {
+  model::DamperModel model;
+  double validation = 0.0;
+};
+Reduced without_effect(Search& s, const model::DamperModel& current, const Effects& accepted,
+                       const model::EffectInfo* dropped) {
+  Effects rest;
+  for (const model::EffectInfo* e : accepted)
+    if (e != dropped) rest.push_back(e);
+  model::DamperModel origin = current;
+  dropped->disable(origin.effects);
+  std::int64_t spent = 0;
+  Reduced out;
+  out.model = refine_jointly(origin, rest, effect_coordinates(rest, origin, s.scales), {{15, 0.02, 12}, {8, 0.02}},
+                             s.options.start, s.scales, s.fit_series, spent)
+                  .model;
+  s.evaluations += spent;
+  out.validation = s.validation_rms(out.model);
+  return out;
+}
+
+// Step 6: with two or more accepted, each is reconsidered beside the others: it is swapped for a
+// candidate that passed in its round when that one now validates better, and dropped when
+// removing it costs less than the threshold. The greedy rounds alone never revisit an early pick.
+struct AcceptedSet {
+  Effects effects;
+  std::vector<Effects> rivals;  // per effect: the candidates that also passed in its round
+  model::DamperModel model;
+  double validation = 0.0;
+};
+
+void revise_set(Search& s, AcceptedSet& set, ResidualResult& result) {
+  const double threshold = s.options.minimum_reduction;
+  for (std::size_t k = 0; set.effects.size() >= 2 && k < set.effects.size(); ++k) {
+    if (set.rivals[k].empty()) continue;
+    const model::EffectInfo* held = set.effects[k];
+    const Reduced rest = without_effect(s, set.model, set.effects, held);
+    Round round = try_candidates(s, rest.model, rest.validation, set.rivals[k], 0);
+    std::size_t best = set.rivals[k].size();
+    for (std::size_t i = 0; i < round.trials.size(); ++i) {
+      if (!round.trials[i].verdict.empty()) continue;  // not physical
+      if (best == set.rivals[k].size() || round.trials[i].validation_rms < round.trials[best].validation_rms) best = i;
+    }
+    if (best == set.rivals[k].size() || !(round.trials[best].validation_rms < set.validation)) continue;
+    result.revisions.push_back(format("swapped %s for %s: validation RMS %.4g -> %.4g N beside the others",
+                                      std::string(held->name).c_str(), round.trials[best].effect.c_str(),
+                                      set.validation, round.trials[best].validation_rms));
+    set.effects[k] = set.rivals[k][best];
+    set.rivals[k].erase(set.rivals[k].begin() + static_cast<std::ptrdiff_t>(best));
+    set.rivals[k].push_back(held);
+    set.validation = round.trials[best].validation_rms;
+    set.model = polish_accepted(s, round.fits[best].model, set.effects, set.validation);
+  }
+  while (set.effects.size() >= 2) {
+    std::size_t weakest = set.effects.size();
+    Reduced weakest_rest;
+    double weakest_cost = threshold;
+    for (std::size_t k = 0; k < set.effects.size(); ++k) {
+      Reduced rest = without_effect(s, set.model, set.effects, set.effects[k]);
+      const double cost = 1.0 - set.validation / std::max(rest.validation, 1e-300);
+      if (cost < weakest_cost) {
+        weakest = k;
+        weakest_cost = cost;
+        weakest_rest = std::move(rest);
+      }
+    }
+    if (weakest == set.effects.size()) break;
+    result.revisions.push_back(format("dropped %s: without it the validation RMS rises only %.1f%% (%.4g -> %.4g N)",
+                                      std::string(set.effects[weakest]->name).c_str(), 100.0 * weakest_cost,
+                                      set.validation, weakest_rest.validation));
+    set.effects.erase(set.effects.begin() + static_cast<std::ptrdiff_t>(weakest));
+    set.rivals.erase(set.rivals.begin() + static_cast<std::ptrdiff_t>(weakest));
+    set.model = weakest_rest.model;
+    set.validation = weakest_rest.validation;
+  }
+}
+
+// The trials' accepted flags follow the revised set: a dropped or swapped-out effect's trial is
+// no longer accepted, and a swapped-in effect's last trial is.
+void mark_final_set(ResidualResult& result) {
+  for (auto it = result.trials.rbegin(); it != result.trials.rend(); ++it) {
+    const bool in_set = std::ranges::find(result.accepted, it->effect) != result.accepted.end();
+    if (it->accepted && !in_set) {
+      it->accepted = false;
+      it->verdict += "; revised out of the set";
+    }
+  }
+  for (const std::string& name : result.accepted) {
+    const bool flagged = std::ranges::any_of(result.trials, [&](const CandidateTrial& t) { return t.accepted && t.effect == name; });
+    if (flagged) continue;
+    for (auto it = result.trials.rbegin(); it != result.trials.rend(); ++it) {
+      if (it->effect != name) continue;
+      it->accepted = true;
+      it->verdict = "accepted in the set revision (" + it->verdict + ")";
+      break;
+    }
+  }
+}
+
+// The groups of candidates the run could not separate, less those whose members ended up in
+// the model together (both were needed, so the run did separate them).
+void name_ambiguities(const AcceptedSet& set, const std::vector<Effects>& groups, ResidualResult& result) {
+  for (const Effects& group : groups) {
+    const model::EffectInfo* kept = nullptr;
+    for (const model::EffectInfo* e : group)
+      if (std::ranges::find(set.effects, e) != set.effects.end() && kept == nullptr) kept = e;
+    if (kept == nullptr) continue;  // the whole group was revised away
+    std::vector<std::string> names{std::string(kept->name)};
+    std::string tests = "to separate ";
+    for (const model::EffectInfo* e : group) {
+      if (e == kept || std::ranges::find(set.effects, e) != set.effects.end()) continue;
+      names.emplace_back(e->name);
+    }
+    if (names.size() < 2) continue;
+    for (std::size_t i = 0; i < names.size(); ++i) tests += (i ? (i + 1 == names.size() ? " and " : ", ") : "") + names[i];
+    tests += ", run: " + std::string(kept->separated_by);
+    for (const model::EffectInfo* e : group)
+      if (e != kept) tests += "; or " + std::string(e->separated_by);
+    result.ambiguous.push_back(std::move(names));
+    result.ambiguity_tests.push_back(std::move(tests));
+  }
 }
 
 }  // namespace
@@ -306,20 +447,38 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
 
   // 4-5. Greedy rounds over the candidates.
   Effects candidates = candidate_effects(options);
-  Effects accepted;
-  model::DamperModel current = base.model;
-  double current_validation = s.validation_rms(current);
+  AcceptedSet set;
+  set.model = base.model;
+  set.validation = s.validation_rms(set.model);
+  std::vector<Effects> ambiguous_groups;
   for (int round_number = 1; !candidates.empty(); ++round_number) {
-    Round round = try_candidates(s, current, current_validation, candidates, round_number);
-    const std::size_t best = judge_round(round, current_validation, options.minimum_reduction);
+    Round round = try_candidates(s, set.model, set.validation, candidates, round_number);
+    const std::size_t best = judge_round(round, set.validation, options.minimum_reduction);
+    if (best < round.trials.size()) {
+      Effects alike = ambiguous_with_winner(round, candidates, best, options.minimum_reduction);
+      Effects rivals;
+      for (std::size_t i = 0; i < round.trials.size(); ++i)
+        if (i != best && (round.trials[i].verdict.starts_with("passes") || round.trials[i].verdict.starts_with("ambiguous")))
+          rivals.push_back(candidates[i]);
+      if (!alike.empty()) {
+        alike.insert(alike.begin(), candidates[best]);
+        ambiguous_groups.push_back(std::move(alike));
+      }
+      set.effects.push_back(candidates[best]);
+      set.rivals.push_back(std::move(rivals));
+      set.validation = round.trials[best].validation_rms;
+      set.model = polish_accepted(s, round.fits[best].model, set.effects, set.validation);
+      candidates.erase(candidates.begin() + static_cast<std::ptrdiff_t>(best));
+    }
     result.trials.insert(result.trials.end(), round.trials.begin(), round.trials.end());
     if (best == round.trials.size()) break;
-    accepted.push_back(candidates[best]);
-    result.accepted.push_back(round.trials[best].effect);
-    current_validation = round.trials[best].validation_rms;
-    current = polish_accepted(s, round.fits[best].model, accepted, current_validation);
-    candidates.erase(candidates.begin() + static_cast<std::ptrdiff_t>(best));
   }
+  // 6. The set revised as a whole, and what the run cannot decide.
+  revise_set(s, set, result);
+  name_ambiguities(set, ambiguous_groups, result);
+  for (const model::EffectInfo* e : set.effects) result.accepted.emplace_back(e->name);
+  mark_final_set(result);
+  const model::DamperModel current = set.model;
 
   result.final_model = current;
   result.evaluations = s.evaluations;

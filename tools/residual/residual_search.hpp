@@ -58,7 +58,13 @@ struct ResidualResult {
   model::DamperModel final_model;
   ResidualRms before;  // base model, whole run
   ResidualRms after;   // with the accepted effects (the base when none)
-  std::vector<std::string> accepted;  // in the order accepted
+  std::vector<std::string> accepted;  // in the order accepted, after the set revision
+  // Candidates the run cannot tell apart: each group led by the one kept in the model, the
+  // others within the threshold of it; and, per group, the run that would separate them.
+  std::vector<std::vector<std::string>> ambiguous;
+  std::vector<std::string> ambiguity_tests;
+  // What the set revision after the greedy rounds did (removals, swaps), one line each.
+  std::vector<std::string> revisions;
   std::vector<CandidateTrial> trials;  // every round's
   ResidualStructure structure_before;
   ResidualStructure structure_after;
@@ -69,9 +75,12 @@ struct ResidualResult {
   double seconds = 0.0;  // wall time of the analysis
 };
 
-// Steps 1-4 of docs/CLOSING-THE-LOOP.md, "mrd-residual": fit the base model, analyse its
+// Steps 1-6 of docs/CLOSING-THE-LOOP.md, "mrd-residual": fit the base model, analyse its
 // residual, fit each candidate effect on the fitting blocks and validate it on the others,
-// accept greedily while the best passes the threshold. Deterministic for the seed.
+// accept greedily while the best passes the threshold, then revise the set (drop an effect
+// whose removal costs less than the threshold, swap one for a rejected candidate that
+// validates better beside the others) and name the candidates the run cannot separate.
+// Deterministic for the seed.
 ResidualResult find_missing_effects(const FitSeries& series, const ResidualOptions& options);
 
 }  // namespace mrd::tools

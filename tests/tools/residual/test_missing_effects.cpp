@@ -4,6 +4,7 @@
 // docs/CLOSING-THE-LOOP.md is tools/residual/detection-study.sh.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <tuple>
 
@@ -61,3 +62,35 @@ TEST(MissingEffects, CoilLagOfAConstantCurrentRunFromItsSwitchOn) {
 }
 
 }  // namespace
+
+// The threshold guards acceptance: the same small gas spring is accepted under a threshold below
+// what it gains and rejected under one above it, with the verdict saying by how much it fell.
+TEST(MissingEffects, ACandidateBelowTheThresholdIsRejected) {
+  const mrd::record::RecordedRun run =
+      residual_testing::simulated_recorded_run(RunProfile::kTelegraph, "1kN", {{"gas_spring", 0.3}}, 4.0);
+  ResidualOptions options;
+  options.threads = 2;
+  options.candidates = {"gas_spring"};
+  const FitSeries series = make_fit_series({run}, {});
+  const ResidualResult lenient = find_missing_effects(series, options);
+  ASSERT_EQ(lenient.accepted, std::vector<std::string>{"gas_spring"}) << residual_summary({run}, lenient);
+  const CandidateTrial& trial = lenient.trials.front();
+  const double gain = 1.0 - trial.validation_rms / trial.validation_before;
+  ASSERT_GT(gain, 0.15);
+  options.minimum_reduction = gain + 0.05;
+  const ResidualResult strict = find_missing_effects(series, options);
+  EXPECT_TRUE(strict.accepted.empty()) << residual_summary({run}, strict);
+  EXPECT_NE(strict.trials.front().verdict.find("below the"), std::string::npos) << strict.trials.front().verdict;
+}
+
+// Two effects in one run: both named, neither revised away, and no ambiguity claimed between
+// effects the run needed together.
+TEST(MissingEffects, APairOfEffectsIsNamedAsASet) {
+  const mrd::record::RecordedRun run = residual_testing::simulated_recorded_run(
+      RunProfile::kTelegraph, "1kN", {{"coil_lag", 2.0}, {"gas_spring", 2.0}}, 4.0);
+  const ResidualResult r = residual_testing::analyse(run);
+  std::vector<std::string> named = r.accepted;
+  std::ranges::sort(named);
+  EXPECT_EQ(named, (std::vector<std::string>{"coil_lag", "gas_spring"})) << residual_summary({run}, r);
+  EXPECT_TRUE(r.ambiguous.empty()) << residual_summary({run}, r);
+}
