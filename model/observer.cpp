@@ -17,13 +17,14 @@ ObserverEstimate Observer::step(const Measurement& m) {
   // One well-predicted branch: with every effect off this is the base model unchanged.
   if (!effects_.active()) [[likely]] return base_force(motion.velocity, magnetics_.apply_current(m.coil_current));
   const PredictedMotion now = effects_.motion(motion, velocity_filter_.acceleration());
-  return force_with_effects(now, magnetics_.apply_current(effects_.coil_current(m.coil_current)));
+  const double flowing = effects_.coil_current(m.coil_current);
+  return force_with_effects(now, magnetics_.apply_current(flowing), flowing);
 }
 
 ObserverEstimate Observer::step_at_induction(const Measurement& m, double B) {
   const PredictedMotion motion = track(m);
   if (!effects_.active()) return base_force(motion.velocity, B);
-  return force_with_effects(effects_.motion(motion, velocity_filter_.acceleration()), B);
+  return force_with_effects(effects_.motion(motion, velocity_filter_.acceleration()), B, m.coil_current);
 }
 
 PredictedMotion Observer::track(const Measurement& m) {
@@ -47,13 +48,16 @@ ObserverEstimate Observer::base_force(double velocity, double B) {
   return estimate_;
 }
 
-ObserverEstimate Observer::force_with_effects(const PredictedMotion& now, double B) {
+ObserverEstimate Observer::force_with_effects(const PredictedMotion& now, double B, double coil_current) {
   estimate_.B = B;
   estimate_.yield_stress = yield_stress_(estimate_.B) * effects_.yield_factor();
   estimate_.velocity = now.velocity;
   const double fluid =
       effects_.fluid_force(damper_, estimate_.yield_stress, now.velocity) * effects_.force_factor(now.displacement);
-  estimate_.force = fluid + effects_.added_force(now.displacement);
+  estimate_.force = fluid + effects_.added_force({.displacement = now.displacement,
+                                                  .velocity = now.velocity,
+                                                  .coil_current = coil_current,
+                                                  .B = B});
   effects_.dissipate(fluid * now.velocity);
   return estimate_;
 }

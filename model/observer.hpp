@@ -74,7 +74,8 @@ class Observer {
   PredictedMotion track(const Measurement& m);
   // Everything after B (Eq. 13, 11-12) with every effect off, and with at least one on.
   ObserverEstimate base_force(double velocity, double B);
-  ObserverEstimate force_with_effects(const PredictedMotion& now, double B);
+  // `coil_current` is the current that flows (after a coil lag) [A].
+  ObserverEstimate force_with_effects(const PredictedMotion& now, double B, double coil_current);
 
   double sample_period_;  // [s]
   JilesAtherton magnetics_;

@@ -47,6 +47,9 @@ int main(int argc, char** argv) {
                "also report Spencer 1997's modified Bouc-Wen model with its published parameters for "
                "Dyke's prototype damper (runs that logged the command voltage)");
   app.add_option("--candidates", candidates_text, "comma-separated candidate effects (default: all)");
+  bool no_discovery = false;
+  app.add_flag("--no-discovery", no_discovery,
+               "do not regress what the named effects leave on the library of terms (docs/CLOSING-THE-LOOP.md)");
   app.add_option("--threshold", options.minimum_reduction,
                  "fraction by which an effect must lower the validation error to be accepted")
       ->capture_default_str();
@@ -58,14 +61,15 @@ int main(int argc, char** argv) {
   app.add_option("--threads", options.threads, "worker threads (0: every core)")->capture_default_str();
   app.add_option("--seed", options.seed, "seed of the swarms")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
+  options.discover = !no_discovery;
 
   const auto config = run_options.load_config();
   if (!config) return 1;
   options.start = config->config.law.damper;
   options.candidates = split_names(candidates_text);
   for (const auto& name : options.candidates) {
-    if (std::find(mrd::model::kEffectNames.begin(), mrd::model::kEffectNames.end(), name) ==
-        mrd::model::kEffectNames.end()) {
+    const mrd::model::EffectInfo* effect = mrd::model::find_effect(name);
+    if (effect == nullptr || !effect->named_candidate) {
       std::fprintf(stderr, "mrd-residual: --candidates: unknown effect '%s'\n", name.c_str());
       return 1;
     }

@@ -84,10 +84,11 @@ double EffectChain::force_factor(double displacement) {
   return factor;
 }
 
-double EffectChain::added_force(double displacement) const {
+double EffectChain::added_force(const ForceState& state) {
   double force = 0.0;
-  for_each_enabled([&]<typename E>(const typename E::Element& e) {
-    if constexpr (requires { E::added_force(e, displacement); }) force += E::added_force(e, displacement);
+  for_each_enabled([&]<typename E>(typename E::Element& e) {
+    if constexpr (requires { E::added_force(e, state.displacement); }) force += E::added_force(e, state.displacement);
+    if constexpr (requires { E::state_force(e, state); }) force += E::state_force(e, state);
   });
   return force;
 }

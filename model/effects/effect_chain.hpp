@@ -19,7 +19,8 @@ namespace mrd::model {
 //   3. yield_factor(), viscosity_factor(): factors on tau_y and c0 (thermal_drift);
 //   4. fluid_force(F_y, sign, c0 v, v): the fluid force in place of Eq. 11-12's (preyield);
 //   5. force_factor(x): a factor on the fluid force (stroke_end_air);
-//   6. added_force(x): a force added to the fluid's (gas_spring);
+//   6. added_force(x) or state_force(x, v, a, I, B): a force added to the fluid's (gas_spring,
+//      learned_terms);
 //   7. dissipate(F_fluid v): the fluid's heating (thermal_drift).
 // A disabled effect's hooks are not called and its state is not touched. Every element exists
 // whether enabled or not, so nothing is allocated and the layout does not depend on the config.
@@ -39,7 +40,7 @@ class EffectChain {
   // Steps 3-4: the fluid force [N] from the yield stress already scaled by yield_factor().
   double fluid_force(const BinghamDamper& damper, double yield_stress, double velocity);
   double force_factor(double displacement);
-  [[nodiscard]] double added_force(double displacement) const;
+  double added_force(const ForceState& state);
   void dissipate(double power);
 
   // The current that flowed in the last step [A], after the lag; the steps above only run,

@@ -26,6 +26,7 @@ EffectInfo info_of() {
   info.separated_by = E::kSeparatedBy;
   info.changes_induction = E::kChangesInduction;
   info.sized_by_dissipated_energy = E::kSizedByDissipatedEnergy;
+  info.named_candidate = E::kNamedCandidate;
   info.search = E::kSearch;
   info.linear = E::kLinear;
   info.enabled = [](const EffectSet& s) { return s.get<E>().enabled; };

@@ -14,6 +14,7 @@
 #include "model/effects/coil_lag.hpp"
 #include "model/effects/effect_traits.hpp"
 #include "model/effects/gas_spring.hpp"
+#include "model/effects/learned_terms.hpp"
 #include "model/effects/preyield_hysteresis.hpp"
 #include "model/effects/sensor_delay.hpp"
 #include "model/effects/stroke_end_air.hpp"
@@ -30,7 +31,7 @@ struct EffectList {
 // in the order the observer applies them (EffectChain). This is the one list of them: every
 // loop over effects, in the config, the observer, the tools and the reports, walks it.
 using AllEffects = EffectList<SensorDelayEffect, CoilLagEffect, ThermalDriftEffect, PreyieldHysteresisEffect,
-                              StrokeEndAirEffect, GasSpringEffect>;
+                              StrokeEndAirEffect, GasSpringEffect, LearnedTermsEffect>;
 
 // Calls f.template operator()<E>() for every effect E of the list, in order.
 template <typename F, typename... E>
@@ -97,6 +98,7 @@ struct EffectInfo {
   std::string_view separated_by;  // the test run that tells it from its look-alikes
   bool changes_induction = false;
   bool sized_by_dissipated_energy = false;
+  bool named_candidate = true;  // searched by mrd-residual and sized by the simulator
   std::span<const SearchCoordinate> search;
   std::span<const LinearColumn> linear;
   bool (*enabled)(const EffectSet&);

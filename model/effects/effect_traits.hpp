@@ -59,6 +59,8 @@ struct EffectTraitsBase {
   static constexpr bool kChangesInduction = false;
   // The simulator sizes it by the energy the clean run dissipates (resize's dissipated_energy).
   static constexpr bool kSizedByDissipatedEnergy = false;
+  // A candidate of the residual search and an effect the simulator can carry.
+  static constexpr bool kNamedCandidate = true;
   // A test run that tells this effect apart from the look-alikes the residual search can
   // confuse it with (reported when a run cannot decide between them).
   static constexpr std::string_view kSeparatedBy = "a run at other amplitudes and frequencies";

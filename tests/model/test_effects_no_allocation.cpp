@@ -27,6 +27,9 @@ mrd::model::DamperModel every_effect_on() {
   e.get<mrd::model::ThermalDriftEffect>().enabled = true;
   e.get<mrd::model::SensorDelayEffect>() = {true, 3.5e-3};
   e.get<mrd::model::StrokeEndAirEffect>().enabled = true;
+  auto& learned = e.get<mrd::model::LearnedTermsEffect>();
+  learned.enabled = true;
+  learned.coefficients.fill(1.0);
   return m;
 }
 

@@ -53,13 +53,25 @@ void predict_force(const model::DamperModel& model, const FitSeries& series,
   if (trace != nullptr && trace->induction().size() == series.size() && trace->serves(model)) {
     const std::vector<double>& B = trace->induction();
     run_observer(model, series, [&](model::Observer& o, std::size_t i) {
-      force[i] = o.step_at_induction({.displacement = series.displacement[i], .velocity = series.velocity[i]}, B[i]).force;
+      force[i] = o.step_at_induction({.displacement = series.displacement[i], .velocity = series.velocity[i], .coil_current = series.current[i]}, B[i]).force;
     });
     return;
   }
   run_observer(model, series, [&](model::Observer& o, std::size_t i) {
     force[i] = o.step({.displacement = series.displacement[i], .velocity = series.velocity[i],
                        .coil_current = series.current[i]}).force;
+  });
+}
+
+void predict_force_and_induction(const model::DamperModel& model, const FitSeries& series,
+                                 std::vector<double>& force, std::vector<double>& B) {
+  force.resize(series.size());
+  B.resize(series.size());
+  run_observer(model, series, [&](model::Observer& o, std::size_t i) {
+    const model::ObserverEstimate e = o.step({.displacement = series.displacement[i], .velocity = series.velocity[i],
+                                              .coil_current = series.current[i]});
+    force[i] = e.force;
+    B[i] = e.B;
   });
 }
 

@@ -36,6 +36,10 @@ class InductionTrace {
 void predict_force(const model::DamperModel& model, const FitSeries& series,
                    std::vector<double>& force, const InductionTrace* trace = nullptr);
 
+// The same, with the induction [T] of each sample.
+void predict_force_and_induction(const model::DamperModel& model, const FitSeries& series,
+                                 std::vector<double>& force, std::vector<double>& B);
+
 // RMS [N] of measured - predicted over the fitting samples, the validation samples and all.
 struct ResidualRms {
   double fitting = 0.0;

@@ -70,6 +70,11 @@ std::string residual_summary(const std::vector<record::RecordedRun>& runs, const
     }
   }
   for (const auto& line : r.revisions) out += "set revision: " + line + "\n";
+  for (const DiscoveredTerm& t : r.discovered) {
+    out += format("discovered: %-22s %11.4g %-10s %s, validation RMS -%.1f%%\n", t.term.c_str(), t.coefficient,
+                  t.unit.c_str(), t.interference ? "interference (taken off the measurement, not the model)" : "damper term, added to the model",
+                  100.0 * t.validation_gain);
+  }
   for (std::size_t g = 0; g < r.ambiguous.size(); ++g) {
     out += "ambiguous:";
     for (const auto& e : r.ambiguous[g]) out += " " + e;
@@ -130,7 +135,14 @@ std::string residual_json(const ResidualResult& r) {
   }
   j << "],\n  \"ambiguity_tests\": [";
   for (std::size_t g = 0; g < r.ambiguity_tests.size(); ++g) j << (g ? ", " : "") << json_string(r.ambiguity_tests[g]);
-  j << "],\n  \"set_revisions\": [";
+  j << "],\n  \"discovered\": [";
+  for (std::size_t g = 0; g < r.discovered.size(); ++g) {
+    const DiscoveredTerm& t = r.discovered[g];
+    j << (g ? "," : "") << "\n    {\"term\": " << json_string(t.term) << ", \"coefficient\": " << json_number(t.coefficient)
+      << ", \"unit\": " << json_string(t.unit) << ", \"kind\": " << json_string(t.interference ? "interference" : "damper")
+      << ", \"validation_gain\": " << json_number(t.validation_gain) << "}";
+  }
+  j << (r.discovered.empty() ? "" : "\n  ") << "],\n  \"set_revisions\": [";
   for (std::size_t g = 0; g < r.revisions.size(); ++g) j << (g ? ", " : "") << json_string(r.revisions[g]);
   j << "],\n  \"unexplained\": " << json_string(r.unexplained) << "\n}\n";
   return j.str();

@@ -160,7 +160,7 @@ Effects candidate_effects(const ResidualOptions& options) {
   for (const model::EffectInfo& e : model::effect_infos()) {
     const bool listed = options.candidates.empty() ||
                         std::ranges::find(options.candidates, e.name) != options.candidates.end();
-    if (listed && !e.enabled(options.start.effects)) out.push_back(&e);
+    if (listed && e.named_candidate && !e.enabled(options.start.effects)) out.push_back(&e);
   }
   return out;
 }
@@ -478,11 +478,30 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   name_ambiguities(set, ambiguous_groups, result);
   for (const model::EffectInfo* e : set.effects) result.accepted.emplace_back(e->name);
   mark_final_set(result);
-  const model::DamperModel current = set.model;
-
+  // 7. Discovery: what the named effects left, regressed on the library of terms; damper terms
+  // join the model (learned_terms), mains lines are taken off the measurement.
+  model::DamperModel current = set.model;
+  std::vector<double> induction;
+  predict_force_and_induction(current, full, result.predicted_after, induction);
+  result.discovery = options.discover;
+  if (options.discover) {
+    const TermDiscovery discovery =
+        discover_terms(full, result.predicted_after, induction, options.minimum_reduction);
+    result.discovered = discovery.terms;
+    for (const auto& group : discovery.ambiguous) {
+      result.ambiguous.push_back(group);
+      result.ambiguity_tests.push_back("to separate the terms " + group.front() + " and " + group[1] +
+                                       ", run: a motion at other frequencies and amplitudes (the terms scale "
+                                       "differently with them)");
+    }
+    if (discovery.has_terms()) {
+      discovery.add_to(current);
+      predict_force(current, full, result.predicted_after);
+    }
+    for (std::size_t i = 0; i < full.size(); ++i) result.predicted_after[i] += discovery.interference[i];
+  }
   result.final_model = current;
   result.evaluations = s.evaluations;
-  predict_force(current, full, result.predicted_after);
   result.after = residual_rms(full, result.predicted_after);
   result.structure_after = analyse_residual(full, residual_of(full, result.predicted_after));
   result.unexplained = describe(result.structure_after);

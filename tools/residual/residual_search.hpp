@@ -10,6 +10,7 @@
 #include "tools/residual/fit_series.hpp"
 #include "tools/residual/model_fit.hpp"
 #include "tools/residual/residual_structure.hpp"
+#include "tools/residual/term_discovery.hpp"
 
 namespace mrd::tools {
 
@@ -21,7 +22,7 @@ struct ResidualOptions {
   // The damper the fit starts from: the config's, or the default. Effects enabled here were
   // declared by the config: they stay in the base model and are not candidates.
   model::DamperModel start;
-  std::vector<std::string> candidates;  // default: every name of model::kEffectNames
+  std::vector<std::string> candidates;  // default: every named candidate effect
   double minimum_reduction = kMinimumValidationReduction;
   // The fits run on every k-th sample of the series, at most this many samples (never below
   // min_fit_rate); every reported error is evaluated on the full series.
@@ -34,6 +35,7 @@ struct ResidualOptions {
   int evaluations_per_parameter = 40;
   unsigned threads = 0;  // 0: every core
   std::uint64_t seed = 1;
+  bool discover = true;  // step 7: regress what the named effects left on the library of terms
 };
 
 struct CandidateTrial {
@@ -63,6 +65,9 @@ struct ResidualResult {
   // others within the threshold of it; and, per group, the run that would separate them.
   std::vector<std::vector<std::string>> ambiguous;
   std::vector<std::string> ambiguity_tests;
+  // Step 7: library terms the regression of the residual accepted (docs/CLOSING-THE-LOOP.md).
+  std::vector<DiscoveredTerm> discovered;
+  bool discovery = true;  // whether step 7 ran
   // What the set revision after the greedy rounds did (removals, swaps), one line each.
   std::vector<std::string> revisions;
   std::vector<CandidateTrial> trials;  // every round's

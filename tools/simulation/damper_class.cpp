@@ -106,9 +106,11 @@ std::optional<DamperClass> find_damper_class(std::string_view name) {
 std::optional<EffectRequest> parse_effect_request(std::string_view text, std::string& error) {
   const auto colon = text.find(':');
   EffectRequest request{std::string(text.substr(0, colon)), 1.0};
-  if (model::find_effect(request.name) == nullptr) {
+  const model::EffectInfo* known = model::find_effect(request.name);
+  if (known == nullptr || !known->named_candidate) {
     error = "unknown effect '" + request.name + "'; known: ";
-    for (const auto name : model::kEffectNames) error += std::string(name) + " ";
+    for (const model::EffectInfo& e : model::effect_infos())
+      if (e.named_candidate) error += std::string(e.name) + " ";
     return std::nullopt;
   }
   if (colon == std::string_view::npos) return request;

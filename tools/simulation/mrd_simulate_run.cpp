@@ -17,6 +17,7 @@ void list_effects() {
     const auto c = *mrd::tools::find_damper_class(name);
     std::printf("%s class, size 1 (small = 0.5, large = 2 times it):\n", name);
     for (const mrd::model::EffectInfo& e : mrd::model::effect_infos()) {
+      if (!e.named_candidate) continue;
       std::printf("  %-20s %s\n", std::string(e.name).c_str(), e.size_summary(c.nominal_effects).c_str());
     }
   }

@@ -1,0 +1,84 @@
+// Discovery of terms outside the named effects: a force the test adds to a clean simulated run
+// by its own closed form (not through the model) is found with its coefficient, a mains line is
+// reported as interference and kept out of the model, and a clean run gains no term.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "tests/tools/residual/residual_test_support.hpp"
+#include "tools/residual/residual_report.hpp"
+
+namespace {
+
+using namespace mrd::tools;
+
+const DiscoveredTerm* find_term(const ResidualResult& r, const std::string& name) {
+  for (const DiscoveredTerm& t : r.discovered)
+    if (t.term == name) return &t;
+  return nullptr;
+}
+
+// The run with `extra(t, x, v, a)` [N] added to its force column; a by central differences of
+// the recorded velocity, independent of the tool's zero-phase derivative.
+template <typename Extra>
+mrd::record::RecordedRun with_added_force(mrd::record::RecordedRun run, Extra extra) {
+  const std::size_t n = run.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t lo = i == 0 ? 0 : i - 1, hi = i + 1 == n ? i : i + 1;
+    const double a = (run.velocity[hi] - run.velocity[lo]) / (run.time[hi] - run.time[lo]);
+    run.force[i] += extra(run.time[i], run.displacement[i], run.velocity[i], a);
+  }
+  return run;
+}
+
+TEST(TermDiscovery, AMovingMassIsFoundWithItsMass) {
+  const auto run = with_added_force(
+      residual_testing::simulated_recorded_run(RunProfile::kTelegraph, "1kN", {}, 4.0),
+      [](double, double, double, double a) { return 50.0 * a; });
+  const ResidualResult r = residual_testing::analyse(run);
+  EXPECT_TRUE(r.accepted.empty()) << residual_summary({run}, r);
+  const DiscoveredTerm* mass = find_term(r, "acceleration");
+  ASSERT_NE(mass, nullptr) << residual_summary({run}, r);
+  EXPECT_FALSE(mass->interference);
+  EXPECT_EQ(mass->unit, "kg");
+  EXPECT_NEAR(mass->coefficient, 50.0, 2.5);
+  EXPECT_GT(r.final_model.effects.get<mrd::model::LearnedTermsEffect>()[mrd::model::LearnedTerm::kAcceleration], 45.0);
+  EXPECT_LT(r.after.all, 0.1 * r.before.all) << residual_summary({run}, r);
+}
+
+TEST(TermDiscovery, MainsHumIsInterferenceAndStaysOutOfTheModel) {
+  const auto run = with_added_force(
+      residual_testing::simulated_recorded_run(RunProfile::kTable4, "50kN", {}, 4.0),
+      [](double t, double, double, double) { return 300.0 * std::sin(2.0 * std::numbers::pi * 50.0 * t + 0.3); });
+  const ResidualResult r = residual_testing::analyse(run);
+  const DiscoveredTerm* hum = find_term(r, "line_50Hz");
+  ASSERT_NE(hum, nullptr) << residual_summary({run}, r);
+  EXPECT_TRUE(hum->interference);
+  EXPECT_NEAR(hum->coefficient, 300.0, 15.0);
+  EXPECT_FALSE(r.final_model.effects.get<mrd::model::LearnedTermsEffect>().enabled) << residual_summary({run}, r);
+  const std::string json = residual_json(r);
+  EXPECT_NE(json.find("{\"term\": \"line_50Hz\""), std::string::npos) << json;
+  EXPECT_NE(json.find("\"kind\": \"interference\""), std::string::npos) << json;
+}
+
+TEST(TermDiscovery, ACleanRunGainsNoTerm) {
+  const auto run = residual_testing::simulated_recorded_run(RunProfile::kTelegraph, "1kN", {}, 4.0);
+  const ResidualResult r = residual_testing::analyse(run);
+  EXPECT_TRUE(r.discovered.empty()) << residual_summary({run}, r);
+  EXPECT_FALSE(r.final_model.effects.get<mrd::model::LearnedTermsEffect>().enabled);
+}
+
+TEST(TermDiscovery, TheLibraryNamesEveryDocumentedTerm) {
+  const auto names = term_library(1000.0);
+  for (const char* name : {"displacement", "displacement_cubed", "velocity", "velocity_abs_velocity", "sign_velocity",
+                           "acceleration", "current_velocity", "field_velocity", "line_50Hz", "line_60Hz",
+                           "line_50Hz_h2", "line_60Hz_h3"})
+    EXPECT_NE(std::ranges::find(names, name), names.end()) << name;
+  // A 200 Hz run resolves no harmonic above 80 Hz.
+  const auto slow = term_library(200.0);
+  EXPECT_EQ(std::ranges::find(slow, "line_50Hz_h2"), slow.end());
+}
+
+}  // namespace

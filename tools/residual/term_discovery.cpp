@@ -1,0 +1,286 @@
+#include "tools/residual/term_discovery.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "model/effects/learned_terms.hpp"
+#include "tools/replay/zero_phase_velocity.hpp"
+#include "tools/residual/model_fit.hpp"
+#include "tools/text_format.hpp"
+
+namespace mrd::tools {
+
+namespace {
+
+// Mains lines and their harmonics: each a sine and a cosine column, reported as one amplitude.
+struct MainsLine {
+  std::string name;
+  double frequency;  // [Hz]
+};
+
+std::vector<MainsLine> mains_lines(double sample_rate) {
+  std::vector<MainsLine> lines;
+  for (const double mains : {50.0, 60.0}) {
+    for (int harmonic = 1; harmonic <= 3; ++harmonic) {
+      const double f = mains * harmonic;
+      if (f > 0.4 * sample_rate) continue;  // not resolved at this rate
+      lines.push_back({format("line_%.0fHz", mains) + (harmonic > 1 ? format("_h%d", harmonic) : ""), f});
+    }
+  }
+  return lines;
+}
+
+// The acceleration from the velocity, zero-phase (the same derivative the velocity had), per run.
+std::vector<double> zero_phase_acceleration(const FitSeries& s) {
+  std::vector<double> a(s.size(), 0.0);
+  for (std::size_t r = 0; r < s.run_starts.size(); ++r) {
+    const std::size_t begin = s.run_starts[r];
+    const std::size_t end = r + 1 < s.run_starts.size() ? s.run_starts[r + 1] : s.size();
+    if (end - begin < 8) continue;
+    const double rate = 1.0 / s.run_periods[r];
+    const std::vector<double> x(s.displacement.begin() + static_cast<std::ptrdiff_t>(begin),
+                                s.displacement.begin() + static_cast<std::ptrdiff_t>(end));
+    const std::span<const double> v(s.velocity.data() + begin, end - begin);
+    const std::vector<double> run_a = zero_phase_velocity(v, rate, motion_velocity_cutoff(x, rate));
+    std::copy(run_a.begin(), run_a.end(), a.begin() + static_cast<std::ptrdiff_t>(begin));
+  }
+  return a;
+}
+
+// One library entry: its columns in the regression and how it is reported.
+struct LibraryTerm {
+  std::string name;
+  std::string unit;
+  int sign = 0;        // +1: the coefficient must be >= 0
+  bool interference = false;
+  int first_column = 0;
+  int columns = 1;     // 2 for a mains line (sine, cosine)
+};
+
+struct Library {
+  std::vector<LibraryTerm> terms;
+  std::vector<MainsLine> lines;
+  int columns = 0;
+};
+
+// Columns 0 and 1 are the model's own linear terms, in every fit (the force scale on the predicted
+// force, an extra viscous v): a term that joins can take back what the base fit had absorbed of
+// it (a field-dependent viscosity partly hides in c0), instead of fitting only what is left.
+constexpr int kBaseColumns = 2;
+
+Library make_library(double sample_rate) {
+  Library lib;
+  lib.columns = kBaseColumns;
+  for (const model::LearnedTermInfo& t : model::kLearnedTerms) {
+    lib.terms.push_back({std::string(t.name), std::string(t.unit), t.sign, false, lib.columns, 1});
+    ++lib.columns;
+  }
+  lib.lines = mains_lines(sample_rate);
+  for (const MainsLine& line : lib.lines) {
+    lib.terms.push_back({line.name, "N", 0, true, lib.columns, 2});
+    lib.columns += 2;
+  }
+  return lib;
+}
+
+// Each column's value at sample i.
+void fill_row(const Library& lib, const FitSeries& s, const std::vector<double>& predicted, const std::vector<double>& B,
+              const std::vector<double>& a, double time, std::size_t i, Eigen::VectorXd& row) {
+  row[0] = predicted[i];
+  row[1] = s.velocity[i];
+  const model::ForceState state{.displacement = s.displacement[i],
+                                .velocity = s.velocity[i],
+                                .acceleration = a[i],
+                                .coil_current = s.current[i],
+                                .B = B[i]};
+  for (std::size_t k = 0; k < model::kLearnedTermCount; ++k)
+    row[kBaseColumns + static_cast<Eigen::Index>(k)] =
+        model::learned_term_value(static_cast<model::LearnedTerm>(k), state);
+  Eigen::Index c = kBaseColumns + static_cast<Eigen::Index>(model::kLearnedTermCount);
+  for (const MainsLine& line : lib.lines) {
+    const double phase = 2.0 * std::numbers::pi * line.frequency * time;
+    row[c++] = std::sin(phase);
+    row[c++] = std::cos(phase);
+  }
+}
+
+// The regression's sufficient statistics, on the fitting and on the validation samples.
+struct Moments {
+  Eigen::MatrixXd gram;  // X' X
+  Eigen::VectorXd cross;  // X' r
+  double energy = 0.0;   // r' r
+  std::size_t count = 0;
+};
+
+struct SubsetFit {
+  Eigen::VectorXd coefficients;  // over the subset's columns
+  double validation_rms = 0.0;
+  bool physical = true;
+};
+
+std::vector<int> columns_of(const Library& lib, const std::vector<std::size_t>& subset) {
+  std::vector<int> cols{0, 1};
+  for (const std::size_t t : subset)
+    for (int c = 0; c < lib.terms[t].columns; ++c) cols.push_back(lib.terms[t].first_column + c);
+  return cols;
+}
+
+SubsetFit fit_subset(const Library& lib, const std::vector<std::size_t>& subset, const Moments& fit,
+                     const Moments& validation, const Eigen::VectorXd& scale) {
+  const std::vector<int> cols = columns_of(lib, subset);
+  const auto n = static_cast<Eigen::Index>(cols.size());
+  Eigen::MatrixXd g(n, n), gv(n, n);
+  Eigen::VectorXd b(n), bv(n);
+  for (Eigen::Index r = 0; r < n; ++r) {
+    b[r] = fit.cross[cols[r]] / scale[cols[r]];
+    bv[r] = validation.cross[cols[r]] / scale[cols[r]];
+    for (Eigen::Index c = 0; c < n; ++c) {
+      g(r, c) = fit.gram(cols[r], cols[c]) / (scale[cols[r]] * scale[cols[c]]);
+      gv(r, c) = validation.gram(cols[r], cols[c]) / (scale[cols[r]] * scale[cols[c]]);
+    }
+  }
+  for (Eigen::Index r = 0; r < n; ++r) g(r, r) += 1e-12 * (g(r, r) + 1.0);
+  SubsetFit out;
+  const Eigen::VectorXd scaled = g.ldlt().solve(b);
+  const double sse = std::max(validation.energy - 2.0 * scaled.dot(bv) + scaled.dot(gv * scaled), 0.0);
+  out.validation_rms = std::sqrt(sse / static_cast<double>(std::max<std::size_t>(validation.count, 1)));
+  out.coefficients.resize(n);
+  for (Eigen::Index r = 0; r < n; ++r) out.coefficients[r] = scaled[r] / scale[cols[r]];
+  Eigen::Index c = kBaseColumns;
+  if (out.coefficients[0] < 0.0) out.physical = false;  // a negative force scale
+  for (const std::size_t t : subset) {
+    if (lib.terms[t].sign > 0 && out.coefficients[c] < 0.0) out.physical = false;
+    c += lib.terms[t].columns;
+  }
+  return out;
+}
+
+double time_of(const FitSeries& s, std::size_t i, std::size_t& run) {
+  while (run + 1 < s.run_starts.size() && i >= s.run_starts[run + 1]) ++run;
+  return static_cast<double>(i - s.run_starts[run]) * s.run_periods[run];
+}
+
+}  // namespace
+
+std::vector<std::string> term_library(double sample_rate) {
+  std::vector<std::string> names;
+  for (const LibraryTerm& t : make_library(sample_rate).terms) names.push_back(t.name);
+  return names;
+}
+
+void TermDiscovery::add_to(model::DamperModel& model) const {
+  if (terms.empty()) return;
+  LinearTerms base;
+  base.force_scale = force_scale;
+  base.extra_viscous = extra_viscous;
+  model = apply_linear_terms(model, base);
+  auto& learned = model.effects.get<model::LearnedTermsEffect>();
+  for (const DiscoveredTerm& t : terms) {
+    if (t.interference) continue;
+    for (std::size_t k = 0; k < model::kLearnedTermCount; ++k)
+      if (model::kLearnedTerms[k].name == t.term) learned.coefficients[k] += t.coefficient;
+    learned.enabled = true;
+  }
+}
+
+TermDiscovery discover_terms(const FitSeries& s, const std::vector<double>& predicted, const std::vector<double>& B,
+                             double threshold, std::size_t max_terms) {
+  TermDiscovery out;
+  out.interference.assign(s.size(), 0.0);
+  if (s.size() < 16 || s.run_periods.empty()) return out;
+  const Library lib = make_library(1.0 / s.sample_period);
+  const std::vector<double> a = zero_phase_acceleration(s);
+  Moments moments[2];
+  for (Moments& m : moments) {
+    m.gram = Eigen::MatrixXd::Zero(lib.columns, lib.columns);
+    m.cross = Eigen::VectorXd::Zero(lib.columns);
+  }
+  Eigen::VectorXd row(lib.columns);
+  std::size_t run = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const double t = time_of(s, i, run);
+    if (s.validation[i] > 1) continue;  // excluded by the screening
+    fill_row(lib, s, predicted, B, a, t, i, row);
+    const double r = s.force[i];
+    Moments& m = moments[s.validation[i]];
+    m.gram.selfadjointView<Eigen::Lower>().rankUpdate(row);
+    m.cross += r * row;
+    m.energy += r * r;
+    ++m.count;
+  }
+  for (Moments& m : moments) m.gram = m.gram.selfadjointView<Eigen::Lower>();
+  if (moments[0].count < 8 || moments[1].count < 8) return out;
+  // Columns scaled to unit RMS on the fitting samples, for the conditioning of the solve.
+  Eigen::VectorXd scale(lib.columns);
+  for (Eigen::Index c = 0; c < lib.columns; ++c)
+    scale[c] = std::max(std::sqrt(moments[0].gram(c, c) / static_cast<double>(moments[0].count)), 1e-300);
+
+  std::vector<std::size_t> chosen;
+  std::vector<double> gains;
+  SubsetFit accepted_fit = fit_subset(lib, chosen, moments[0], moments[1], scale);
+  double current = accepted_fit.validation_rms;
+  while (chosen.size() < max_terms) {
+    std::size_t best = lib.terms.size();
+    SubsetFit best_fit;
+    for (std::size_t t = 0; t < lib.terms.size(); ++t) {
+      if (std::ranges::find(chosen, t) != chosen.end()) continue;
+      if (moments[0].gram(lib.terms[t].first_column, lib.terms[t].first_column) <= 0.0) continue;  // all zero
+      std::vector<std::size_t> trial = chosen;
+      trial.push_back(t);
+      SubsetFit fit = fit_subset(lib, trial, moments[0], moments[1], scale);
+      if (!fit.physical) continue;
+      if (best == lib.terms.size() || fit.validation_rms < best_fit.validation_rms) {
+        best = t;
+        best_fit = std::move(fit);
+      }
+    }
+    if (best == lib.terms.size()) break;
+    const double gain = 1.0 - best_fit.validation_rms / std::max(current, 1e-300);
+    if (gain < threshold) break;
+    // Terms that would have done as well: the run cannot tell them from the one chosen (on a
+    // single sine, a mass and a negative stiffness are the same column).
+    std::vector<std::string> alike{lib.terms[best].name};
+    for (std::size_t t = 0; t < lib.terms.size(); ++t) {
+      if (t == best || std::ranges::find(chosen, t) != chosen.end()) continue;
+      std::vector<std::size_t> trial = chosen;
+      trial.push_back(t);
+      const SubsetFit other = fit_subset(lib, trial, moments[0], moments[1], scale);
+      const bool passes = other.physical && 1.0 - other.validation_rms / std::max(current, 1e-300) >= threshold;
+      if (passes && 1.0 - best_fit.validation_rms / std::max(other.validation_rms, 1e-300) < threshold)
+        alike.push_back(lib.terms[t].name);
+    }
+    if (alike.size() > 1) out.ambiguous.push_back(std::move(alike));
+    chosen.push_back(best);
+    gains.push_back(gain);
+    current = best_fit.validation_rms;
+    accepted_fit = std::move(best_fit);
+  }
+
+  if (chosen.empty()) return out;
+  out.force_scale = accepted_fit.coefficients[0];
+  out.extra_viscous = accepted_fit.coefficients[1];
+  Eigen::Index c = kBaseColumns;
+  for (std::size_t k = 0; k < chosen.size(); ++k) {
+    const LibraryTerm& term = lib.terms[chosen[k]];
+    DiscoveredTerm d{term.name, accepted_fit.coefficients[c], term.unit, term.interference, gains[k]};
+    if (term.interference) {
+      const double sine = accepted_fit.coefficients[c], cosine = accepted_fit.coefficients[c + 1];
+      d.coefficient = std::hypot(sine, cosine);
+      const double f =
+          lib.lines[static_cast<std::size_t>(term.first_column - kBaseColumns - static_cast<int>(model::kLearnedTermCount)) / 2]
+              .frequency;
+      std::size_t line_run = 0;
+      for (std::size_t i = 0; i < s.size(); ++i) {
+        const double phase = 2.0 * std::numbers::pi * f * time_of(s, i, line_run);
+        out.interference[i] += sine * std::sin(phase) + cosine * std::cos(phase);
+      }
+    }
+    out.terms.push_back(std::move(d));
+    c += term.columns;
+  }
+  return out;
+}
+
+}  // namespace mrd::tools

@@ -1,0 +1,48 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "model/damper_model.hpp"
+#include "tools/residual/fit_series.hpp"
+
+namespace mrd::tools {
+
+// A term of the library that the residual regression accepted.
+struct DiscoveredTerm {
+  std::string term;               // "acceleration", "line_50Hz", ... (docs/CLOSING-THE-LOOP.md)
+  double coefficient = 0.0;       // SI; a mains line's amplitude [N]
+  std::string unit;
+  bool interference = false;      // describes the measurement (mains), not the damper
+  double validation_gain = 0.0;   // fraction of the validation RMS it removed when it joined
+};
+
+struct TermDiscovery {
+  std::vector<DiscoveredTerm> terms;  // in the order accepted
+  // The mains lines' fitted sum per sample of the series [N]: subtracted from the measured
+  // force before the error after, never part of the model.
+  std::vector<double> interference;
+  // Terms the run could not tell apart, each group led by the one chosen.
+  std::vector<std::vector<std::string>> ambiguous;
+  // The model's own linear terms refitted beside the accepted ones (model_fit's LinearTerms).
+  double force_scale = 1.0;
+  double extra_viscous = 0.0;  // [N s/m]
+
+  [[nodiscard]] bool has_terms() const { return !terms.empty(); }
+  // The refitted linear terms and the damper terms (as the model's learned_terms effect,
+  // switched on) applied to `model`.
+  void add_to(model::DamperModel& model) const;
+};
+
+// Step 7 of mrd-residual: forward sparse regression of the residual (force - predicted) on the
+// library of physical terms, fitted on the fitting blocks and judged on the validation blocks:
+// the term that lowers the validation RMS most joins while it lowers it by at least
+// `threshold` and every coefficient keeps its physical sign; at most `max_terms`. `B` is the
+// model's induction per sample [T].
+TermDiscovery discover_terms(const FitSeries& series, const std::vector<double>& predicted,
+                             const std::vector<double>& B, double threshold, std::size_t max_terms = 4);
+
+// The library's term names, damper terms first, then the mains lines the series' rate resolves.
+std::vector<std::string> term_library(double sample_rate);
+
+}  // namespace mrd::tools
