@@ -43,14 +43,18 @@ add("50kN-table4", "field-viscosity-50kN-table4",
 # A cubic bump stop: 100 N at the 20 mm stroke.
 add("1kN-table4", "bump-stop-1kN-table4", lambda r, c, a: 100.0 * (r[c["displacement_mm"]] / 20.0) ** 3)
 PY
-echo "| run | added | named | RMS before [N] | RMS after [N] | what remains |"
-echo "|---|---|---|---:|---:|---|"
+echo "| run | added | named | discovered | RMS before [N] | RMS after [N] | what remains |"
+echo "|---|---|---|---|---:|---:|---|"
 for name in inertia-1kN-telegraph inertia-50kN-table4 friction-1kN-telegraph hum-50kN-table4 \
             field-viscosity-50kN-table4 bump-stop-1kN-table4; do
   "$build/tools/mrd-residual" "$out/$name.csv" --json "$out/$name.json" > "$out/$name.txt"
   python3 - "$out/$name.json" "$name" <<'PY'
 import json, sys
 r = json.load(open(sys.argv[1]))
-print(f"| {sys.argv[2]} | | {', '.join(r['effects']) or 'none'} | {r['rms_before_N']:.4g} | {r['rms_after_N']:.4g} | {r['unexplained']} |")
+terms = ', '.join(f"{t['term']} {t['coefficient']:.4g} {t['unit']}" + (" (interference)" if t['kind'] == 'interference' else "")
+                  for t in r.get('discovered', [])) or 'none'
+alike = '; '.join(' ~ '.join(g) for g in r.get('ambiguous', []))
+if alike: terms += f"; ambiguous: {alike}"
+print(f"| {sys.argv[2]} | | {', '.join(r['effects']) or 'none'} | {terms} | {r['rms_before_N']:.4g} | {r['rms_after_N']:.4g} | {r['unexplained']} |")
 PY
 done
