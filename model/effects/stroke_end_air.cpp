@@ -10,12 +10,19 @@ ValidationReport validate(const StrokeEndAirParams& p) {
   report.require_positive("threshold", p.threshold);
   report.require_in_range("depth", p.depth, 0.0, 1.0, false);
   report.require_positive("length", p.length);
+  report.require_non_negative("dead_travel", p.dead_travel);
+  report.require_in_range("ramp_share", p.ramp_share, 0.0, 1.0, false);
   report.require_non_negative("reversal_travel", p.reversal_travel);
   return report;
 }
 
 StrokeEndAir::StrokeEndAir(const StrokeEndAirParams& p)
-    : threshold_(p.threshold), depth_(p.depth), inv_length_(1.0 / p.length), reversal_travel_(p.reversal_travel) {}
+    : threshold_(p.threshold),
+      depth_(p.depth),
+      inv_length_(1.0 / p.length),
+      dead_travel_(p.dead_travel),
+      ramp_share_(p.ramp_share),
+      reversal_travel_(p.reversal_travel) {}
 
 void StrokeEndAir::reset() {
   started_ = false;
@@ -49,7 +56,14 @@ double StrokeEndAir::step(double x) {
     direction_ = -direction_;
     extreme_ = x;
   }
-  factor_ = armed_ ? 1.0 - depth_ * std::exp(-std::fabs(x - reversal_) * inv_length_) : 1.0;
+  if (!armed_) {
+    factor_ = 1.0;
+    return factor_;
+  }
+  const double u = std::max(std::fabs(x - reversal_) - dead_travel_, 0.0) * inv_length_;  // in lengths
+  const double exponential = ramp_share_ < 1.0 ? std::exp(-u) : 0.0;
+  const double ramp = std::max(1.0 - u, 0.0);
+  factor_ = 1.0 - depth_ * ((1.0 - ramp_share_) * exponential + ramp_share_ * ramp);
   return factor_;
 }
 
@@ -59,9 +73,10 @@ std::optional<std::string> StrokeEndAirEffect::implausible(const Params& p, cons
 }
 
 std::string StrokeEndAirEffect::size_summary(const Params& p) {
-  char text[96];
-  std::snprintf(text, sizeof text, "depth %.2f after reversals beyond %.3g mm, recovery %.3g mm", p.depth,
-                p.threshold * 1e3, p.length * 1e3);
+  char text[160];
+  std::snprintf(text, sizeof text, "depth %.2f after reversals beyond %.3g mm, recovery %.3g mm%s", p.depth,
+                p.threshold * 1e3, p.length * 1e3,
+                p.dead_travel > 0.0 || p.ramp_share > 0.0 ? " (with dead travel / ramp)" : "");
   return text;
 }
 

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -66,6 +67,28 @@ TEST(StrokeEndAir, ValidateNamesTheBadField) {
   const auto report = validate(p);
   ASSERT_FALSE(report.ok());
   EXPECT_EQ(report.issues().front().field, "depth");
+}
+
+// The free recovery shape: no recovery over the dead travel, then a linear ramp that is whole
+// `length` later (ramp share 1), or halfway between ramp and exponential (0.5).
+TEST(StrokeEndAir, DeadTravelThenARampOrABlend) {
+  for (const double share : {1.0, 0.5}) {
+    auto p = stroke_end_on();
+    p.dead_travel = 3e-3;
+    p.ramp_share = share;
+    StrokeEndAir air(p);
+    for (double x = 0.0; x <= 0.040 + 1e-12; x += 1e-4) air.step(x);
+    for (double x = 0.040 - 1e-4; x > 0.020; x -= 1e-4) {
+      const double f = air.step(x);
+      const double s = 0.040 - x;
+      if (s < 2e-4) continue;  // before the reversal is confirmed
+      const double u = std::max(s - 3e-3, 0.0) / 5e-3;
+      const double shape = share * std::max(1.0 - u, 0.0) + (1.0 - share) * std::exp(-u);
+      ASSERT_NEAR(f, 1.0 - 0.9 * shape, 1e-9) << "share " << share << " at s = " << s;
+      if (s < 3e-3) ASSERT_NEAR(f, 0.1, 1e-9);
+      if (share == 1.0 && s > 8.1e-3) ASSERT_EQ(f, 1.0);
+    }
+  }
 }
 
 }  // namespace
