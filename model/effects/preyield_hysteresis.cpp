@@ -68,13 +68,10 @@ double PreyieldHysteresis::step(double velocity) {
 
 void PreyieldHysteresisEffect::apply(Params& p, std::span<const double> x, const RunScales&) {
   const double z_max = std::pow(10.0, x[1]);
-  const double ratio = x[2];  // gamma / beta, > -1 keeps z bounded
   p.enabled = true;
   p.A = 1.0;
   p.n = 2.0;
-  // z_max = (A / (beta + gamma))^(1/n)
-  p.beta = 1.0 / ((1.0 + ratio) * std::pow(z_max, p.n));
-  p.gamma = ratio * p.beta;
+  p.beta = p.gamma = 1.0 / (2.0 * z_max * z_max);
   p.stiffness = 0.0;
   p.yield_fraction = x[0];
 }

@@ -114,16 +114,11 @@ struct PreyieldHysteresisEffect : EffectTraitsBase<PreyieldHysteresisParams> {
                        [](const RunScales&) { return 1.0; }},
       SearchCoordinate{"log10 z_max [m]",
                        [](const RunScales& s) { return std::log10(std::max(1e-6, 2e-3 * s.stroke)); },
-                       [](const RunScales& s) { return std::log10(0.2 * s.stroke); }},
-      // The loop's shape: how it unloads (gamma / beta; 1 is Spencer's, lower values round the
-      // loop). n stays 2: a free n takes the std::pow path and made the measured-data fits
-      // 2.5-3.4x slower for 1-3 % less error.
-      SearchCoordinate{"gamma / beta", [](const RunScales&) { return -0.8; }, [](const RunScales&) { return 1.0; }}};
+                       [](const RunScales& s) { return std::log10(0.2 * s.stroke); }}};
   static void apply(Params& p, std::span<const double> x, const RunScales&);
   static void coordinates(const Params& p, const RunScales&, std::span<double> x) {
     x[0] = p.yield_fraction;
     x[1] = std::log10(p.z_max());
-    x[2] = p.beta > 0.0 ? p.gamma / p.beta : 1.0;
   }
   static void scale_force(Params& p, double a) { p.stiffness *= a; }
   static std::optional<std::string> implausible(const Params& p, const RunScales&);
@@ -131,7 +126,6 @@ struct PreyieldHysteresisEffect : EffectTraitsBase<PreyieldHysteresisParams> {
   static void report(const Params& p, Visitor&& v) {
     v("yield_fraction", p.yield_fraction);
     v("z_max_m", p.z_max());
-    v("gamma_over_beta", p.beta > 0.0 ? p.gamma / p.beta : 1.0);
   }
   static void resize(Params& p, double size, double /*dissipated_energy*/) {
     p.enabled = true;
