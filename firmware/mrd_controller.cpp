@@ -1,5 +1,5 @@
 // mrd-controller: the MR damper controller. Reads a TOML config (or the embedded default, which
-// runs the simulated rig on the mock HAL), runs the fixed-rate loop on a real-time thread, and
+// runs on the mock HAL with its LVDT on a sine), runs the fixed-rate loop on a real-time thread, and
 // prints loop statistics and supervisor transitions at exit and on SIGUSR1.
 #include <CLI/CLI.hpp>
 #include <filesystem>
@@ -26,7 +26,7 @@ int print_report(const mrd::config::LoadedConfig& loaded, const std::string& nam
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"mrd-controller: real-time MR damper controller (default: the simulated rig)"};
+  CLI::App app{"mrd-controller: real-time MR damper controller (default: the mock HAL)"};
   std::string config_path;
   std::string check_path;
   std::string telemetry_path;
@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
   app.add_option("--telemetry", telemetry_path, "write telemetry CSV here (overrides telemetry.path, and telemetry.directory with its directory)");
   app.add_option("--rate", rate, "control rate [Hz] (overrides loop.rate)")->check(CLI::Range(10.0, 20000.0));
   app.add_flag("--bench", options.bench,
-               "loop benchmark: mock HAL and simulated rig whatever the config says, no telemetry, "
+               "loop benchmark: mock HAL and its sine whatever the config says, no telemetry, "
                "latency histograms printed");
   app.add_flag("--print-default-config", print_default, "print the embedded default config and exit");
   CLI11_PARSE(app, argc, argv);
