@@ -47,6 +47,9 @@ int main(int argc, char** argv) {
                "also report Spencer 1997's modified Bouc-Wen model with its published parameters for "
                "Dyke's prototype damper (runs that logged the command voltage)");
   app.add_option("--candidates", candidates_text, "comma-separated candidate effects (default: all)");
+  bool no_screening = false;
+  app.add_flag("--no-screening", no_screening,
+               "fit every sample, even those screening finds no damper produced (clipped, stuck, spikes, gaps)");
   bool no_discovery = false;
   app.add_flag("--no-discovery", no_discovery,
                "do not regress what the named effects leave on the library of terms (docs/CLOSING-THE-LOOP.md)");
@@ -62,6 +65,7 @@ int main(int argc, char** argv) {
   app.add_option("--seed", options.seed, "seed of the swarms")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   options.discover = !no_discovery;
+  series_options.screen = !no_screening;
 
   const auto config = run_options.load_config();
   if (!config) return 1;

@@ -40,8 +40,21 @@ FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const Fi
       std::all_of(runs.begin(), runs.end(), [](const record::RecordedRun& r) { return r.has_temperature(); });
   FitSeries s;
   const int blocks = std::max(options.blocks, 2);
-  for (const record::RecordedRun& run : runs) {
-    check_run(run, options);
+  for (const record::RecordedRun& recorded : runs) {
+    check_run(recorded, options);
+    // Screened: the faulted spans set aside, the model's inputs bridged across them.
+    Screening screening;
+    record::RecordedRun bridged;
+    const record::RecordedRun* source = &recorded;
+    if (options.screen) {
+      screening = screen_run(recorded, options.screening);
+      if (screening.excluded_samples > 0) {
+        bridged = recorded;
+        bridge_excluded_inputs(bridged, screening);
+        source = &bridged;
+      }
+    }
+    const record::RecordedRun& run = *source;
     const double rate = run.sample_rate;
     s.sample_period = s.run_periods.empty() ? 1.0 / rate : std::min(s.sample_period, 1.0 / rate);
     s.run_periods.push_back(1.0 / rate);
@@ -70,10 +83,32 @@ FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const Fi
       s.force.push_back(run.force[i]);
       if (with_temperature) s.temperature.push_back(run.temperature[i]);
       const auto block = static_cast<int>((i * static_cast<std::size_t>(blocks)) / n);
-      s.validation.push_back(held_out[static_cast<std::size_t>(block)]);
+      s.validation.push_back(screening.excluded.empty() || !screening.excluded[i]
+                                 ? held_out[static_cast<std::size_t>(block)]
+                                 : FitSeries::kExcluded);
     }
+    if (options.screen) s.screenings.emplace_back(recorded.name, std::move(screening));
   }
   return s;
+}
+
+FitSeries without_excluded(const FitSeries& series, const std::vector<double>& per_sample,
+                           std::vector<double>& kept_values) {
+  FitSeries out;
+  out.notes = series.notes;
+  out.sample_period = series.sample_period;
+  kept_values.clear();
+  for (std::size_t r = 0; r < series.run_starts.size(); ++r) {
+    const std::size_t end = r + 1 < series.run_starts.size() ? series.run_starts[r + 1] : series.size();
+    out.run_starts.push_back(out.size());
+    out.run_periods.push_back(series.run_periods[r]);
+    for (std::size_t i = series.run_starts[r]; i < end; ++i) {
+      if (series.validation[i] == FitSeries::kExcluded) continue;
+      append_sample(out, series, i);
+      kept_values.push_back(per_sample[i]);
+    }
+  }
+  return out;
 }
 
 std::size_t decimation_factor(const FitSeries& series, std::size_t max_samples) {

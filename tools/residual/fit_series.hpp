@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "record/recorded_run.hpp"
+#include "tools/residual/screening.hpp"
 
 namespace mrd::tools {
 
@@ -22,8 +23,17 @@ struct FitSeries {
   std::vector<double> temperature;   // [degC], empty when no run recorded it
   // The first sample of each run: the model starts again from a demagnetised core there.
   std::vector<std::size_t> run_starts;
-  // 1 for samples held out for validation, 0 for those the fits may use.
+  // kFitting for samples the fits may use, kValidation for those held out, kExcluded for those
+  // the screening set aside (no fit and no error counts them).
   std::vector<std::uint8_t> validation;
+  static constexpr std::uint8_t kFitting = 0, kValidation = 1, kExcluded = 2;
+  // What the screening set aside, per run (in the runs' order; empty without screening).
+  std::vector<std::pair<std::string, Screening>> screenings;
+  [[nodiscard]] std::size_t excluded_samples() const {
+    std::size_t n = 0;
+    for (const auto& [run, s] : screenings) n += s.excluded_samples;
+    return n;
+  }
   std::vector<std::string> notes;  // how the series was made, for the reports
 
   [[nodiscard]] std::size_t size() const { return displacement.size(); }
@@ -38,6 +48,9 @@ struct FitSeriesOptions {
   // fixed seed: alternate blocks would lock onto the phase of a periodic motion whenever a
   // period spans an even number of them (a fit would then see only some phases).
   int blocks = 24;
+  // Screening before the fit (screening.hpp): spans no damper produced are set aside.
+  bool screen = true;
+  ScreeningOptions screening;
 };
 
 // Throws InputError when a run has no force, a voltage run comes without a gain, or the runs
@@ -58,6 +71,11 @@ FitSeries decimate(const FitSeries& series, std::size_t factor, double min_rate)
 // The series itself when it is no longer than `max_samples` (or `max_samples` < `count`). A run
 // shorter than a window is taken whole, so two windows can repeat one short run.
 FitSeries spread_windows(const FitSeries& series, std::size_t max_samples, std::size_t count = 8);
+
+// The series without its excluded samples, and `per_sample` (one value per sample of `series`)
+// cut the same way: what the residual's structure is analysed on.
+FitSeries without_excluded(const FitSeries& series, const std::vector<double>& per_sample,
+                           std::vector<double>& kept_values);
 
 // The factor that brings the series to at most `max_samples`.
 std::size_t decimation_factor(const FitSeries& series, std::size_t max_samples);

@@ -80,6 +80,7 @@ ResidualRms residual_rms(const FitSeries& series, const std::vector<double>& pre
   std::size_t count[2] = {0, 0};
   ResidualRms out;
   for (std::size_t i = 0; i < series.size(); ++i) {
+    if (series.validation[i] == FitSeries::kExcluded) continue;
     const double r = series.force[i] - predicted[i];
     sum[series.validation[i]] += r * r;
     ++count[series.validation[i]];

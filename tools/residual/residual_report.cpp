@@ -19,6 +19,26 @@ namespace mrd::tools {
 
 namespace {
 
+// The screening's spans, at most 12 lines.
+std::string screening_summary(const ResidualResult& r) {
+  if (!r.screened) return "screening: off (--no-screening)\n";
+  std::string out;
+  std::size_t excluded = 0, lines = 0, total = 0;
+  for (const auto& [run, s] : r.screenings) {
+    excluded += s.excluded_samples;
+    total += s.excluded.size();
+    for (const ScreenedSpan& span : s.spans) {
+      if (++lines > 12) continue;
+      out += format("  %s: %.4f-%.4f s, %s %s\n", run.c_str(), span.start_s, span.end_s, span.channel.c_str(),
+                    std::string(to_string(span.reason)).c_str());
+    }
+  }
+  if (lines > 12) out += format("  ... and %zu more spans (the JSON lists them all)\n", lines - 12);
+  return format("screening: %zu of %zu samples set aside, in %zu spans%s\n", excluded, total, lines,
+                excluded > 0 ? "; errors are on the kept samples" : "") +
+         out;
+}
+
 // Each candidate once: the trial of the round it was accepted in, else its last.
 std::vector<const CandidateTrial*> final_trials(const ResidualResult& r) {
   std::vector<const CandidateTrial*> out;
@@ -52,6 +72,7 @@ std::string residual_summary(const std::vector<record::RecordedRun>& runs, const
   out += format("; half of the %d blocks of each run held out for validation\n", FitSeriesOptions{}.blocks);
   out += "base model (J-A + Bingham, lumped):\n";
   for (const auto& line : r.base_parameters) out += "  " + line + "\n";
+  out += screening_summary(r);
   out += format("before: RMS %.4g N, max %.4g N (validation blocks %.4g N)\n", r.before.all, r.before.max,
                 r.before.validation);
   out += "  residual: " + describe(r.structure_before) + "\n";
@@ -142,7 +163,20 @@ std::string residual_json(const ResidualResult& r) {
       << ", \"unit\": " << json_string(t.unit) << ", \"kind\": " << json_string(t.interference ? "interference" : "damper")
       << ", \"validation_gain\": " << json_number(t.validation_gain) << "}";
   }
-  j << (r.discovered.empty() ? "" : "\n  ") << "],\n  \"set_revisions\": [";
+  j << (r.discovered.empty() ? "" : "\n  ") << "],\n  \"screening\": {\"excluded_samples\": ";
+  std::size_t excluded = 0;
+  for (const auto& [run, s] : r.screenings) excluded += s.excluded_samples;
+  j << excluded << ", \"spans\": [";
+  bool first_span = true;
+  for (const auto& [run, s] : r.screenings) {
+    for (const ScreenedSpan& span : s.spans) {
+      j << (first_span ? "" : ",") << "\n    {\"run\": " << json_string(run) << ", \"start_s\": " << json_number(span.start_s)
+        << ", \"end_s\": " << json_number(span.end_s) << ", \"channel\": " << json_string(span.channel)
+        << ", \"reason\": " << json_string(std::string(to_string(span.reason))) << "}";
+      first_span = false;
+    }
+  }
+  j << (first_span ? "" : "\n  ") << "]},\n  \"set_revisions\": [";
   for (std::size_t g = 0; g < r.revisions.size(); ++g) j << (g ? ", " : "") << json_string(r.revisions[g]);
   j << "],\n  \"unexplained\": " << json_string(r.unexplained) << "\n}\n";
   return j.str();

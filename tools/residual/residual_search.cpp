@@ -21,6 +21,15 @@ std::vector<double> residual_of(const FitSeries& s, const std::vector<double>& p
   return r;
 }
 
+// The residual's structure on the kept samples (the screening's spans are not the damper's).
+ResidualStructure structure_of(const FitSeries& full, const std::vector<double>& predicted) {
+  std::vector<double> residual = residual_of(full, predicted);
+  if (full.excluded_samples() == 0) return analyse_residual(full, residual);
+  std::vector<double> kept;
+  const FitSeries kept_series = without_excluded(full, residual, kept);
+  return analyse_residual(kept_series, kept);
+}
+
 std::vector<std::string> describe_base(const ParameterSpace& space, const FittedModel& fit,
                                        const model::DamperModel& start) {
   std::vector<std::string> lines;
@@ -432,6 +441,8 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   ResidualResult result;
   result.samples = full.size();
   result.notes = full.notes;
+  result.screenings = full.screenings;
+  result.screened = !full.screenings.empty();
   result.fit_samples = s.fit_series.size();
   result.decimation = static_cast<std::size_t>(
       std::lround(static_cast<double>(full.size()) / static_cast<double>(s.fit_series.size())));
@@ -443,7 +454,7 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   result.base_parameters = describe_base(base_fit_space, base, options.start);
   predict_force(result.base, full, result.predicted_before);
   result.before = residual_rms(full, result.predicted_before);
-  result.structure_before = analyse_residual(full, residual_of(full, result.predicted_before));
+  result.structure_before = structure_of(full, result.predicted_before);
 
   // 4-5. Greedy rounds over the candidates.
   Effects candidates = candidate_effects(options);
@@ -503,7 +514,7 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   result.final_model = current;
   result.evaluations = s.evaluations;
   result.after = residual_rms(full, result.predicted_after);
-  result.structure_after = analyse_residual(full, residual_of(full, result.predicted_after));
+  result.structure_after = structure_of(full, result.predicted_after);
   result.unexplained = describe(result.structure_after);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return result;

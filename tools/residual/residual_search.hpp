@@ -55,6 +55,9 @@ struct ResidualResult {
   std::size_t fit_samples = 0;  // of the series the fits ran on
   std::size_t decimation = 1;
   std::vector<std::string> notes;  // how the series was made
+  // Step 0: what the screening set aside, per run; every error is on the kept samples.
+  std::vector<std::pair<std::string, Screening>> screenings;
+  bool screened = false;
   std::vector<std::string> base_parameters;  // what the base fit found, one line each
   model::DamperModel base;
   model::DamperModel final_model;

@@ -34,7 +34,7 @@ TEST(ResidualReport, JsonHasExactlyTheDocumentedKeys) {
     if (depth == 1 && c == '"' && std::regex_search(rest, m, key) && m.position(0) == 0) top.insert(m[1]);
   }
   EXPECT_EQ(top, (std::set<std::string>{"samples", "rms_before_N", "max_before_N", "effects", "effect", "rms_after_N",
-                                        "max_after_N", "effect_params", "candidates", "ambiguous", "ambiguity_tests", "discovered",
+                                        "max_after_N", "effect_params", "candidates", "ambiguous", "ambiguity_tests", "discovered", "screening",
                                         "set_revisions", "unexplained"}));
   EXPECT_NE(json.find("\"effect\": \"gas_spring\""), std::string::npos) << json;
   EXPECT_NE(json.find("\"gas_spring\": {\"preload_N\": "), std::string::npos) << json;

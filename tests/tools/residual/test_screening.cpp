@@ -1,0 +1,142 @@
+// Screening before the fit: each sensor fault, injected by the test into a clean simulated run,
+// is found on its channel with its reason; clean simulated and measured runs lose nothing; and a
+// run whose last half second is faulted fits like the unfaulted run only with the screening on.
+#include "tools/residual/screening.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+#include "record/run_reader.hpp"
+#include "record/run_columns.hpp"
+#include "tests/tools/residual/residual_test_support.hpp"
+#include "tools/residual/residual_report.hpp"
+
+namespace {
+
+using namespace mrd::tools;
+
+mrd::record::RecordedRun clean_run(RunProfile profile = RunProfile::kTable4, const char* damper = "1kN") {
+  return residual_testing::simulated_recorded_run(profile, damper, {}, 4.0);
+}
+
+bool has_span(const Screening& s, const std::string& channel, ScreenReason reason, double from, double to) {
+  return std::ranges::any_of(s.spans, [&](const ScreenedSpan& span) {
+    return span.channel == channel && span.reason == reason && span.start_s <= to && span.end_s >= from;
+  });
+}
+
+std::string describe(const Screening& s) {
+  std::string out;
+  for (const ScreenedSpan& span : s.spans)
+    out += span.channel + " " + std::string(to_string(span.reason)) + " " + std::to_string(span.start_s) + "-" +
+           std::to_string(span.end_s) + "\n";
+  return out;
+}
+
+// The last `seconds` of the run: the load cell clipped at 90 % of its peak, the LVDT stuck where
+// it was when the fault began (an end stop, or a frozen converter).
+mrd::record::RecordedRun with_faulted_end(mrd::record::RecordedRun run, double seconds) {
+  const auto [lo, hi] = std::minmax_element(run.force.begin(), run.force.end());
+  const double clip = 0.9 * std::max(*hi, -*lo);
+  const double start = run.time.back() - seconds;
+  std::size_t first = run.size();
+  for (std::size_t i = 0; i < run.size(); ++i) {
+    if (run.time[i] < start) continue;
+    if (first == run.size()) first = i;
+    run.force[i] = std::clamp(run.force[i], -clip, clip);
+    run.displacement[i] = run.displacement[first];
+  }
+  return run;
+}
+
+TEST(Screening, CleanSimulatedRunsLoseNothing) {
+  for (const RunProfile p : {RunProfile::kTable4, RunProfile::kTelegraph, RunProfile::kSine}) {
+    for (const char* damper : {"1kN", "50kN"}) {
+      const Screening s = screen_run(clean_run(p, damper));
+      EXPECT_EQ(s.excluded_samples, 0u) << damper << " profile " << static_cast<int>(p) << "\n" << describe(s);
+    }
+  }
+}
+
+TEST(Screening, MeasuredRunsLoseNothing) {
+  mrd::record::RunReadOptions dyke;
+  dyke.columns = mrd::record::parse_column_mapping("t=time_s,D=displacement_cm,Y=voltage_V,F=force_N,V=velocity_cm_s");
+  const auto run = mrd::record::read_recorded_run(MRD_DATA_DIR "/damper/dyke-nees-prototype/ranran_50.csv", dyke);
+  EXPECT_EQ(screen_run(run).excluded_samples, 0u) << describe(screen_run(run));
+  mrd::record::RunReadOptions quiroz;
+  quiroz.columns = mrd::record::parse_column_mapping("1=time_s,2=displacement_mm,3=velocity_mm_s,4=force_N");
+  quiroz.current_from_name = true;
+  for (const char* name : {"25mm0x25Hz0A", "25mm0x5Hz1A", "2mm5Hz0x5A", "5mm3Hz0x75A", "5mm3Hz1A"}) {
+    const auto q = mrd::record::read_recorded_run(std::string(MRD_DATA_DIR "/damper/quiroz-utfsm/sine/") + name + ".txt",
+                                                  quiroz);
+    const Screening s = screen_run(q);
+    EXPECT_EQ(s.excluded_samples, 0u) << name << "\n" << describe(s);
+  }
+}
+
+TEST(Screening, EachFaultIsFoundOnItsChannelWithItsReason) {
+  const auto clean = clean_run();
+  {
+    auto run = with_faulted_end(clean, 0.5);
+    const Screening s = screen_run(run);
+    EXPECT_TRUE(has_span(s, "force", ScreenReason::kClipped, 3.5, 4.0)) << describe(s);
+    EXPECT_TRUE(has_span(s, "displacement", ScreenReason::kStuck, 3.5, 4.0) ||
+                has_span(s, "displacement", ScreenReason::kClipped, 3.5, 4.0))
+        << describe(s);
+    EXPECT_LT(s.excluded_samples, 900u);  // the faulted 0.5 s and the load cell's clips, not the run
+  }
+  {
+    auto run = clean;
+    run.force[1234] += 40.0 * (*std::ranges::max_element(run.force) - *std::ranges::min_element(run.force)) / 100.0;
+    run.displacement[2345] -= 0.01;
+    const Screening s = screen_run(run);
+    EXPECT_TRUE(has_span(s, "force", ScreenReason::kSpike, run.time[1234], run.time[1234])) << describe(s);
+    EXPECT_TRUE(has_span(s, "displacement", ScreenReason::kSpike, run.time[2345], run.time[2345])) << describe(s);
+    EXPECT_EQ(s.spans.size(), 2u) << describe(s);
+  }
+  {
+    auto run = clean;
+    for (std::size_t i = 2000; i < run.size(); ++i) run.time[i] += 0.05;  // 50 samples lost
+    const Screening s = screen_run(run);
+    EXPECT_TRUE(has_span(s, "time", ScreenReason::kGap, run.time[2000], run.time[2000])) << describe(s);
+    EXPECT_EQ(s.spans.size(), 1u) << describe(s);
+  }
+}
+
+TEST(Screening, BridgedInputsAreLinearAcrossTheSpan) {
+  auto run = clean_run();
+  Screening s;
+  s.excluded.assign(run.size(), 0);
+  for (std::size_t i = 100; i < 110; ++i) s.excluded[i] = 1;
+  const double x0 = run.displacement[99], x1 = run.displacement[110];
+  bridge_excluded_inputs(run, s);
+  EXPECT_NEAR(run.displacement[104], x0 + (x1 - x0) * (run.time[104] - run.time[99]) / (run.time[110] - run.time[99]),
+              1e-15);
+}
+
+// The fault takes over a fit without screening; with it, the base fit's error is the unfaulted
+// run's, on the kept samples.
+TEST(Screening, AFaultedEndDoesNotTakeOverTheFit) {
+  const auto clean = clean_run(RunProfile::kTable4, "1kN");
+  const auto faulted = with_faulted_end(clean, 0.5);
+  ResidualOptions options;
+  options.threads = 2;
+  options.discover = false;
+  const ResidualResult reference = find_missing_effects(make_fit_series({clean}, {}), options);
+  const ResidualResult screened = find_missing_effects(make_fit_series({faulted}, {}), options);
+  FitSeriesOptions off;
+  off.screen = false;
+  const ResidualResult unscreened = find_missing_effects(make_fit_series({faulted}, off), options);
+  EXPECT_NEAR(screened.before.all, reference.before.all, 0.05 * reference.before.all)
+      << residual_summary({faulted}, screened);
+  EXPECT_GT(unscreened.before.all, 3.0 * reference.before.all) << residual_summary({faulted}, unscreened);
+  EXPECT_TRUE(screened.accepted.empty()) << residual_summary({faulted}, screened);
+  const std::string json = residual_json(screened);
+  EXPECT_NE(json.find("\"reason\": \"clipped\""), std::string::npos) << json;
+  EXPECT_NE(residual_json(unscreened).find("\"screening\": {\"excluded_samples\": 0, \"spans\": []}"),
+            std::string::npos);
+}
+
+}  // namespace

@@ -1,0 +1,222 @@
+#include "tools/residual/screening.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mrd::tools {
+
+std::string_view to_string(ScreenReason r) {
+  switch (r) {
+    case ScreenReason::kClipped: return "clipped";
+    case ScreenReason::kStuck: return "stuck";
+    case ScreenReason::kSpike: return "spike";
+    case ScreenReason::kGap: return "gap";
+  }
+  return "?";
+}
+
+namespace {
+
+// The smallest step the channel takes: its resolution (quantisation), or its noise if finer.
+double resolution(const std::vector<double>& c) {
+  double smallest = 0.0;
+  for (std::size_t i = 1; i < c.size(); ++i) {
+    const double d = std::fabs(c[i] - c[i - 1]);
+    if (d > 0.0 && (smallest == 0.0 || d < smallest)) smallest = d;
+  }
+  return smallest;
+}
+
+// 1.4826 MAD of the channel's second difference over 2: the noise of one sample, robustly.
+double robust_sigma(const std::vector<double>& c) {
+  if (c.size() < 5) return 0.0;
+  std::vector<double> r;
+  r.reserve(c.size());
+  for (std::size_t i = 1; i + 1 < c.size(); ++i) r.push_back(std::fabs(c[i] - 0.5 * (c[i - 1] + c[i + 1])));
+  auto mid = r.begin() + static_cast<std::ptrdiff_t>(r.size() / 2);
+  std::nth_element(r.begin(), mid, r.end());
+  return 1.4826 * *mid / std::sqrt(1.5);  // r's sigma is sqrt(1.5) of one sample's
+}
+
+// How far the channel moves per sample just outside [first, last]: the mean absolute step over
+// up to four samples on each side.
+double slope_outside(const std::vector<double>& c, std::size_t first, std::size_t last) {
+  double sum = 0.0;
+  int n = 0;
+  for (std::size_t k = 1; k <= 4 && first >= k; ++k, ++n) sum += std::fabs(c[first - k + 1] - c[first - k]);
+  for (std::size_t k = 1; k <= 4 && last + k < c.size(); ++k, ++n) sum += std::fabs(c[last + k] - c[last + k - 1]);
+  return n > 0 ? sum / n : 0.0;
+}
+
+// Whether the damper moves over [first, last] by the other channels: the recorded velocity, or
+// the displacement, or the force.
+bool moving(const record::RecordedRun& run, const std::string& channel, std::size_t first, std::size_t last) {
+  const double duration = run.time[last] - run.time[first];
+  if (channel != "velocity" && run.has_velocity()) {
+    double travel = 0.0;
+    for (std::size_t i = first; i < last; ++i) travel += std::fabs(run.velocity[i]) * (run.time[i + 1] - run.time[i]);
+    const auto [lo, hi] = std::minmax_element(run.displacement.begin(), run.displacement.end());
+    if (travel > 0.02 * (*hi - *lo) && duration > 0.0) return true;
+  }
+  if (channel != "displacement") {
+    const auto [lo, hi] = std::minmax_element(run.displacement.begin() + static_cast<std::ptrdiff_t>(first),
+                                              run.displacement.begin() + static_cast<std::ptrdiff_t>(last) + 1);
+    const auto [all_lo, all_hi] = std::minmax_element(run.displacement.begin(), run.displacement.end());
+    if (*hi - *lo > 0.02 * (*all_hi - *all_lo)) return true;
+  }
+  if (channel != "force" && run.has_force()) {
+    const auto [lo, hi] = std::minmax_element(run.force.begin() + static_cast<std::ptrdiff_t>(first),
+                                              run.force.begin() + static_cast<std::ptrdiff_t>(last) + 1);
+    const auto [all_lo, all_hi] = std::minmax_element(run.force.begin(), run.force.end());
+    if (*hi - *lo > 0.1 * (*all_hi - *all_lo)) return true;
+  }
+  return false;
+}
+
+struct Channel {
+  const char* name;
+  const std::vector<double>* values;
+};
+
+void find_flat_runs(const record::RecordedRun& run, const Channel& ch, const ScreeningOptions& o,
+                    std::vector<ScreenedSpan>& spans) {
+  const std::vector<double>& c = *ch.values;
+  if (c.size() < o.min_flat + 2) return;
+  const auto [lo, hi] = std::minmax_element(c.begin(), c.end());
+  const double q = std::max(resolution(c), 1e-12 * std::max(std::fabs(*lo), std::fabs(*hi)));
+  std::size_t first = 0;
+  for (std::size_t i = 1; i <= c.size(); ++i) {
+    if (i < c.size() && c[i] == c[first]) continue;
+    const std::size_t last = i - 1;
+    const std::size_t length = last - first + 1;
+    if (length >= o.min_flat) {
+      // At an extreme of its surroundings (a plateau's own length on each side): a load cell
+      // saturates wherever the force passes its full scale, not only at the run's peak.
+      const std::size_t from = first > length ? first - length : 0, to = std::min(last + length, c.size() - 1);
+      const auto [near_lo, near_hi] = std::minmax_element(c.begin() + static_cast<std::ptrdiff_t>(from),
+                                                          c.begin() + static_cast<std::ptrdiff_t>(to) + 1);
+      const bool at_extreme = c[first] == *near_lo || c[first] == *near_hi;
+      // Continued at the slope it had just outside, would the signal have left the level by
+      // far more than its resolution? A natural peak flattens (slope ~ q per half plateau);
+      // a clip cuts the signal at speed.
+      const bool cut_at_speed = slope_outside(c, first, last) * static_cast<double>(length) > 8.0 * q;
+      if (at_extreme && cut_at_speed) {
+        spans.push_back({first, last, 0, 0, ch.name, ScreenReason::kClipped});
+      } else if (moving(run, ch.name, first, last)) {
+        spans.push_back({first, last, 0, 0, ch.name, ScreenReason::kStuck});
+      }
+    }
+    first = i;
+  }
+}
+
+// Mean absolute step of the channel over +-`half` samples around i, the steps into and out of
+// i left out: how fast the signal itself moves there.
+double local_step(const std::vector<double>& c, std::size_t i, std::size_t half) {
+  const std::size_t from = i > half ? i - half : 1, to = std::min(i + half, c.size() - 1);
+  double sum = 0.0;
+  int n = 0;
+  for (std::size_t k = from; k <= to; ++k) {
+    if (k == i || k == i + 1) continue;
+    sum += std::fabs(c[k] - c[k - 1]);
+    ++n;
+  }
+  return n > 0 ? sum / n : 0.0;
+}
+
+// Whether the coil's current changed next to sample i: a force that follows a one-sample current
+// pulse is the damper's, not a spike.
+bool current_changed_near(const record::RecordedRun& run, std::size_t i) {
+  if (run.coil.size() != run.size()) return false;
+  for (std::size_t k = i > 1 ? i - 1 : 1; k <= std::min(i + 1, run.size() - 1); ++k)
+    if (run.coil[k] != run.coil[k - 1]) return true;
+  return false;
+}
+
+void find_spikes(const record::RecordedRun& run, const Channel& ch, const ScreeningOptions& o,
+                 std::vector<ScreenedSpan>& spans) {
+  const std::vector<double>& c = *ch.values;
+  if (c.size() < 5) return;
+  const auto [lo, hi] = std::minmax_element(c.begin(), c.end());
+  // Far above the noise, and a visible share of the channel's range: a real damper's force
+  // chatters at reversals, sample to sample, by a few per cent.
+  const double floor = std::max({o.spike_sigmas * robust_sigma(c), 4.0 * resolution(c), 0.05 * (*hi - *lo)});
+  for (std::size_t i = 1; i + 1 < c.size(); ++i) {
+    const double up = c[i] - c[i - 1], down = c[i] - c[i + 1];
+    const double jump = std::min(std::fabs(up), std::fabs(down));
+    // Far from both neighbours on the same side, the neighbours agreeing with each other, and
+    // far beyond how fast the signal moves around it.
+    if (up * down > 0.0 && jump > floor && std::fabs(c[i + 1] - c[i - 1]) < 0.25 * jump &&
+        jump > 8.0 * local_step(c, i, 20) && !(std::string_view(ch.name) == "force" && current_changed_near(run, i))) {
+      spans.push_back({i, i, 0, 0, ch.name, ScreenReason::kSpike});
+    }
+  }
+}
+
+void find_gaps(const record::RecordedRun& run, std::vector<ScreenedSpan>& spans) {
+  const double period = run.sample_rate > 0.0 ? 1.0 / run.sample_rate : 0.0;
+  if (period <= 0.0) return;
+  for (std::size_t i = 1; i < run.size(); ++i) {
+    if (run.time[i] - run.time[i - 1] > 1.5 * period) spans.push_back({i, i, 0, 0, "time", ScreenReason::kGap});
+  }
+}
+
+}  // namespace
+
+Screening screen_run(const record::RecordedRun& run, const ScreeningOptions& o) {
+  Screening s;
+  const std::size_t n = run.size();
+  s.excluded.assign(n, 0);
+  if (n < 4) return s;
+  std::vector<Channel> channels{{"displacement", &run.displacement}};
+  if (run.has_force()) channels.push_back({"force", &run.force});
+  if (run.has_velocity()) channels.push_back({"velocity", &run.velocity});
+  for (const Channel& ch : channels) {
+    find_flat_runs(run, ch, o, s.spans);
+    if (std::string_view(ch.name) != "velocity") find_spikes(run, ch, o, s.spans);
+  }
+  find_gaps(run, s.spans);
+  const auto margin = static_cast<std::size_t>(std::ceil(o.margin_s * std::max(run.sample_rate, 1.0)));
+  for (ScreenedSpan& span : s.spans) {
+    span.first -= std::min(span.first, margin);
+    span.last = std::min(span.last + margin, n - 1);
+    span.start_s = run.time[span.first];
+    span.end_s = run.time[span.last];
+    std::fill(s.excluded.begin() + static_cast<std::ptrdiff_t>(span.first),
+              s.excluded.begin() + static_cast<std::ptrdiff_t>(span.last) + 1, std::uint8_t{1});
+  }
+  std::ranges::sort(s.spans, {}, &ScreenedSpan::first);
+  s.excluded_samples = static_cast<std::size_t>(std::ranges::count(s.excluded, std::uint8_t{1}));
+  return s;
+}
+
+void bridge_excluded_inputs(record::RecordedRun& run, const Screening& screening) {
+  const std::size_t n = run.size();
+  std::size_t i = 0;
+  while (i < n) {
+    if (!screening.excluded[i]) {
+      ++i;
+      continue;
+    }
+    std::size_t j = i;
+    while (j < n && screening.excluded[j]) ++j;
+    // [i, j) excluded; bridge between the kept samples i - 1 and j (or hold the one there is).
+    for (std::vector<double>* c : {&run.displacement, &run.velocity, &run.coil}) {
+      if (c->size() != n) continue;
+      const bool before = i > 0, after = j < n;
+      for (std::size_t k = i; k < j; ++k) {
+        if (before && after) {
+          const double w = (run.time[k] - run.time[i - 1]) / (run.time[j] - run.time[i - 1]);
+          (*c)[k] = (*c)[i - 1] + w * ((*c)[j] - (*c)[i - 1]);
+        } else if (before) {
+          (*c)[k] = (*c)[i - 1];
+        } else if (after) {
+          (*c)[k] = (*c)[j];
+        }
+      }
+    }
+    i = j;
+  }
+}
+
+}  // namespace mrd::tools

@@ -1,0 +1,52 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "record/recorded_run.hpp"
+
+namespace mrd::tools {
+
+// Why a span of samples was set aside: no damper produced it.
+enum class ScreenReason : std::uint8_t {
+  kClipped,  // a channel held at its extreme where the signal was still going beyond it
+  kStuck,    // a channel repeating one value while the others say the damper moves
+  kSpike,    // one sample far from both neighbours, far above the noise
+  kGap,      // a time step longer than 1.5 nominal periods
+};
+[[nodiscard]] std::string_view to_string(ScreenReason r);
+
+struct ScreenedSpan {
+  std::size_t first = 0;  // sample indices of the run, inclusive, margin included
+  std::size_t last = 0;
+  double start_s = 0.0;   // the run's own time of `first` and `last` [s]
+  double end_s = 0.0;
+  std::string channel;    // "displacement", "force", "velocity" or "time"
+  ScreenReason reason = ScreenReason::kClipped;
+};
+
+struct Screening {
+  std::vector<ScreenedSpan> spans;
+  std::vector<std::uint8_t> excluded;  // per sample: 1 set aside
+  std::size_t excluded_samples = 0;
+};
+
+struct ScreeningOptions {
+  std::size_t min_flat = 8;          // samples of exact repeats before a run can be clipped or stuck
+  double spike_sigmas = 12.0;        // a spike stands this many robust noise sigmas off its neighbours
+  double margin_s = 0.005;           // set aside around each span: the zero-phase velocity spreads it [s]
+};
+
+// Finds the samples of `run` no damper produced (docs/CLOSING-THE-LOOP.md, "Screening"). Pure;
+// linear in the run's length.
+Screening screen_run(const record::RecordedRun& run, const ScreeningOptions& options = {});
+
+// The model's inputs (displacement, velocity, coil) interpolated linearly across the excluded
+// samples, so that the model's state runs through a fault sanely; the force is left as it is
+// (excluded samples are not fitted).
+void bridge_excluded_inputs(record::RecordedRun& run, const Screening& screening);
+
+}  // namespace mrd::tools
