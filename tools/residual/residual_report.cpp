@@ -238,7 +238,8 @@ std::string plot_residual(const FitSeries& s, const ResidualResult& r, const std
     for (std::size_t i = 0; i < s.size(); i += stride) {
       out << static_cast<double>(i) * s.sample_period << ' ' << 1e3 * s.displacement[i] << ' ' << 1e3 * s.velocity[i]
           << ' ' << s.force[i] << ' ' << r.predicted_before[i] << ' ' << r.predicted_after[i] << ' '
-          << s.force[i] - r.predicted_before[i] << ' ' << s.force[i] - r.predicted_after[i] << '\n';
+          << s.force[i] - r.predicted_before[i] << ' ' << s.force[i] - r.predicted_after[i] << ' '
+          << (s.validation[i] == FitSeries::kExcluded ? 1 : 0) << '\n';
     }
     if (!out) return "cannot write " + data;
   }
@@ -256,12 +257,14 @@ std::string plot_residual(const FitSeries& s, const ResidualResult& r, const std
      << "set xlabel 'displacement [mm]'\nset ylabel 'force [N]'\n"
      << "plot '" << data << "' using 2:4 with points pt 7 ps 0.2 lc rgb '#888888' title 'measured', '" << data
      << "' using 2:5 with points pt 7 ps 0.2 lc rgb '#1f77b4' title 'base model', '" << data
-     << "' using 2:6 with points pt 7 ps 0.2 lc rgb '#d62728' title '" << after << "'\n"
+     << "' using 2:6 with points pt 7 ps 0.2 lc rgb '#d62728' title '" << after << "', '" << data
+     << "' using 2:($9 > 0 ? $4 : 1/0) with points pt 6 ps 0.5 lc rgb '#ff7f0e' title 'set aside by the screening'\n"
      << "set output '" << png("residual_time.png") << "'\n"
      << "set title '" << name << ": residual against time, " << figures << "' noenhanced\n"
      << "set xlabel 'time in the analysed series [s]'\nset ylabel 'measured - predicted [N]'\n"
      << "plot '" << data << "' using 1:7 with lines lw 1 lc rgb '#1f77b4' title 'base model', '" << data
-     << "' using 1:8 with lines lw 1 lc rgb '#d62728' title '" << after << "'\n"
+     << "' using 1:8 with lines lw 1 lc rgb '#d62728' title '" << after << "', '" << data
+     << "' using 1:($9 > 0 ? $8 : 1/0) with points pt 6 ps 0.5 lc rgb '#ff7f0e' title 'set aside by the screening'\n"
      << "set terminal pngcairo size 1200,500\nset output '" << png("residual_phase.png") << "'\n"
      << "set multiplot layout 1,2 title '" << name << ": residual against the motion' noenhanced\n"
      << "set title 'against displacement'\nset xlabel 'displacement [mm]'\n"

@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# Sensor faults injected into clean and measured runs (docs/CLOSING-THE-LOOP.md, "Screening"):
+# each run is analysed unfaulted, faulted with screening (the default) and faulted with
+# --no-screening. With screening the fit should match the unfaulted run's within a few per cent.
+# Usage: tools/residual/fault-study.sh [BUILD_DIR] [OUT_DIR]   (needs python3)
+set -euo pipefail
+build=${1:-build/release}
+out=${2:-out/fault-study}
+mkdir -p "$out"
+"$build/tools/simulation/mrd-simulate-run" --damper 1kN --profile table4 --duration 10 --out "$out/sim-1kN-table4.csv" > /dev/null
+python3 - "$out" data/damper/quiroz-utfsm/sine <<'PY'
+import csv, math, random, sys
+out, quiroz = sys.argv[1], sys.argv[2]
+def own(name, rows, header):
+    with open(f"{out}/{name}.csv", "w", newline="") as f:
+        w = csv.writer(f); w.writerow(header); w.writerows(rows)
+# Quiroz's constant-current tests into the project's format (the current from the file name).
+for stem, amps in (("5mm3Hz0x75A", 0.75), ("25mm0x25Hz1A", 1.0)):
+    rows = [[float(v) for v in line.split()[:4]] + [amps] for line in open(f"{quiroz}/{stem}.txt") if line.strip()]
+    own(f"quiroz-{stem}", rows, ["time_s", "displacement_mm", "velocity_mm_s", "force_N", "current_A"])
+def load(name):
+    rows = list(csv.reader(open(f"{out}/{name}.csv")))
+    return rows[0], [list(map(float, r)) for r in rows[1:]]
+rng = random.Random(7)
+for name in ("sim-1kN-table4", "quiroz-5mm3Hz0x75A", "quiroz-25mm0x25Hz1A"):
+    h, rows = load(name)
+    t, x, F = h.index("time_s"), h.index("displacement_mm"), h.index("force_N")
+    end = rows[-1][t]
+    # The last 0.5 s: the load cell saturates at 80 % of the force it saw there, the LVDT sticks.
+    tail = [r for r in rows if r[t] >= end - 0.5]
+    scale = 0.8 * max(abs(r[F]) for r in tail)
+    faulted = [list(r) for r in rows]
+    stuck = None
+    for r in faulted:
+        if r[t] >= end - 0.5:
+            stuck = r[x] if stuck is None else stuck
+            r[F] = max(-scale, min(scale, r[F])); r[x] = stuck
+    own(f"{name}-clip-stuck", faulted, h)
+    # Spikes: five on the force (half its range), three on the LVDT (a fifth of its range).
+    faulted = [list(r) for r in rows]
+    Fr = max(r[F] for r in rows) - min(r[F] for r in rows)
+    xr = max(r[x] for r in rows) - min(r[x] for r in rows)
+    for i in rng.sample(range(10, len(rows) - 10), 5): faulted[i][F] += 0.5 * Fr
+    for i in rng.sample(range(10, len(rows) - 10), 3): faulted[i][x] -= 0.2 * xr
+    own(f"{name}-spikes", faulted, h)
+    # A gap: 50 samples lost in the middle.
+    mid = len(rows) // 2
+    own(f"{name}-gap", rows[:mid] + rows[mid + 50:], h)
+PY
+echo "| run | fault | screening | set aside | named | RMS before [N] | RMS after [N] |"
+echo "|---|---|---|---:|---|---:|---:|"
+for base in sim-1kN-table4 quiroz-5mm3Hz0x75A quiroz-25mm0x25Hz1A; do
+  for fault in "" -clip-stuck -spikes -gap; do
+    for mode in on off; do
+      [[ -z $fault && $mode == off ]] && continue
+      flag=(); [[ $mode == off ]] && flag=(--no-screening)
+      name="$base$fault-$mode"
+      "$build/tools/mrd-residual" "$out/$base$fault.csv" "${flag[@]}" --json "$out/$name.json" > "$out/$name.txt"
+      python3 - "$out/$name.json" "$base" "${fault#-}" "$mode" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))
+print(f"| {sys.argv[2]} | {sys.argv[3] or 'none'} | {sys.argv[4]} | {r['screening']['excluded_samples']} | "
+      f"{', '.join(r['effects']) or 'none'} | {r['rms_before_N']:.4g} | {r['rms_after_N']:.4g} |")
+PY
+    done
+  done
+done
