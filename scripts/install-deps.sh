@@ -8,6 +8,7 @@ packages=(
   libpagmo-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox
+  python3-numpy  # the independent truth generator (tests/generator)
   # The HIL VM (scripts/hil-vm.sh): qemu, headers to build gpio-sim against, and the CAN and
   # GPIO tools copied into the VM.
   qemu-system-x86 linux-headers-amd64 can-utils gpiod

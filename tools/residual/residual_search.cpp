@@ -497,7 +497,9 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   result.discovery = options.discover;
   if (options.discover) {
     const TermDiscovery discovery =
-        discover_terms(full, result.predicted_after, induction, options.minimum_reduction);
+        discover_terms(full, result.predicted_after, induction,
+                       model::BinghamDamper(current.geometry, current.fluid.viscosity).viscous_coefficient(),
+                       options.minimum_reduction);
     result.discovered = discovery.terms;
     for (const auto& group : discovery.ambiguous) {
       result.ambiguous.push_back(group);

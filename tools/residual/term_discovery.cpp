@@ -128,7 +128,7 @@ std::vector<int> columns_of(const Library& lib, const std::vector<std::size_t>& 
 }
 
 SubsetFit fit_subset(const Library& lib, const std::vector<std::size_t>& subset, const Moments& fit,
-                     const Moments& validation, const Eigen::VectorXd& scale) {
+                     const Moments& validation, const Eigen::VectorXd& scale, double viscous_coefficient) {
   const std::vector<int> cols = columns_of(lib, subset);
   const auto n = static_cast<Eigen::Index>(cols.size());
   Eigen::MatrixXd g(n, n), gv(n, n);
@@ -149,7 +149,9 @@ SubsetFit fit_subset(const Library& lib, const std::vector<std::size_t>& subset,
   out.coefficients.resize(n);
   for (Eigen::Index r = 0; r < n; ++r) out.coefficients[r] = scaled[r] / scale[cols[r]];
   Eigen::Index c = kBaseColumns;
-  if (out.coefficients[0] < 0.0) out.physical = false;  // a negative force scale
+  // A negative force scale, or a negative viscosity once the extra viscous term is added.
+  if (out.coefficients[0] < 0.0 || out.coefficients[0] * viscous_coefficient + out.coefficients[1] < 0.0)
+    out.physical = false;
   for (const std::size_t t : subset) {
     if (lib.terms[t].sign > 0 && out.coefficients[c] < 0.0) out.physical = false;
     c += lib.terms[t].columns;
@@ -186,7 +188,7 @@ void TermDiscovery::add_to(model::DamperModel& model) const {
 }
 
 TermDiscovery discover_terms(const FitSeries& s, const std::vector<double>& predicted, const std::vector<double>& B,
-                             double threshold, std::size_t max_terms) {
+                             double viscous_coefficient, double threshold, std::size_t max_terms) {
   TermDiscovery out;
   out.interference.assign(s.size(), 0.0);
   if (s.size() < 16 || s.run_periods.empty()) return out;
@@ -219,7 +221,7 @@ TermDiscovery discover_terms(const FitSeries& s, const std::vector<double>& pred
 
   std::vector<std::size_t> chosen;
   std::vector<double> gains;
-  SubsetFit accepted_fit = fit_subset(lib, chosen, moments[0], moments[1], scale);
+  SubsetFit accepted_fit = fit_subset(lib, chosen, moments[0], moments[1], scale, viscous_coefficient);
   double current = accepted_fit.validation_rms;
   while (chosen.size() < max_terms) {
     std::size_t best = lib.terms.size();
@@ -229,7 +231,7 @@ TermDiscovery discover_terms(const FitSeries& s, const std::vector<double>& pred
       if (moments[0].gram(lib.terms[t].first_column, lib.terms[t].first_column) <= 0.0) continue;  // all zero
       std::vector<std::size_t> trial = chosen;
       trial.push_back(t);
-      SubsetFit fit = fit_subset(lib, trial, moments[0], moments[1], scale);
+      SubsetFit fit = fit_subset(lib, trial, moments[0], moments[1], scale, viscous_coefficient);
       if (!fit.physical) continue;
       if (best == lib.terms.size() || fit.validation_rms < best_fit.validation_rms) {
         best = t;
@@ -246,7 +248,7 @@ TermDiscovery discover_terms(const FitSeries& s, const std::vector<double>& pred
       if (t == best || std::ranges::find(chosen, t) != chosen.end()) continue;
       std::vector<std::size_t> trial = chosen;
       trial.push_back(t);
-      const SubsetFit other = fit_subset(lib, trial, moments[0], moments[1], scale);
+      const SubsetFit other = fit_subset(lib, trial, moments[0], moments[1], scale, viscous_coefficient);
       const bool passes = other.physical && 1.0 - other.validation_rms / std::max(current, 1e-300) >= threshold;
       if (passes && 1.0 - best_fit.validation_rms / std::max(other.validation_rms, 1e-300) < threshold)
         alike.push_back(lib.terms[t].name);
