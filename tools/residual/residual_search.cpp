@@ -433,6 +433,66 @@ void name_ambiguities(const AcceptedSet& set, const std::vector<Effects>& groups
   }
 }
 
+// Steps 4-5: each round fits every remaining candidate; the best that passes the threshold is
+// accepted and polished, its rivals (those that also passed) are kept for the set revision, and
+// those within the threshold of it form an ambiguous group.
+AcceptedSet greedy_rounds(Search& s, const model::DamperModel& base, ResidualResult& result,
+                          std::vector<Effects>& ambiguous_groups) {
+  Effects candidates = candidate_effects(s.options);
+  AcceptedSet set;
+  set.model = base;
+  set.validation = s.validation_rms(set.model);
+  for (int round_number = 1; !candidates.empty(); ++round_number) {
+    Round round = try_candidates(s, set.model, set.validation, candidates, round_number);
+    const std::size_t best = judge_round(round, set.validation, s.options.minimum_reduction);
+    if (best < round.trials.size()) {
+      Effects alike = ambiguous_with_winner(round, candidates, best, s.options.minimum_reduction);
+      Effects rivals;
+      for (std::size_t i = 0; i < round.trials.size(); ++i)
+        if (i != best && (round.trials[i].verdict.starts_with("passes") || round.trials[i].verdict.starts_with("ambiguous")))
+          rivals.push_back(candidates[i]);
+      if (!alike.empty()) {
+        alike.insert(alike.begin(), candidates[best]);
+        ambiguous_groups.push_back(std::move(alike));
+      }
+      set.effects.push_back(candidates[best]);
+      set.rivals.push_back(std::move(rivals));
+      set.validation = round.trials[best].validation_rms;
+      set.model = polish_accepted(s, round.fits[best].model, set.effects, set.validation);
+      candidates.erase(candidates.begin() + static_cast<std::ptrdiff_t>(best));
+    }
+    result.trials.insert(result.trials.end(), round.trials.begin(), round.trials.end());
+    if (best == round.trials.size()) break;
+  }
+  return set;
+}
+
+// Step 7: what the named effects left, regressed on the library of terms; damper terms join
+// `model` (learned_terms), mains lines are taken off the measurement. Leaves the prediction
+// after in result.predicted_after.
+void discover(Search& s, model::DamperModel& model, ResidualResult& result) {
+  std::vector<double> induction;
+  predict_force_and_induction(model, s.full, result.predicted_after, induction);
+  result.discovery = s.options.discover;
+  if (!s.options.discover) return;
+  const TermDiscovery discovery =
+      discover_terms(s.full, result.predicted_after, induction,
+                     model::BinghamDamper(model.geometry, model.fluid.viscosity).viscous_coefficient(),
+                     s.options.minimum_reduction);
+  result.discovered = discovery.terms;
+  for (const auto& group : discovery.ambiguous) {
+    result.ambiguous.push_back(group);
+    result.ambiguity_tests.push_back("to separate the terms " + group.front() + " and " + group[1] +
+                                     ", run: a motion at other frequencies and amplitudes (the terms scale "
+                                     "differently with them)");
+  }
+  if (discovery.has_terms()) {
+    discovery.add_to(model);
+    predict_force(model, s.full, result.predicted_after);
+  }
+  for (std::size_t i = 0; i < s.full.size(); ++i) result.predicted_after[i] += discovery.interference[i];
+}
+
 }  // namespace
 
 ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions& options) {
@@ -456,63 +516,17 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   result.before = residual_rms(full, result.predicted_before);
   result.structure_before = structure_of(full, result.predicted_before);
 
-  // 4-5. Greedy rounds over the candidates.
-  Effects candidates = candidate_effects(options);
-  AcceptedSet set;
-  set.model = base.model;
-  set.validation = s.validation_rms(set.model);
+  // 4-5. Greedy rounds over the candidates; 6. the set revised as a whole, and what the run
+  // cannot decide.
   std::vector<Effects> ambiguous_groups;
-  for (int round_number = 1; !candidates.empty(); ++round_number) {
-    Round round = try_candidates(s, set.model, set.validation, candidates, round_number);
-    const std::size_t best = judge_round(round, set.validation, options.minimum_reduction);
-    if (best < round.trials.size()) {
-      Effects alike = ambiguous_with_winner(round, candidates, best, options.minimum_reduction);
-      Effects rivals;
-      for (std::size_t i = 0; i < round.trials.size(); ++i)
-        if (i != best && (round.trials[i].verdict.starts_with("passes") || round.trials[i].verdict.starts_with("ambiguous")))
-          rivals.push_back(candidates[i]);
-      if (!alike.empty()) {
-        alike.insert(alike.begin(), candidates[best]);
-        ambiguous_groups.push_back(std::move(alike));
-      }
-      set.effects.push_back(candidates[best]);
-      set.rivals.push_back(std::move(rivals));
-      set.validation = round.trials[best].validation_rms;
-      set.model = polish_accepted(s, round.fits[best].model, set.effects, set.validation);
-      candidates.erase(candidates.begin() + static_cast<std::ptrdiff_t>(best));
-    }
-    result.trials.insert(result.trials.end(), round.trials.begin(), round.trials.end());
-    if (best == round.trials.size()) break;
-  }
-  // 6. The set revised as a whole, and what the run cannot decide.
+  AcceptedSet set = greedy_rounds(s, base.model, result, ambiguous_groups);
   revise_set(s, set, result);
   name_ambiguities(set, ambiguous_groups, result);
   for (const model::EffectInfo* e : set.effects) result.accepted.emplace_back(e->name);
   mark_final_set(result);
-  // 7. Discovery: what the named effects left, regressed on the library of terms; damper terms
-  // join the model (learned_terms), mains lines are taken off the measurement.
+  // 7. Discovery on what the named effects left.
   model::DamperModel current = set.model;
-  std::vector<double> induction;
-  predict_force_and_induction(current, full, result.predicted_after, induction);
-  result.discovery = options.discover;
-  if (options.discover) {
-    const TermDiscovery discovery =
-        discover_terms(full, result.predicted_after, induction,
-                       model::BinghamDamper(current.geometry, current.fluid.viscosity).viscous_coefficient(),
-                       options.minimum_reduction);
-    result.discovered = discovery.terms;
-    for (const auto& group : discovery.ambiguous) {
-      result.ambiguous.push_back(group);
-      result.ambiguity_tests.push_back("to separate the terms " + group.front() + " and " + group[1] +
-                                       ", run: a motion at other frequencies and amplitudes (the terms scale "
-                                       "differently with them)");
-    }
-    if (discovery.has_terms()) {
-      discovery.add_to(current);
-      predict_force(current, full, result.predicted_after);
-    }
-    for (std::size_t i = 0; i < full.size(); ++i) result.predicted_after[i] += discovery.interference[i];
-  }
+  discover(s, current, result);
   result.final_model = current;
   result.evaluations = s.evaluations;
   result.after = residual_rms(full, result.predicted_after);
