@@ -240,9 +240,11 @@ void cross_check(TomlReader& in, const ControllerConfig& c) {
     in.error("simulation.amplitude", "must stay within safety.displacement_min..max, or the "
                                      "simulated rig trips the supervisor every stroke");
   }
-  // The writer drains once per flush period; the ring must hold two passes' worth.
+  // The writer drains once per flush period; the ring must hold two passes' worth. A decimation
+  // below 1 is already an error, and would make the count infinite.
   const double per_pass = c.rate * c.telemetry.flush_period / c.telemetry.decimation;
-  if (c.telemetry.enabled() && c.telemetry.ring_size < 2.0 * per_pass) {
+  if (c.telemetry.enabled() && c.telemetry.decimation >= 1 && std::isfinite(per_pass) &&
+      c.telemetry.ring_size < 2.0 * per_pass) {
     in.warning("telemetry.ring_size", "holds less than two flush periods of records (" +
                                           std::to_string(static_cast<long>(per_pass)) +
                                           " each): expect dropped records");

@@ -24,6 +24,7 @@ EffectInfo info_of() {
   EffectInfo info;
   info.name = E::kName;
   info.separated_by = E::kSeparatedBy;
+  info.term_forms = E::kTermForms;
   info.changes_induction = E::kChangesInduction;
   info.sized_by_dissipated_energy = E::kSizedByDissipatedEnergy;
   info.named_candidate = E::kNamedCandidate;

@@ -96,6 +96,7 @@ ValidationReport validate(const EffectSet& effects);
 struct EffectInfo {
   std::string_view name;
   std::string_view separated_by;  // the test run that tells it from its look-alikes
+  std::span<const std::string_view> term_forms;  // library terms that are its own physics
   bool changes_induction = false;
   bool sized_by_dissipated_energy = false;
   bool named_candidate = true;  // searched by mrd-residual and sized by the simulator

@@ -64,6 +64,9 @@ struct EffectTraitsBase {
   // A test run that tells this effect apart from the look-alikes the residual search can
   // confuse it with (reported when a run cannot decide between them).
   static constexpr std::string_view kSeparatedBy = "a run at other amplitudes and frequencies";
+  // Terms of the discovery library (learned_terms.hpp) that are this effect's own physics: a
+  // regression that explains the residual with them instead names the same thing, not a rival.
+  static constexpr std::array<std::string_view, 0> kTermForms{};
   static constexpr std::array<SearchCoordinate, 0> kSearch{};
   static constexpr std::array<LinearColumn, 0> kLinear{};
 

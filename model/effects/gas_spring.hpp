@@ -42,6 +42,7 @@ struct GasSpringEffect : EffectTraitsBase<GasSpringParams> {
   static constexpr std::string_view kName = "gas_spring";
   static constexpr std::string_view kSeparatedBy =
       "a slow stroke at zero current (the spring is the only force that does not reverse with the velocity)";
+  static constexpr std::array<std::string_view, 1> kTermForms = {"displacement"};  // k x
   // Hook (effect_chain.hpp): a force added to the fluid's.
   static double added_force(const Element& spring, double displacement) { return spring.force(displacement); }
 

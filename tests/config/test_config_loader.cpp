@@ -279,6 +279,15 @@ consumer_prefix = "a-very-long-consumer-prefix"
   EXPECT_EQ(c.errors.size(), 5u) << lines_of(c);
 }
 
+// Found by fuzz_config: a decimation of 0 made the ring's cross-check convert an infinite record
+// count to an integer (undefined behaviour). The decimation's own error is the only message.
+TEST(ConfigBad, ZeroDecimationIsOneErrorAndNoInfiniteRecordCount) {
+  const LoadedConfig c = load_config_text("[telemetry]\ndecimation = 0\nring_size = 8192\n", "d.toml");
+  EXPECT_TRUE(has_error(c, "d.toml:2: telemetry.decimation: must be >= 1, got 0")) << lines_of(c);
+  EXPECT_EQ(c.errors.size(), 1u) << lines_of(c);
+  EXPECT_EQ(c.report().find("telemetry.ring_size"), std::string::npos) << lines_of(c);
+}
+
 TEST(ConfigBad, SafetyAndTelemetryAndRealtime) {
   const LoadedConfig c = load_config_text(R"([safety]
 fail_safe_current = 0.4

@@ -1,8 +1,10 @@
 #!/usr/bin/env python3
 """One independent-generator case for ctest: generate a run, analyse it with mrd-residual, assert.
   expect.py MRD_RESIDUAL OUT_DIR NAME PROFILE --effect E:S ... --named a,b --term NAME:VALUE:TOL
+            --ambiguous a,b
 --named lists the effects mrd-residual must name (empty: none); --term a discovered term whose
-coefficient must lie within TOL (relative) of VALUE; without --term no term may be discovered."""
+coefficient must lie within TOL (relative) of VALUE; without --term no term may be discovered on
+a telegraph run; --ambiguous a group the JSON's "ambiguous" must hold (led by the one kept)."""
 import argparse, json, os, subprocess, sys
 
 here = os.path.dirname(os.path.abspath(__file__))
@@ -11,6 +13,7 @@ p.add_argument("residual"); p.add_argument("out"); p.add_argument("name"); p.add
 p.add_argument("--effect", action="append", default=[])
 p.add_argument("--named", default="")
 p.add_argument("--term", action="append", default=[])
+p.add_argument("--ambiguous", action="append", default=[])
 a = p.parse_args()
 os.makedirs(a.out, exist_ok=True)
 csv, js = os.path.join(a.out, a.name + ".csv"), os.path.join(a.out, a.name + ".json")
@@ -32,5 +35,8 @@ for name, (value, tol) in wanted_terms.items():
         print(f"term {name}: got {got}, expected {value} within {tol:.0%}"); ok = False
 if not a.term and a.profile == "telegraph" and terms:
     print(f"discovered {terms} on a run that carries no term"); ok = False
+for group in a.ambiguous:
+    if group.split(",") not in r["ambiguous"]:
+        print(f"ambiguous {group} not reported (got {r['ambiguous']})"); ok = False
 print(f"{a.name}: named {named}, discovered {terms}, RMS {r['rms_before_N']:.4g} -> {r['rms_after_N']:.4g} N")
 sys.exit(0 if ok else 1)

@@ -140,10 +140,7 @@ Point effect_coordinates(const model::EffectInfo& effect, const model::DamperMod
   return p;
 }
 
-std::vector<Point> reversal_threshold_trials(const FitSeries& s, const SeriesScales& scales, const Point& fit,
-                                             Eigen::Index index, double lower, double upper, std::size_t count) {
-  // Reversal amplitudes: the extreme |x| of each stretch of travel in one direction that ends
-  // with a travel back of at least 1 % of the stroke (the noise cannot make one).
+std::vector<double> reversal_amplitudes(const FitSeries& s, const SeriesScales& scales) {
   std::vector<double> amplitudes;
   const double travel_back = 0.01 * scales.stroke;
   for (std::size_t r = 0; r < s.run_starts.size(); ++r) {
@@ -167,6 +164,12 @@ std::vector<Point> reversal_threshold_trials(const FitSeries& s, const SeriesSca
     }
   }
   std::sort(amplitudes.begin(), amplitudes.end());
+  return amplitudes;
+}
+
+std::vector<Point> reversal_threshold_trials(const FitSeries& s, const SeriesScales& scales, const Point& fit,
+                                             Eigen::Index index, double lower, double upper, std::size_t count) {
+  std::vector<double> amplitudes = reversal_amplitudes(s, scales);
   std::erase_if(amplitudes, [&](double a) {
     const double threshold = 0.995 * a / scales.stroke;
     return threshold < std::max(lower, 0.3) || threshold > std::min(upper, 0.98);

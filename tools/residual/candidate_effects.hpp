@@ -58,6 +58,9 @@ std::vector<Point> reversal_threshold_trials(const FitSeries& series, const Seri
 
 // Whether the effect has such a coordinate.
 bool has_reversal_threshold(const model::EffectInfo& effect);
+// The extreme |x| of each stretch of travel in one direction that ends with a travel back of at
+// least 1 % of the stroke (the noise cannot make one), ascending [m].
+std::vector<double> reversal_amplitudes(const FitSeries& series, const SeriesScales& scales);
 // The fit from `theta` with each reversal-threshold coordinate chosen among the trials above:
 // coarse by rank over every reversal, then every reversal between the best coarse one's
 // neighbours. Adds the observer passes it spent to `evaluations`.

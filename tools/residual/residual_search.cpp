@@ -339,6 +339,9 @@ struct AcceptedSet {
   std::vector<Effects> rivals;  // per effect: the candidates that also passed in its round
   model::DamperModel model;
   double validation = 0.0;
+  // Per effect, the others refined without it, as the last revision pass left them (empty when
+  // the set never had two effects).
+  std::vector<Reduced> without;
 };
 
 void revise_set(Search& s, AcceptedSet& set, ResidualResult& result) {
@@ -365,25 +368,110 @@ void revise_set(Search& s, AcceptedSet& set, ResidualResult& result) {
   }
   while (set.effects.size() >= 2) {
     std::size_t weakest = set.effects.size();
-    Reduced weakest_rest;
     double weakest_cost = threshold;
+    std::vector<Reduced> rests;
     for (std::size_t k = 0; k < set.effects.size(); ++k) {
-      Reduced rest = without_effect(s, set.model, set.effects, set.effects[k]);
-      const double cost = 1.0 - set.validation / std::max(rest.validation, 1e-300);
+      rests.push_back(without_effect(s, set.model, set.effects, set.effects[k]));
+      const double cost = 1.0 - set.validation / std::max(rests.back().validation, 1e-300);
       if (cost < weakest_cost) {
         weakest = k;
         weakest_cost = cost;
-        weakest_rest = std::move(rest);
       }
     }
-    if (weakest == set.effects.size()) break;
+    if (weakest == set.effects.size()) {
+      set.without = std::move(rests);
+      break;
+    }
+    Reduced& weakest_rest = rests[weakest];
     result.revisions.push_back(format("dropped %s: without it the validation RMS rises only %.1f%% (%.4g -> %.4g N)",
                                       std::string(set.effects[weakest]->name).c_str(), 100.0 * weakest_cost,
                                       set.validation, weakest_rest.validation));
     set.effects.erase(set.effects.begin() + static_cast<std::ptrdiff_t>(weakest));
     set.rivals.erase(set.rivals.begin() + static_cast<std::ptrdiff_t>(weakest));
-    set.model = weakest_rest.model;
+    set.model = std::move(weakest_rest.model);
     set.validation = weakest_rest.validation;
+  }
+}
+
+double viscous_coefficient(const model::DamperModel& m) {
+  return model::BinghamDamper(m.geometry, m.fluid.viscosity).viscous_coefficient();
+}
+
+// The model with the damper terms the residual regression accepts on it (step 7's regression on
+// the fitting series, mains lines left out), and its validation RMS.
+struct WithTerms {
+  TermDiscovery discovery;
+  double validation = 0.0;
+  std::string names;  // "a + b"
+};
+WithTerms with_damper_terms(const Search& s, const model::DamperModel& m, double validation) {
+  std::vector<double> force, induction;
+  predict_force_and_induction(m, s.fit_series, force, induction);
+  WithTerms out;
+  out.discovery = discover_terms(s.fit_series, force, induction, viscous_coefficient(m), s.options.minimum_reduction);
+  std::erase_if(out.discovery.terms, [](const DiscoveredTerm& t) { return t.interference; });
+  out.validation = validation;
+  if (!out.discovery.has_terms()) return out;
+  model::DamperModel with_terms = m;
+  out.discovery.add_to(with_terms);
+  out.validation = s.validation_rms(with_terms);
+  for (const DiscoveredTerm& t : out.discovery.terms) out.names += (out.names.empty() ? "" : " + ") + t.term;
+  return out;
+}
+
+// Step 6b: each named effect against the library's terms, the model without it with the damper
+// terms the regression accepts in its place. Terms led by the effect's own physics (its
+// descriptor's kTermForms: a gas spring is a k x) are not rivals. The terms replace the effect
+// when they validate better than it by more than the threshold and, beside the terms, the
+// effect's removal costs less than the threshold (step 7 then finds them). Within the threshold
+// of each other the run cannot decide: the named effect stays, since its parameters mean
+// something physical, and both are reported.
+void weigh_effects_against_terms(Search& s, AcceptedSet& set, const model::DamperModel& base,
+                                 ResidualResult& result) {
+  if (!s.options.discover) return;
+  const double threshold = s.options.minimum_reduction;
+  for (std::size_t k = 0; k < set.effects.size(); ++k) {
+    const model::EffectInfo& effect = *set.effects[k];
+    Reduced rest;
+    if (set.effects.size() == 1) {
+      rest.model = base;
+      rest.validation = s.validation_rms(base);
+    } else if (k < set.without.size()) {
+      rest = set.without[k];
+    } else {
+      continue;
+    }
+    const WithTerms instead = with_damper_terms(s, rest.model, rest.validation);
+    if (!instead.discovery.has_terms()) continue;
+    // The first term carries most; those after it often correct what the base fit had absorbed.
+    const bool own_physics =
+        std::ranges::find(effect.term_forms, instead.discovery.terms.front().term) != effect.term_forms.end();
+    if (own_physics) continue;
+    const double terms_validation = instead.validation;
+    const char* terms = instead.names.c_str();
+    const bool terms_better = terms_validation < (1.0 - threshold) * set.validation;
+    const double beside = terms_better ? with_damper_terms(s, set.model, set.validation).validation : 0.0;
+    const TermRivalry verdict = weigh_terms_against_effect(set.validation, terms_validation, beside, threshold);
+    if (verdict == TermRivalry::kEffectStays) continue;
+    if (verdict == TermRivalry::kTermsReplace) {
+      result.revisions.push_back(format(
+          "replaced %s by the terms %s: validation RMS %.4g -> %.4g N (with both %.4g N)",
+          std::string(effect.name).c_str(), terms, set.validation, terms_validation, beside));
+      set.effects.erase(set.effects.begin() + static_cast<std::ptrdiff_t>(k));
+      set.rivals.erase(set.rivals.begin() + static_cast<std::ptrdiff_t>(k));
+      set.model = std::move(rest.model);
+      set.validation = rest.validation;
+      return;  // the other effects' rests included this one: no longer valid
+    }
+    const double margin = 1.0 - std::min(terms_validation, set.validation) / std::max(terms_validation, set.validation);
+    std::vector<std::string> group{std::string(effect.name)};
+    for (const DiscoveredTerm& t : instead.discovery.terms) group.push_back(t.term);
+    result.ambiguous.push_back(std::move(group));
+    result.ambiguity_tests.push_back(format(
+        "%s (validation RMS %.4g N) and the terms %s in its place (%.4g N) are within %.1f%% of each other; "
+        "to separate them, run: %s",
+        std::string(effect.name).c_str(), set.validation, terms, terms_validation, 100.0 * margin,
+        std::string(effect.separated_by).c_str()));
   }
 }
 
@@ -433,6 +521,44 @@ void name_ambiguities(const AcceptedSet& set, const std::vector<Effects>& groups
   }
 }
 
+// Step 6c: an accepted effect that acts only after reversals beyond a threshold, on a run whose
+// every reversal lies beyond it: the run cannot tell it from an effect that acts at every
+// reversal, so the best rival that passed in its round is named beside it (the effect is kept:
+// it validated better). Reads the accepted trials, so it runs after mark_final_set.
+void name_unplaced_thresholds(const Search& s, const AcceptedSet& set, ResidualResult& result) {
+  const std::vector<double> amplitudes = reversal_amplitudes(s.fit_series, s.scales);
+  if (amplitudes.empty()) return;
+  for (const model::EffectInfo* effect : set.effects) {
+    std::vector<double> x(effect->search.size());
+    effect->coordinates(set.model.effects, s.scales, x);
+    for (std::size_t k = 0; k < effect->search.size(); ++k) {
+      if (effect->search[k].kind != model::SearchCoordinate::Kind::kReversalThreshold) continue;
+      const double threshold = x[k] * s.scales.stroke;
+      if (amplitudes.front() <= threshold) continue;  // a reversal inside it places the threshold
+      const auto won = std::ranges::find_if(result.trials, [&](const CandidateTrial& t) {
+        return t.accepted && t.effect == effect->name;
+      });
+      if (won == result.trials.end()) continue;
+      const CandidateTrial* rival = nullptr;
+      for (const CandidateTrial& t : result.trials) {
+        if (t.round != won->round || t.effect == won->effect) continue;
+        if (!t.verdict.starts_with("passes") && !t.verdict.starts_with("ambiguous")) continue;
+        if (rival == nullptr || t.validation_rms < rival->validation_rms) rival = &t;
+      }
+      if (rival == nullptr) continue;
+      const std::vector<std::string> group{std::string(effect->name), rival->effect};
+      if (std::ranges::find(result.ambiguous, group) != result.ambiguous.end()) continue;
+      result.ambiguous.push_back(group);
+      result.ambiguity_tests.push_back(format(
+          "every reversal of the run lies beyond %s's threshold (%.3g mm; the smallest reversal at %.3g mm), so "
+          "the run cannot tell it from %s, which acts at every reversal (validation RMS %.4g N against %.4g N); "
+          "to separate them, run: %s",
+          won->effect.c_str(), 1e3 * threshold, 1e3 * amplitudes.front(), rival->effect.c_str(),
+          rival->validation_rms, won->validation_rms, std::string(effect->separated_by).c_str()));
+    }
+  }
+}
+
 // Steps 4-5: each round fits every remaining candidate; the best that passes the threshold is
 // accepted and polished, its rivals (those that also passed) are kept for the set revision, and
 // those within the threshold of it form an ambiguous group.
@@ -475,10 +601,8 @@ void discover(Search& s, model::DamperModel& model, ResidualResult& result) {
   predict_force_and_induction(model, s.full, result.predicted_after, induction);
   result.discovery = s.options.discover;
   if (!s.options.discover) return;
-  const TermDiscovery discovery =
-      discover_terms(s.full, result.predicted_after, induction,
-                     model::BinghamDamper(model.geometry, model.fluid.viscosity).viscous_coefficient(),
-                     s.options.minimum_reduction);
+  const TermDiscovery discovery = discover_terms(s.full, result.predicted_after, induction,
+                                                 viscous_coefficient(model), s.options.minimum_reduction);
   result.discovered = discovery.terms;
   for (const auto& group : discovery.ambiguous) {
     result.ambiguous.push_back(group);
@@ -494,6 +618,16 @@ void discover(Search& s, model::DamperModel& model, ResidualResult& result) {
 }
 
 }  // namespace
+
+TermRivalry weigh_terms_against_effect(double effect_validation, double terms_validation, double both_validation,
+                                       double threshold) {
+  if (terms_validation < (1.0 - threshold) * effect_validation) {
+    const double removal_cost = 1.0 - both_validation / std::max(terms_validation, 1e-300);
+    return removal_cost < threshold ? TermRivalry::kTermsReplace : TermRivalry::kEffectStays;
+  }
+  const double margin = 1.0 - std::min(terms_validation, effect_validation) / std::max(terms_validation, effect_validation);
+  return margin < threshold ? TermRivalry::kAmbiguous : TermRivalry::kEffectStays;
+}
 
 ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions& options) {
   const auto started = std::chrono::steady_clock::now();
@@ -521,9 +655,11 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   std::vector<Effects> ambiguous_groups;
   AcceptedSet set = greedy_rounds(s, base.model, result, ambiguous_groups);
   revise_set(s, set, result);
+  weigh_effects_against_terms(s, set, base.model, result);
   name_ambiguities(set, ambiguous_groups, result);
   for (const model::EffectInfo* e : set.effects) result.accepted.emplace_back(e->name);
   mark_final_set(result);
+  name_unplaced_thresholds(s, set, result);
   // 7. Discovery on what the named effects left.
   model::DamperModel current = set.model;
   discover(s, current, result);

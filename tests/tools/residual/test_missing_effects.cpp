@@ -94,3 +94,54 @@ TEST(MissingEffects, APairOfEffectsIsNamedAsASet) {
   EXPECT_EQ(named, (std::vector<std::string>{"coil_lag", "gas_spring"})) << residual_summary({run}, r);
   EXPECT_TRUE(r.ambiguous.empty()) << residual_summary({run}, r);
 }
+
+// The Table 4 run is one sine: every reversal lies beyond the air's threshold, so the run shows
+// a force lost after every reversal and cannot say whether the air acts only at the stroke
+// ends. The air is kept (it fits the shape far better) and named beside pre-yield, with the
+// run that would separate them.
+TEST(MissingEffects, AirWhoseEveryReversalIsBeyondItsThresholdIsAmbiguousWithPreyield) {
+  const mrd::record::RecordedRun run =
+      residual_testing::simulated_recorded_run(RunProfile::kTable4, "1kN", {{"stroke_end_air", 1.0}}, 4.0);
+  const ResidualResult r = residual_testing::analyse(run);
+  ASSERT_EQ(r.accepted, std::vector<std::string>{"stroke_end_air"}) << residual_summary({run}, r);
+  const std::vector<std::string> group{"stroke_end_air", "preyield_hysteresis"};
+  const auto it = std::ranges::find(r.ambiguous, group);
+  ASSERT_NE(it, r.ambiguous.end()) << residual_summary({run}, r);
+  const std::string& test = r.ambiguity_tests[static_cast<std::size_t>(it - r.ambiguous.begin())];
+  EXPECT_NE(test.find("every reversal of the run lies beyond"), std::string::npos) << test;
+  EXPECT_NE(test.find("reversals both inside and beyond"), std::string::npos) << test;
+}
+
+// Band-limited motion reverses inside and beyond the threshold: the run places it, and no
+// ambiguity is claimed.
+TEST(MissingEffects, AirWithReversalsInsideAndBeyondItsThresholdIsNamedAlone) {
+  const mrd::record::RecordedRun run =
+      residual_testing::simulated_recorded_run(RunProfile::kTelegraph, "1kN", {{"stroke_end_air", 2.0}}, 4.0);
+  const ResidualResult r = residual_testing::analyse(run);
+  ASSERT_EQ(r.accepted, std::vector<std::string>{"stroke_end_air"}) << residual_summary({run}, r);
+  EXPECT_TRUE(r.ambiguous.empty()) << residual_summary({run}, r);
+}
+
+// A spring with no preload is exactly the library's `displacement` term: the gas spring's own
+// physics (its descriptor's term forms), not a rival, so no ambiguity is claimed between them.
+TEST(MissingEffects, AGasSpringIsNotAmbiguousWithItsOwnDisplacementTerm) {
+  mrd::record::RecordedRun run = residual_testing::simulated_recorded_run(RunProfile::kTelegraph, "1kN", {}, 4.0);
+  constexpr double kStiffness = 3000.0;  // [N/m]: about 45 N at the stroke, 20 times the noise
+  for (std::size_t i = 0; i < run.force.size(); ++i) run.force[i] += kStiffness * run.displacement[i];
+  const ResidualResult r = residual_testing::analyse(run);
+  ASSERT_EQ(r.accepted, std::vector<std::string>{"gas_spring"}) << residual_summary({run}, r);
+  EXPECT_NEAR(r.final_model.effects.get<mrd::model::GasSpringEffect>().stiffness, kStiffness, 0.1 * kStiffness);
+  EXPECT_TRUE(r.ambiguous.empty()) << residual_summary({run}, r);
+}
+
+// Step 6b's rule, at its edges (threshold 10 %).
+TEST(MissingEffects, TermsReplaceAnEffectOnlyWhenClearlyBetterAndItAddsNothingBesideThem) {
+  using enum TermRivalry;
+  EXPECT_EQ(weigh_terms_against_effect(10.0, 8.0, 7.5, 0.1), kTermsReplace);   // better by 20 %; both 6 % less
+  EXPECT_EQ(weigh_terms_against_effect(10.0, 8.0, 7.0, 0.1), kEffectStays);    // beside them it still gains 12.5 %
+  EXPECT_EQ(weigh_terms_against_effect(10.0, 9.5, 0.0, 0.1), kAmbiguous);      // terms 5 % better
+  EXPECT_EQ(weigh_terms_against_effect(10.0, 10.5, 0.0, 0.1), kAmbiguous);     // effect 4.8 % better
+  EXPECT_EQ(weigh_terms_against_effect(10.0, 11.5, 0.0, 0.1), kEffectStays);   // effect 13 % better
+  EXPECT_EQ(weigh_terms_against_effect(10.0, 9.05, 0.0, 0.1), kAmbiguous);     // 9.5 % better: within
+  EXPECT_EQ(weigh_terms_against_effect(10.0, 8.95, 8.5, 0.1), kTermsReplace);  // 10.5 % better
+}
