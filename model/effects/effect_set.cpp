@@ -30,6 +30,8 @@ EffectInfo info_of() {
   info.named_candidate = E::kNamedCandidate;
   info.search = E::kSearch;
   info.linear = E::kLinear;
+  info.linear_non_negative = E::kLinearNonNegative;
+  static_assert(E::kLinearNonNegative.empty() || E::kLinearNonNegative.size() == E::kLinear.size());
   info.enabled = [](const EffectSet& s) { return s.get<E>().enabled; };
   info.disable = [](EffectSet& s) { s.get<E>().enabled = false; };
   info.apply = [](EffectSet& s, std::span<const double> x, const RunScales& scales) {
@@ -39,6 +41,9 @@ EffectInfo info_of() {
     E::coordinates(s.get<E>(), scales, x);
   };
   info.add_linear = [](EffectSet& s, std::span<const double> c) { E::add_linear(s.get<E>(), c); };
+  info.linear_values = [](const EffectSet& s, std::span<double> v) {
+    if (s.get<E>().enabled) E::linear_values(s.get<E>(), v);
+  };
   info.scale_force = [](EffectSet& s, double a) { E::scale_force(s.get<E>(), a); };
   info.implausible = [](const EffectSet& s, const RunScales& scales) { return E::implausible(s.get<E>(), scales); };
   info.report = [](const EffectSet& s) {

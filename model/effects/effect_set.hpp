@@ -102,6 +102,7 @@ struct EffectInfo {
   bool named_candidate = true;  // searched by mrd-residual and sized by the simulator
   std::span<const SearchCoordinate> search;
   std::span<const LinearColumn> linear;
+  std::span<const bool> linear_non_negative;  // per linear column; empty: no sign constraint
   bool (*enabled)(const EffectSet&);
   void (*disable)(EffectSet&);
   // The search coordinates x of the effect set into `effects` (the effect on), and back.
@@ -109,6 +110,8 @@ struct EffectInfo {
   void (*coordinates)(const EffectSet& effects, const RunScales& scales, std::span<double> x);
   // Adds the coefficients of the linear columns fitted on top (the effect on).
   void (*add_linear)(EffectSet& effects, std::span<const double> coefficients);
+  // The present values of the parameters the linear columns add to (0 while the effect is off).
+  void (*linear_values)(const EffectSet& effects, std::span<double> values);
   void (*scale_force)(EffectSet& effects, double force_scale);
   std::optional<std::string> (*implausible)(const EffectSet& effects, const RunScales& scales);
   std::vector<std::pair<std::string, double>> (*report)(const EffectSet& effects);

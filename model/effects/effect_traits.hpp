@@ -23,6 +23,9 @@ namespace mrd::model {
 //                       the parameters a run can identify, as search coordinates whose
 //                       ranges follow the run's scales (RunScales)
 //   kLinear, add_linear parameters that enter the force linearly (fitted by least squares)
+//   kLinearNonNegative, linear_values
+//                       which of them physics keeps >= 0, and their present values (the fit
+//                       holds such a parameter at 0 rather than let it go negative)
 //   scale_force         rescales its force-valued parameters with the damper's force scale
 //   implausible         why a fitted instance is not a physical one, nullopt when it is
 //   report(p, v)        the fitted values for reports, v(json_key_with_unit, value) each
@@ -69,10 +72,12 @@ struct EffectTraitsBase {
   static constexpr std::array<std::string_view, 0> kTermForms{};
   static constexpr std::array<SearchCoordinate, 0> kSearch{};
   static constexpr std::array<LinearColumn, 0> kLinear{};
+  static constexpr std::array<bool, 0> kLinearNonNegative{};
 
   static void apply(P&, std::span<const double>, const RunScales&) {}
   static void coordinates(const P&, const RunScales&, std::span<double>) {}
   static void add_linear(P&, std::span<const double>) {}
+  static void linear_values(const P&, std::span<double>) {}
   static void scale_force(P&, double) {}
   static std::optional<std::string> implausible(const P&, const RunScales&) { return std::nullopt; }
   template <typename Visitor>

@@ -13,7 +13,9 @@ namespace mrd::model {
 //   F_gas = F0 + k x,
 // F0 the preload at x = 0 and k the gas stiffness (rod volume entering the accumulator). Spencer
 // et al. (1997) model it the same way, k1 (x - x0), on Dyke's damper: k1 = 500 N/m, k1 x0 = 71.5 N.
-// Both carry the sign convention of the force measurement, so either may be negative.
+// F0 carries the sign convention of the force measurement and may be negative; in the project's
+// convention (x and F positive in extension) the compressed gas pushes harder, k >= 0, which
+// the fits hold to.
 struct GasSpringParams {
   bool enabled = false;
   double preload = 0.0;    // F0 [N]
@@ -54,6 +56,12 @@ struct GasSpringEffect : EffectTraitsBase<GasSpringParams> {
   }
 
   static constexpr std::array kLinear = {LinearColumn::kConstant, LinearColumn::kDisplacement};
+  // A gas spring stiffens as it compresses; the preload carries the force's sign convention.
+  static constexpr std::array kLinearNonNegative = {false, true};
+  static void linear_values(const Params& p, std::span<double> v) {
+    v[0] = p.preload;
+    v[1] = p.stiffness;
+  }
   static void add_linear(Params& p, std::span<const double> c) {
     p.enabled = true;
     p.preload += c[0];

@@ -9,6 +9,8 @@ Its forms differ on purpose from sim::DamperPlant's:
   - coil_lag: a first-order lag on the FIELD H (not on the current);
   - stroke_end_air: dead travel, then a linear ramp after reversals beyond a threshold;
   - preyield_hysteresis: Bouc-Wen in Spencer's form with its own alpha z term (not a share of F_y);
+  - thermal_drift: adiabatic heating (no cooling), a hyperbolic viscosity law and a linear yield
+    law (the model: exponential viscosity, cooling towards ambient);
   - non-candidates: moving_mass, coulomb_friction, mains_hum, field_viscosity, bump_stop.
 Writes the project's recorded-run CSV (time_s, displacement_mm, current_A, force_N,
 velocity_mm_s) and a JSON manifest of the truth.
@@ -30,6 +32,8 @@ V0 = 2e-3              # [m/s] of the atan sign smoothing
 AMPLITUDE = 0.020      # [m]
 SCHEDULE = ([0.0025, 0.005, 0.010, 0.015, 0.020], [0.0, 0.15, 0.3, 0.5, 0.7, 1.0])
 NOISE_X, NOISE_F = 2e-6, 2.0
+HEAT_CAPACITY = 20.0   # [J/K] of the fluid that heats (thermal_drift)
+VISCOSITY_PER_K, YIELD_PER_K = 0.03, 0.004   # [1/K] at size 1
 
 
 def langevin(x):
@@ -117,6 +121,19 @@ def reversals_travel(x, threshold, reversal=1e-4):
     return travel, armed
 
 
+def adiabatic_heating(yield_part, viscous_part, v, size):
+    """The fluid's temperature rise from the power it dissipates, C dT/dt = F v, by explicit Euler,
+    and the factors it puts on the two parts: c0 / (1 + b dT) and tau_y (1 - c dT)."""
+    b, c = VISCOSITY_PER_K * size, YIELD_PER_K * size
+    f_visc, f_yield = np.ones_like(v), np.ones_like(v)
+    rise = 0.0
+    for i in range(len(v)):
+        f_visc[i], f_yield[i] = 1.0 / (1.0 + b * rise), max(1.0 - c * rise, 0.05)
+        power = (f_yield[i] * yield_part[i] + f_visc[i] * viscous_part[i]) * v[i]
+        rise += max(power, 0.0) / HEAT_CAPACITY / RATE
+    return f_visc, f_yield
+
+
 def bouc_wen(v, x_scale):
     """Spencer's z: dz/dt = -gamma |v| z |z|^(n-1) - beta v |z|^n + A v, n = 2."""
     A, n = 1.0, 2
@@ -145,10 +162,15 @@ def simulate(args):
     F_y = F_YIELD_MAX * np.tanh(B / B_SAT)
     sign = 2 / np.pi * np.arctan(v / V0)
     c0 = C0 * (1 + 0.5 * size.get("field_viscosity", 0) * B / 1.3)
-    fluid = F_y * sign + c0 * v
+    yield_part, viscous_part, elastic_part = F_y * sign, c0 * v, 0.0
     if "preyield_hysteresis" in size:
         z = bouc_wen(v, 0.2e-3)
-        fluid = F_y * (0.8 * sign + 0.2 * z / 0.2e-3 / math.sqrt(2) * math.sqrt(2)) + c0 * v + 5e5 * size["preyield_hysteresis"] * z
+        yield_part = F_y * (0.8 * sign + 0.2 * z / 0.2e-3)
+        elastic_part = 5e5 * size["preyield_hysteresis"] * z
+    if "thermal_drift" in size:
+        f_visc, f_yield = adiabatic_heating(yield_part, viscous_part, v, size["thermal_drift"])
+        yield_part, viscous_part = f_yield * yield_part, f_visc * viscous_part
+    fluid = yield_part + viscous_part + elastic_part
     if "stroke_end_air" in size:
         travel, armed = reversals_travel(x, 0.015)
         dead, ramp = 1.0e-3, 3.0e-3

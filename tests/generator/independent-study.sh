@@ -29,14 +29,19 @@ PY
 }
 run clean-table4 table4
 run clean-telegraph telegraph
-for e in coil_lag gas_spring sensor_delay preyield_hysteresis stroke_end_air; do
-  profile=table4; [[ $e == coil_lag ]] && profile=telegraph
-  run "$e" "$profile" "$e:2"
+effects=(coil_lag gas_spring sensor_delay preyield_hysteresis stroke_end_air thermal_drift)
+# The coil lag shows where the current switches: its runs use the telegraph current.
+profile_for() { [[ " $* " == *" coil_lag "* ]] && echo telegraph || echo table4; }
+for e in "${effects[@]}"; do
+  run "$e" "$(profile_for "$e")" "$e:2"
 done
 run air-beyond beyond stroke_end_air:2
-run coil_lag+gas_spring telegraph coil_lag:2 gas_spring:2
-run gas_spring+preyield table4 gas_spring:2 preyield_hysteresis:2
-run sensor_delay+air table4 sensor_delay:2 stroke_end_air:2
+for ((i = 0; i < ${#effects[@]}; ++i)); do
+  for ((j = i + 1; j < ${#effects[@]}; ++j)); do
+    a=${effects[i]} b=${effects[j]}
+    run "$a+$b" "$(profile_for "$a" "$b")" "$a:2" "$b:2"
+  done
+done
 for e in moving_mass coulomb_friction mains_hum field_viscosity bump_stop; do
   run "$e" telegraph "$e:2"
 done

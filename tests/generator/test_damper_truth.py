@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """The generator against analytic limits, so that its truth can be trusted: the field lag's step
-response, the air's dead travel and linear ramp, J-A near saturation and at its initial slope."""
+response, the air's dead travel and linear ramp, J-A near saturation and at its initial slope, the
+fluid's adiabatic heating."""
 import math, os, sys, unittest
 
 import numpy as np
@@ -31,6 +32,16 @@ class Generator(unittest.TestCase):
         Ms, a, alpha, c = (g.JA[n] for n in ("Ms", "a", "alpha", "c"))
         chi = c * Ms / (3 * a - alpha * c * Ms)
         self.assertLess(abs((Bs[1] / (g.MU0 * Hs[1]) - 1) / chi - 1), 0.5)
+
+    def test_adiabatic_heating_follows_the_closed_form_of_a_constant_viscous_power(self):
+        # C dT/dt = c0 v^2 / (1 + b T)  =>  T + b T^2 / 2 = c0 v^2 t / C.
+        v = np.full(4000, 0.05)
+        f_visc, f_yield = g.adiabatic_heating(np.zeros_like(v), g.C0 * v, v, 2.0)
+        b = 2.0 * g.VISCOSITY_PER_K
+        energy = g.C0 * 0.05 ** 2 * (len(v) / g.RATE) / g.HEAT_CAPACITY
+        rise = (math.sqrt(1 + 2 * b * energy) - 1) / b
+        self.assertAlmostEqual(1.0 / f_visc[-1], 1 + b * rise, delta=1e-3)
+        self.assertAlmostEqual(f_yield[-1], 1 - 2.0 * g.YIELD_PER_K * rise, delta=1e-3)
 
 
 if __name__ == "__main__":

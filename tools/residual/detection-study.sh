@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The detection table of docs/CLOSING-THE-LOOP.md: simulated runs that carry one undeclared
-# effect (or none), at two sizes, on both damper classes and two profiles, each analysed by
-# mrd-residual. Prints one markdown row per run.
+# effect (or none), at two sizes, on both damper classes and two profiles, then every pair of
+# effects at their nominal size on two of those, each analysed by mrd-residual. Prints one
+# markdown row per run (about 8 min on 2 cores).
 # Usage: tools/residual/detection-study.sh [BUILD_DIR] [OUT_DIR] [SEED]
 set -euo pipefail
 build=${1:-build/release}
@@ -12,28 +13,44 @@ simulate="$build/tools/simulation/mrd-simulate-run"
 residual="$build/tools/mrd-residual"
 echo "| class | profile | carried | named | RMS before [N] | RMS after [N] | factor | seconds |"
 echo "|---|---|---|---|---:|---:|---:|---:|"
-for class in 50kN 1kN; do
-  for profile in table4 telegraph; do
-    for effect in clean coil_lag preyield_hysteresis gas_spring thermal_drift sensor_delay stroke_end_air; do
-      for size in small large; do
-        [[ $effect == clean && $size == large ]] && continue
-        name="$class-$profile-$effect-$size"
-        args=(--damper "$class" --profile "$profile" --seed "$seed" --out "$out/$name.csv")
-        [[ $effect != clean ]] && args+=(--effect "$effect:$size")
-        "$simulate" "${args[@]}" > /dev/null
-        start=$(date +%s.%N)
-        "$residual" "$out/$name.csv" --json "$out/$name.json" > "$out/$name.txt"
-        end=$(date +%s.%N)
-        python3 - "$out/$name.json" "$class" "$profile" "$effect" "$size" "$start" "$end" <<'PY'
+effects=(coil_lag preyield_hysteresis gas_spring thermal_drift sensor_delay stroke_end_air)
+study() {  # CLASS PROFILE NAME CARRIED...   (CARRIED: NAME:SIZE; none for a clean run)
+  local class=$1 profile=$2 name=$3; shift 3
+  local args=(--damper "$class" --profile "$profile" --seed "$seed" --out "$out/$name.csv")
+  for carried in "$@"; do args+=(--effect "$carried"); done
+  "$simulate" "${args[@]}" > /dev/null
+  local start end
+  start=$(date +%s.%N)
+  "$residual" "$out/$name.csv" --json "$out/$name.json" > "$out/$name.txt"
+  end=$(date +%s.%N)
+  python3 - "$out/$name.json" "$class" "$profile" "$start" "$end" "$@" <<'PY'
 import json, sys
 r = json.load(open(sys.argv[1]))
-cls, profile, effect, size, start, end = sys.argv[2:]
-carried = "none" if effect == "clean" else f"{effect}:{size}"
+cls, profile, start, end = sys.argv[2:6]
+carried = ", ".join(sys.argv[6:]) or "none"
 named = ", ".join(r["effects"]) or "none"
+alike = "; ".join(" ~ ".join(g) for g in r.get("ambiguous", []))
+alike = f" (ambiguous: {alike})" if alike else ""
 factor = r["rms_before_N"] / r["rms_after_N"] if r["rms_after_N"] > 0 else float("nan")
-print(f"| {cls} | {profile} | {carried} | {named} | {r['rms_before_N']:.4g} | {r['rms_after_N']:.4g} | {factor:.3g} | {float(end) - float(start):.1f} |")
+print(f"| {cls} | {profile} | {carried} | {named}{alike} | {r['rms_before_N']:.4g} | {r['rms_after_N']:.4g} | {factor:.3g} | {float(end) - float(start):.1f} |")
 PY
+}
+for class in 50kN 1kN; do
+  for profile in table4 telegraph; do
+    study "$class" "$profile" "$class-$profile-clean-small"
+    for effect in "${effects[@]}"; do
+      for size in small large; do
+        study "$class" "$profile" "$class-$profile-$effect-$size" "$effect:$size"
       done
+    done
+  done
+done
+for run in 50kN:table4 1kN:telegraph; do
+  class=${run%:*} profile=${run#*:}
+  for ((i = 0; i < ${#effects[@]}; ++i)); do
+    for ((j = i + 1; j < ${#effects[@]}; ++j)); do
+      a=${effects[i]} b=${effects[j]}
+      study "$class" "$profile" "$class-$profile-$a+$b" "$a:medium" "$b:medium"
     done
   done
 done

@@ -121,8 +121,54 @@ void fill_columns(const FitSeries& s, const std::vector<double>& predicted, cons
 
 }  // namespace
 
+namespace {
+
+// A coefficient c_j whose parameter a v_j + c_j must stay >= 0 (v_j its present value, scaled
+// by the force scale a as apply_linear_terms does).
+struct NonNegative {
+  int column;
+  double present;
+};
+
+std::vector<NonNegative> non_negative_columns(const LinearEffects& effects, const model::EffectSet* present) {
+  std::vector<NonNegative> out;
+  if (present == nullptr) return out;
+  int c = 2;
+  for (const model::EffectInfo* e : effects) {
+    double values[kMaxLinearColumns] = {};
+    e->linear_values(*present, std::span<double>(values, e->linear.size()));
+    for (std::size_t k = 0; k < e->linear.size(); ++k, ++c) {
+      if (!e->linear_non_negative.empty() && e->linear_non_negative[k]) out.push_back({c, values[k]});
+    }
+  }
+  return out;
+}
+
+// Least squares with the columns in `held` tied to the force scale (c_j = -v_j a): theta = M
+// theta', M the identity less the held columns, which take -v_j in the force scale's column.
+NormalVector solve_holding(const NormalMatrix& normal, const NormalVector& rhs, const std::vector<NonNegative>& held) {
+  const int n = static_cast<int>(normal.rows());
+  const int free = n - static_cast<int>(held.size());
+  NormalMatrix m = NormalMatrix::Zero(n, free);
+  int f = 0;
+  for (int r = 0; r < n; ++r) {
+    const auto tied = std::ranges::find(held, r, &NonNegative::column);
+    if (tied != held.end()) {
+      m(r, 0) = -tied->present;
+    } else {
+      m(r, f++) = 1.0;
+    }
+  }
+  NormalMatrix reduced = m.transpose() * normal * m;
+  for (int r = 0; r < free; ++r) reduced(r, r) += 1e-12 * (reduced(r, r) + 1.0);
+  const NormalVector theta = reduced.ldlt().solve(NormalVector(m.transpose() * rhs));
+  return m * theta;
+}
+
+}  // namespace
+
 LinearTerms fit_linear_terms(const FitSeries& series, const std::vector<double>& predicted,
-                             const LinearEffects& effects) {
+                             const LinearEffects& effects, const model::EffectSet* present) {
   const int n = column_count(effects);
   NormalMatrix normal = NormalMatrix::Zero(n, n);
   NormalVector rhs = NormalVector::Zero(n);
@@ -136,8 +182,22 @@ LinearTerms fit_linear_terms(const FitSeries& series, const std::vector<double>&
     }
   }
   // A light ridge keeps the solve defined when a column is all zero (no force predicted at all).
-  for (int r = 0; r < n; ++r) normal(r, r) += 1e-12 * (normal(r, r) + 1.0);
-  const NormalVector solution = normal.ldlt().solve(rhs);
+  const std::vector<NonNegative> signed_columns = non_negative_columns(effects, present);
+  std::vector<NonNegative> held;
+  NormalVector solution = solve_holding(normal, rhs, held);
+  // Active set: hold each parameter that the solve drives negative, until none is.
+  for (std::size_t pass = 0; pass < signed_columns.size(); ++pass) {
+    bool more = false;
+    for (const NonNegative& s : signed_columns) {
+      const bool is_held = std::ranges::find(held, s.column, &NonNegative::column) != held.end();
+      if (!is_held && std::max(solution[0], 0.0) * s.present + solution[s.column] < 0.0) {
+        held.push_back(s);
+        more = true;
+      }
+    }
+    if (!more) break;
+    solution = solve_holding(normal, rhs, held);
+  }
   LinearTerms t;
   t.force_scale = std::max(solution[0], 0.0);
   t.extra_viscous = solution[1];
@@ -191,7 +251,7 @@ double fitness_at(const ParameterSpace& space, const FitSeries& series, const Po
   const model::DamperModel model = space.build(theta);
   if (!model::validate(model).ok()) return 1e300;
   predict_force(model, series, buffer, space.induction.get());
-  const LinearTerms terms = fit_linear_terms(series, buffer, space.linear);
+  const LinearTerms terms = fit_linear_terms(series, buffer, space.linear, &model.effects);
   const double rms = linear_fit_rms(series, buffer, terms);
   return std::isfinite(rms) ? rms : 1e300;
 }
@@ -229,7 +289,7 @@ FittedModel finish(const ParameterSpace& space, const FitSeries& series, const P
   std::vector<double> force;
   const model::DamperModel model = space.build(theta);
   predict_force(model, series, force, space.induction.get());
-  out.linear = fit_linear_terms(series, force, space.linear);
+  out.linear = fit_linear_terms(series, force, space.linear, &model.effects);
   out.fitting_rms = linear_fit_rms(series, force, out.linear);
   out.model = apply_linear_terms(model, out.linear);
   return out;

@@ -62,8 +62,12 @@ struct LinearTerms {
   LinearEffects effects;
   std::vector<double> coefficients;  // c_j, the effects' columns in order
 };
+// With `present` (the effects of the model that predicted the force), a coefficient whose
+// parameter must stay >= 0 (the descriptor's kLinearNonNegative) is held where it makes that
+// parameter 0 when the unconstrained solve would make it negative: a physical fit of the
+// others, not a rejected one.
 LinearTerms fit_linear_terms(const FitSeries& series, const std::vector<double>& predicted,
-                             const LinearEffects& effects);
+                             const LinearEffects& effects, const model::EffectSet* present = nullptr);
 // F_fit - (a F_m + ...) as above, over the fitting samples: the search's fitness [N RMS].
 double linear_fit_rms(const FitSeries& series, const std::vector<double>& predicted,
                       const LinearTerms& terms);
