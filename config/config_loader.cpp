@@ -163,6 +163,13 @@ void read_safety(TomlReader& in, control::SupervisorConfig& s) {
   in.get("safety.current_tolerance", s.current_tolerance);
   in.get("safety.current_disagreement_periods", s.current_disagreement_periods);
   in.get("safety.write_failure_periods", s.write_failure_periods);
+  in.get("safety.readback_timeout_periods", s.readback_timeout_periods);
+  in.get("safety.require_readback", s.require_readback);
+  in.get("safety.line_failure_periods", s.line_failure_periods);
+  in.get("safety.observer_recovery_periods", s.observer_recovery_periods);
+  in.get("safety.max_speed", s.max_speed);
+  in.get("safety.driver_fault_limit", s.driver_fault_limit);
+  in.get("safety.driver_fault_window", s.driver_fault_window);
   in.get("safety.overrun_limit", s.overrun_limit);
   in.get("safety.overrun_window", s.overrun_window);
   in.get("safety.fail_safe_current", s.fail_safe_current);

@@ -26,13 +26,22 @@ std::string_view to_string(Trigger t) {
     case Trigger::kSampleNotFinite: return "sample_not_finite";
     case Trigger::kSampleCorrupted: return "sample_corrupted";
     case Trigger::kSampleFrozen: return "sample_frozen";
+    case Trigger::kSampleJump: return "sample_jump";
+    case Trigger::kSampleFromFuture: return "sample_from_future";
     case Trigger::kDriverFault: return "driver_fault";
     case Trigger::kFaultLineUnreadable: return "fault_line_unreadable";
     case Trigger::kCurrentDisagreement: return "current_disagreement";
     case Trigger::kSetpointWriteFailed: return "setpoint_write_failed";
+    case Trigger::kSetpointRefused: return "setpoint_refused";
+    case Trigger::kReadbackLost: return "readback_lost";
+    case Trigger::kLineWriteFailed: return "line_write_failed";
+    case Trigger::kDisableFailed: return "disable_failed";
+    case Trigger::kObserverRecovery: return "observer_recovery";
+    case Trigger::kCommandNotFinite: return "command_not_finite";
     case Trigger::kOverrun: return "overrun";
     case Trigger::kRepeatedOverruns: return "repeated_overruns";
     case Trigger::kShutdown: return "shutdown";
+    case Trigger::kOperatorClear: return "operator_clear";
     case Trigger::kCount: break;
   }
   return "?";
@@ -55,6 +64,17 @@ ValidationReport SupervisorConfig::validate() const {
           "must be a finite value > 0 A");
   at_least("current_disagreement_periods", current_disagreement_periods, 1);
   at_least("write_failure_periods", write_failure_periods, 1);
+  at_least("readback_timeout_periods", readback_timeout_periods, 0);
+  if (require_readback) {
+    r.check(readback_timeout_periods > 0, "require_readback",
+            "needs safety.readback_timeout_periods > 0 to know how long to wait");
+  }
+  at_least("line_failure_periods", line_failure_periods, 1);
+  at_least("observer_recovery_periods", observer_recovery_periods, 1);
+  r.check(std::isfinite(max_speed) && max_speed >= 0.0, "max_speed", "must be a finite value >= 0 m/s (0: off)");
+  r.check(driver_fault_limit >= 1 && driver_fault_limit <= 16, "driver_fault_limit",
+          "must be 1..16, got " + std::to_string(driver_fault_limit));
+  at_least("driver_fault_window", driver_fault_window, 1);
   at_least("overrun_limit", overrun_limit, 1);
   at_least("overrun_window", overrun_window, 1);
   r.check(std::isfinite(fail_safe_current), "fail_safe_current", "must be finite");
@@ -76,6 +96,7 @@ std::uint64_t TransitionCounts::total() const {
 std::uint64_t TransitionCounts::into(SupervisorState to) const {
   std::uint64_t sum = 0;
   for (std::size_t from = 0; from < kStates; ++from) {
+    if (static_cast<SupervisorState>(from) == to) continue;
     for (std::size_t why = 0; why < kTriggers; ++why) {
       sum += get(static_cast<SupervisorState>(from), to, static_cast<Trigger>(why));
     }
@@ -90,11 +111,27 @@ Trigger trigger_of(SampleCheck c) {
     case SampleCheck::kNotFinite: return Trigger::kSampleNotFinite;
     case SampleCheck::kCorrupted: return Trigger::kSampleCorrupted;
     case SampleCheck::kFrozen: return Trigger::kSampleFrozen;
+    case SampleCheck::kJump: return Trigger::kSampleJump;
+    case SampleCheck::kFromFuture: return Trigger::kSampleFromFuture;
     case SampleCheck::kMissing:
     case SampleCheck::kStale: return Trigger::kSampleMissing;
     case SampleCheck::kFresh: break;
   }
   return Trigger::kNone;
+}
+
+// SAFE entries that point at the driver or its wiring: repeated, they latch.
+bool is_driver_side(Trigger t) {
+  switch (t) {
+    case Trigger::kDriverFault:
+    case Trigger::kFaultLineUnreadable:
+    case Trigger::kCurrentDisagreement:
+    case Trigger::kSetpointWriteFailed:
+    case Trigger::kSetpointRefused:
+    case Trigger::kReadbackLost:
+    case Trigger::kLineWriteFailed: return true;
+    default: return false;
+  }
 }
 }  // namespace
 
@@ -104,6 +141,15 @@ void Supervisor::update_counters(const SupervisorInputs& in) {
   run(bad_samples_, is_bad_value(in.sample));
   run(disagreeing_, in.current_disagrees);
   run(failed_writes_, in.setpoint_write_failed);
+  run(failed_lines_, in.line_write_failed);
+  run(failed_disables_, in.disable_failed);
+  run(recovering_, in.observer_recovered);
+  if (in.setpoints_refused > 0) {
+    refused_ += in.setpoints_refused;
+  } else if (in.setpoint_accepted) {
+    refused_ = 0;
+  }
+  ++periods_;
   if (in.overruns > 0) {
     overruns_ += in.overruns;
     clean_periods_ = 0;
@@ -121,6 +167,10 @@ Trigger Supervisor::hard_trigger(const SupervisorInputs& in) const {
   if (without_sample_ > config_.stale_periods) return Trigger::kSensorStale;
   if (disagreeing_ >= config_.current_disagreement_periods) return Trigger::kCurrentDisagreement;
   if (failed_writes_ >= config_.write_failure_periods) return Trigger::kSetpointWriteFailed;
+  if (refused_ >= config_.write_failure_periods) return Trigger::kSetpointRefused;
+  if (in.readback_lost) return Trigger::kReadbackLost;
+  if (failed_lines_ >= config_.line_failure_periods) return Trigger::kLineWriteFailed;
+  if (recovering_ >= config_.observer_recovery_periods) return Trigger::kObserverRecovery;
   if (overruns_ >= config_.overrun_limit) return Trigger::kRepeatedOverruns;
   return Trigger::kNone;
 }
@@ -130,6 +180,9 @@ Trigger Supervisor::soft_trigger(const SupervisorInputs& in) const {
   if (in.sample != SampleCheck::kFresh) return trigger_of(in.sample);
   if (in.current_disagrees) return Trigger::kCurrentDisagreement;
   if (in.setpoint_write_failed) return Trigger::kSetpointWriteFailed;
+  if (in.setpoints_refused > 0) return Trigger::kSetpointRefused;
+  if (in.line_write_failed) return Trigger::kLineWriteFailed;
+  if (in.observer_recovered) return Trigger::kObserverRecovery;
   if (in.overruns > 0) return Trigger::kOverrun;
   return Trigger::kNone;
 }
@@ -144,7 +197,44 @@ void Supervisor::go(SupervisorState to, Trigger why, hal::Timestamp now, Supervi
     // overrun after it counts as the first again.
     good_ = 0;
     overruns_ = 0;
+    if (is_driver_side(why)) count_driver_fault();
   }
+}
+
+// A driver that faults, recovers and faults again would cycle RUN <-> SAFE forever, each time
+// driving the coil again: at driver_fault_limit entries within driver_fault_window periods,
+// SAFE holds until an operator has looked.
+void Supervisor::count_driver_fault() {
+  const auto limit = static_cast<std::size_t>(config_.driver_fault_limit);
+  driver_faults_[driver_fault_count_ % limit] = periods_;
+  ++driver_fault_count_;
+  if (driver_fault_count_ < limit) return;
+  const std::int64_t oldest = driver_faults_[driver_fault_count_ % limit];
+  if (periods_ - oldest < config_.driver_fault_window) latched_ = true;
+}
+
+void Supervisor::clear_latch(hal::Timestamp now) {
+  if (!latched_) return;
+  latched_ = false;
+  driver_fault_count_ = 0;
+  failed_disables_ = 0;
+  SupervisorDecision ignored;
+  go(SupervisorState::kSafe, Trigger::kOperatorClear, now, ignored);
+}
+
+SupervisorDecision Supervisor::veto(Trigger why, hal::Timestamp now) {
+  SupervisorDecision d;
+  go(SupervisorState::kSafe, why, now, d);
+  fill(d);
+  return d;
+}
+
+void Supervisor::fill(SupervisorDecision& d) const {
+  d.state = state_;
+  d.in_control = state_ == SupervisorState::kRun || state_ == SupervisorState::kDegraded;
+  d.enable = d.in_control || config_.enable_in_safe;
+  d.toggle_heartbeat = d.in_control;
+  d.latched = latched_;
 }
 
 SupervisorDecision Supervisor::step(const SupervisorInputs& in, hal::Timestamp now) {
@@ -179,16 +269,18 @@ SupervisorDecision Supervisor::step(const SupervisorInputs& in, hal::Timestamp n
       }
       break;
     case SupervisorState::kSafe:
-      if (!shutdown_ && good_ >= config_.recovery_periods) {
+      if (!latched_ && failed_disables_ >= config_.line_failure_periods) {
+        // The driver cannot be switched off: only the 0 A setpoint holds it. No recovery
+        // until an operator has looked.
+        latched_ = true;
+        go(SupervisorState::kSafe, Trigger::kDisableFailed, now, d);
+      } else if (!shutdown_ && !latched_ && good_ >= config_.recovery_periods) {
         go(SupervisorState::kRun, Trigger::kGoodPeriods, now, d);
       }
       break;
     case SupervisorState::kCount: break;
   }
-  d.state = state_;
-  d.in_control = state_ == SupervisorState::kRun || state_ == SupervisorState::kDegraded;
-  d.enable = d.in_control || config_.enable_in_safe;
-  d.toggle_heartbeat = d.in_control;
+  fill(d);
   return d;
 }
 

@@ -28,13 +28,22 @@ enum class Trigger : std::uint8_t {
   kSampleNotFinite,       // NaN or infinite
   kSampleCorrupted,       // checksum/decode failure or sensor fault flag
   kSampleFrozen,          // new samples repeating one value for more than frozen_periods
+  kSampleJump,            // a sample further from the one before than max_speed allows
+  kSampleFromFuture,      // a sample stamped ahead of the cycle by more than the allowed age
   kDriverFault,           // the driver fault line is set
   kFaultLineUnreadable,   // the driver fault line cannot be read
   kCurrentDisagreement,   // measured current differs from the setpoint by more than the tolerance
   kSetpointWriteFailed,   // the driver refused or could not take the setpoint
+  kSetpointRefused,       // the device answered queued setpoints with a refusal
+  kReadbackLost,          // the driver's measured current stopped arriving
+  kLineWriteFailed,       // the enable or heartbeat line could not be written
+  kDisableFailed,         // the enable line could not be set low while the driver must be off
+  kObserverRecovery,      // the observer's J-A state went non-finite and was reset
+  kCommandNotFinite,      // the control law produced a non-finite current
   kOverrun,               // the previous cycle overran its period
   kRepeatedOverruns,      // overrun_limit overruns without overrun_window clean periods between
-  kShutdown,              // SIGTERM/SIGINT: SAFE and stay there
+  kShutdown,              // SIGTERM/SIGINT/SIGHUP: SAFE and stay there
+  kOperatorClear,         // an operator cleared the latch (SAFE stays SAFE until good periods)
   kCount
 };
 
@@ -51,7 +60,17 @@ struct SupervisorConfig {
                                      // row is frozen (0: no check; a rig at rest reads one value)
   double current_tolerance = 0.1;    // [A] |measured - setpoint| above this disagrees
   int current_disagreement_periods = 10;  // SAFE after this many consecutive disagreeing periods
-  int write_failure_periods = 3;     // SAFE after this many consecutive failed setpoint writes
+  int write_failure_periods = 3;     // SAFE after this many consecutive failed setpoint writes, or
+                                     // this many refused setpoints without one accepted between
+  int readback_timeout_periods = 50; // SAFE when the measured current has not arrived for more than
+                                     // this many periods (0: no readback expected) ...
+  bool require_readback = false;     // ... counted from the start, not only once one has arrived
+  int line_failure_periods = 3;      // SAFE after this many consecutive periods with a failed
+                                     // enable or heartbeat write; latched when disabling fails
+  int observer_recovery_periods = 3; // SAFE after observer recoveries in this many consecutive periods
+  double max_speed = 2.0;            // [m/s] a displacement moving faster between two samples jumps (0: off)
+  int driver_fault_limit = 3;        // SAFE latches (until an operator clears it) at this many
+  int driver_fault_window = 60000;   // driver-side SAFE entries within this many periods
   int overrun_limit = 3;             // SAFE after this many overruns ...
   int overrun_window = 1000;         // ... with fewer than this many clean periods between two
   double fail_safe_current = 0.0;    // [A] in INIT and SAFE
@@ -68,6 +87,12 @@ struct SupervisorInputs {
   std::optional<bool> driver_fault = false;  // nullopt: the line could not be read
   bool current_disagrees = false;            // judged by the loop, only when a reading exists
   bool setpoint_write_failed = false;        // the previous period's write
+  std::uint32_t setpoints_refused = 0;       // refusals the device reported since the previous period
+  bool setpoint_accepted = false;            // and whether it accepted one meanwhile
+  bool readback_lost = false;                // judged by the loop: no reading for too long
+  bool line_write_failed = false;            // the previous period's enable or heartbeat write
+  bool disable_failed = false;               // ... and it was the enable line going low
+  bool observer_recovered = false;           // the observer reset its J-A state this period
   std::uint32_t overruns = 0;                // periods missed before this one
 };
 
@@ -77,6 +102,7 @@ struct SupervisorDecision {
   bool in_control = false;           // RUN or DEGRADED: the control law drives the coil
   bool enable = false;               // driver enable line
   bool toggle_heartbeat = false;     // only while in control
+  bool latched = false;              // SAFE holds until an operator clears it
 };
 
 // Transition counts by (from, to, trigger). Written by the loop thread only, read by any thread
@@ -93,7 +119,8 @@ class TransitionCounts {
     return counts_[index(from, to, why)].get();
   }
   [[nodiscard]] std::uint64_t total() const;
-  // Every transition into `to`, whatever the trigger and the state it left.
+  // Every entry into `to` from another state, whatever the trigger (SAFE -> SAFE, a latch or
+  // an operator's clear, is not an entry).
   [[nodiscard]] std::uint64_t into(SupervisorState to) const;
 
  private:
@@ -112,10 +139,15 @@ class Supervisor {
   explicit Supervisor(const SupervisorConfig& config) : config_(config) {}
 
   SupervisorDecision step(const SupervisorInputs& in, hal::Timestamp now);
+  // This period's command cannot be written: SAFE now, with `why`, and the decision that holds.
+  SupervisorDecision veto(Trigger why, hal::Timestamp now);
   // From the next step on: SAFE with kShutdown, and no recovery.
   void request_shutdown() { shutdown_ = true; }
+  // An operator's clear: a latched SAFE may recover again after recovery_periods good periods.
+  void clear_latch(hal::Timestamp now);
 
   [[nodiscard]] SupervisorState state() const { return state_; }
+  [[nodiscard]] bool latched() const { return latched_; }
   [[nodiscard]] hal::Timestamp since() const { return since_; }  // time of the last transition
   [[nodiscard]] const TransitionCounts& transitions() const { return counts_; }
   [[nodiscard]] const SupervisorConfig& config() const { return config_; }
@@ -125,17 +157,30 @@ class Supervisor {
   [[nodiscard]] Trigger hard_trigger(const SupervisorInputs& in) const;
   [[nodiscard]] Trigger soft_trigger(const SupervisorInputs& in) const;
   void go(SupervisorState to, Trigger why, hal::Timestamp now, SupervisorDecision& d);
+  void count_driver_fault();
+  void fill(SupervisorDecision& d) const;
 
   SupervisorConfig config_;
   SupervisorState state_ = SupervisorState::kInit;
   hal::Timestamp since_{};
   bool shutdown_ = false;
+  bool latched_ = false;
 
   // Consecutive-period counters.
   std::int64_t without_sample_ = 0;
   std::int64_t bad_samples_ = 0;
   std::int64_t disagreeing_ = 0;
   std::int64_t failed_writes_ = 0;
+  std::int64_t refused_ = 0;         // refused setpoints since the last accepted one
+  std::int64_t failed_lines_ = 0;
+  std::int64_t failed_disables_ = 0;
+  std::int64_t recovering_ = 0;
+  std::int64_t periods_ = 0;         // steps taken, the driver-fault window's clock
+  // Periods of the last driver_fault_limit driver-side SAFE entries, a ring (the limit is
+  // capped to its size by validate()).
+  static constexpr std::size_t kMaxDriverFaultLimit = 16;
+  std::array<std::int64_t, kMaxDriverFaultLimit> driver_faults_{};
+  std::size_t driver_fault_count_ = 0;
   std::int64_t good_ = 0;
   std::int64_t overruns_ = 0;        // since the last overrun_window clean periods
   std::int64_t clean_periods_ = 0;   // since the last overrun

@@ -1,5 +1,6 @@
 #include "firmware/control_loop.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -19,14 +20,19 @@ ControlLoop::ControlLoop(const control::ControlLawConfig& law, const control::Su
                          HalDevices devices, runtime::TelemetryQueue* telemetry, int telemetry_decimation)
     : law_(law),
       supervisor_(safety),
-      checker_(safety.displacement_min, safety.displacement_max,
-               safety.stale_periods * to_period(law.observer.sample_period), safety.frozen_periods),
+      checker_({.min = safety.displacement_min,
+                .max = safety.displacement_max,
+                .max_age = safety.stale_periods * to_period(law.observer.sample_period),
+                .frozen_periods = safety.frozen_periods,
+                .max_speed = safety.max_speed}),
       hal_(devices),
       telemetry_(telemetry),
       decimation_(telemetry_decimation > 0 ? static_cast<std::uint64_t>(telemetry_decimation) : 1u),
       period_(to_period(law.observer.sample_period)),
       fail_safe_current_(safety.fail_safe_current),
-      current_tolerance_(safety.current_tolerance) {
+      current_tolerance_(safety.current_tolerance),
+      readback_timeout_(safety.readback_timeout_periods * to_period(law.observer.sample_period)),
+      require_readback_(safety.require_readback) {
   law_.hold(fail_safe_current_);
 }
 
@@ -34,7 +40,19 @@ std::uint32_t ControlLoop::skipped_periods(hal::Timestamp now) const {
   if (cycles_ == 0 || now - last_release_ <= period_) return 0;
   // Releases are whole periods apart; anything short of the next one is wake-up jitter.
   const auto periods = (now - last_release_ + period_ / 2) / period_;
-  return periods > 1 ? static_cast<std::uint32_t>(periods - 1) : 0u;
+  // Saturated: a clock jump of 2^32 periods must not wrap to "no overrun".
+  constexpr auto kMax = static_cast<std::int64_t>(std::numeric_limits<std::uint32_t>::max());
+  return periods > 1 ? static_cast<std::uint32_t>(std::min<std::int64_t>(periods - 1, kMax)) : 0u;
+}
+
+// A driver that stops reporting its current reads as nullopt, which alone says nothing (a
+// bus delivers readings slower than the loop runs): judged by the age of the newest one.
+bool ControlLoop::readback_lost(const std::optional<hal::CurrentReading>& measured, hal::Timestamp now) {
+  if (cycles_ == 0) started_ = now;
+  if (measured) last_reading_ = now;
+  if (readback_timeout_ <= hal::Timestamp{}) return false;
+  if (last_reading_) return now - *last_reading_ > readback_timeout_;
+  return require_readback_ && now - started_ > readback_timeout_;
 }
 
 const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
@@ -43,6 +61,7 @@ const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
   last_release_ = now;
 
   // 1-2. The newest sample, judged.
+  if (clear_requested_.exchange(false, std::memory_order_relaxed)) supervisor_.clear_latch(now);
   const control::SampleCheck check = checker_.check(hal_.lvdt.latest(), now);
   const std::optional<bool> fault = hal_.lines.driver_fault();
   const std::optional<hal::CurrentReading> measured = hal_.driver.measured();
@@ -59,16 +78,31 @@ const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
       {.displacement = checker_.held_value(), .timing = checker_.timing(check, now), .coil_current = coil});
 
   // 4. The supervisor.
-  const control::SupervisorDecision d =
-      supervisor_.step({check, fault, disagrees, write_failed_, skipped}, now);
+  const hal::SetpointAcks acks = hal_.driver.setpoint_acks();
+  const std::uint64_t recoveries = law_.observer().magnetics().recoveries();
+  control::SupervisorDecision d = supervisor_.step(
+      {.sample = check,
+       .driver_fault = fault,
+       .current_disagrees = disagrees,
+       .setpoint_write_failed = write_failed_,
+       .setpoints_refused = static_cast<std::uint32_t>(std::min<std::uint64_t>(acks.refused - acks_.refused, 1u << 16)),
+       .setpoint_accepted = acks.accepted != acks_.accepted,
+       .readback_lost = readback_lost(measured, now),
+       .line_write_failed = line_failed_,
+       .disable_failed = disable_failed_,
+       .observer_recovered = recoveries != recoveries_,
+       .overruns = skipped},
+      now);
+  acks_ = acks;
+  recoveries_ = recoveries;
 
-  // 5. The compensated command, only while the law drives the coil.
+  // 5. The compensated command, only while the law drives the coil, and only a finite one.
   control::ControlLaw::Command command{kNotComputed, kNotComputed};
   if (d.in_control) {
     command = law_.command();
-  } else {
-    law_.hold(fail_safe_current_);
+    if (!std::isfinite(command.current)) d = supervisor_.veto(control::Trigger::kCommandNotFinite, now);
   }
+  if (!d.in_control) law_.hold(fail_safe_current_);
   const double setpoint = d.in_control ? command.current : fail_safe_current_;
 
   // 6. Setpoint and lines.
@@ -90,7 +124,9 @@ const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
                             static_cast<std::uint8_t>(check),
                             static_cast<std::uint8_t>(d.state),
                             static_cast<std::uint8_t>(d.trigger),
-                            d.enable};
+                            d.enable,
+                            d.latched,
+                            recoveries};
   if (telemetry_ != nullptr && cycles_ % decimation_ == 0) telemetry_->offer(record_);
   ++cycles_;
   return record_;
@@ -105,14 +141,16 @@ void ControlLoop::write_outputs(const control::SupervisorDecision& d, double set
     last_setpoint_ = setpoint;
   }
   // The enable line is written when it changes, and again after a failed write.
+  line_failed_ = false;
+  disable_failed_ = false;
   if (!enable_written_ || d.enable != enable_) {
     enable_written_ = hal_.lines.set_enable(d.enable) == hal::IoStatus::kOk;
-    if (!enable_written_) ++failed_line_writes_;
+    line_failed_ = !enable_written_;
+    disable_failed_ = !enable_written_ && !d.enable;
     enable_ = d.enable;
   }
-  if (d.toggle_heartbeat && hal_.lines.toggle_heartbeat() != hal::IoStatus::kOk) {
-    ++failed_line_writes_;
-  }
+  if (d.toggle_heartbeat && hal_.lines.toggle_heartbeat() != hal::IoStatus::kOk) line_failed_ = true;
+  if (line_failed_) ++failed_line_writes_;
 }
 
 }  // namespace mrd::firmware

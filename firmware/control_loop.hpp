@@ -1,6 +1,8 @@
 #pragma once
 
+#include <atomic>
 #include <cstdint>
+#include <optional>
 
 #include "control/control_law.hpp"
 #include "firmware/hal_devices.hpp"
@@ -31,6 +33,9 @@ class ControlLoop {
   const runtime::TelemetryRecord& step(hal::Timestamp now);
   // The next cycle goes to SAFE (fail-safe current, enable as configured) and stays there.
   void request_shutdown() { supervisor_.request_shutdown(); }
+  // An operator's clear of a latched SAFE, taken at the next cycle; safe from any thread or a
+  // signal handler.
+  void request_clear_latch() { clear_requested_.store(true, std::memory_order_relaxed); }
 
   [[nodiscard]] const control::Supervisor& supervisor() const { return supervisor_; }
   [[nodiscard]] const control::ControlLaw& law() const { return law_; }
@@ -44,6 +49,7 @@ class ControlLoop {
 
  private:
   std::uint32_t skipped_periods(hal::Timestamp now) const;
+  [[nodiscard]] bool readback_lost(const std::optional<hal::CurrentReading>& measured, hal::Timestamp now);
   void write_outputs(const control::SupervisorDecision& d, double setpoint);
 
   control::ControlLaw law_;
@@ -55,6 +61,8 @@ class ControlLoop {
   hal::Timestamp period_;
   double fail_safe_current_;
   double current_tolerance_;
+  hal::Timestamp readback_timeout_;  // 0: no readback expected
+  bool require_readback_;
 
   runtime::TelemetryRecord record_;
   std::uint64_t cycles_ = 0;
@@ -64,8 +72,15 @@ class ControlLoop {
   hal::Timestamp last_release_{};
   double last_setpoint_ = 0.0;  // the last setpoint the driver accepted [A]
   bool write_failed_ = false;   // the previous period's write, judged this period
+  bool line_failed_ = false;    // the previous period's enable or heartbeat write
+  bool disable_failed_ = false; // ... and it was the enable line going low
   bool enable_ = false;
   bool enable_written_ = false;
+  hal::Timestamp started_{};
+  std::optional<hal::Timestamp> last_reading_;  // when the newest measured current arrived
+  hal::SetpointAcks acks_;                      // as of the previous period
+  std::uint64_t recoveries_ = 0;                // the observer's, as of the previous period
+  std::atomic<bool> clear_requested_{false};
 };
 
 }  // namespace mrd::firmware

@@ -96,7 +96,13 @@ int run_controller(const config::ControllerConfig& config, const RunOptions& opt
             for (const auto& w : done.warnings) std::fprintf(stderr, "mrd-controller: warning: %s\n", w.c_str());
             std::fflush(out);
           },
-      .print_stats = [&] { print_stats(out, stats, loop, hal, options.bench); }};
+      .print_stats = [&] { print_stats(out, stats, loop, hal, options.bench); },
+      .clear_latch =
+          [&] {
+            loop.request_clear_latch();
+            std::fprintf(out, "mrd-controller: SIGUSR2: an operator cleared the latch\n");
+            std::fflush(out);
+          }};
   runtime::run_real_time(run, signals, unblock, rt, stats, cycle, hooks);
   if (writer) writer->stop();
   hal.stop();

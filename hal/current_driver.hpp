@@ -1,11 +1,19 @@
 #pragma once
 
+#include <cstdint>
 #include <optional>
 
 #include "hal/clock.hpp"
 #include "hal/status.hpp"
 
 namespace mrd::hal {
+
+// Setpoints a back end that writes asynchronously has seen the device answer, counted since it
+// started. Both zero: the back end does not report them (write_setpoint's status is all there is).
+struct SetpointAcks {
+  std::uint64_t accepted = 0;
+  std::uint64_t refused = 0;  // the device answered the write with a refusal (a Modbus exception)
+};
 
 struct CurrentReading {
   double value = 0.0;     // A, as the driver measured it
@@ -20,6 +28,8 @@ class CurrentDriver {
   virtual IoStatus write_setpoint(double amps) = 0;
   // The newest measured current, or nullopt when the driver reports none (or none yet).
   [[nodiscard]] virtual std::optional<CurrentReading> measured() = 0;
+  // What the device answered to the setpoints written after write_setpoint queued them.
+  [[nodiscard]] virtual SetpointAcks setpoint_acks() const { return {}; }
 };
 
 }  // namespace mrd::hal

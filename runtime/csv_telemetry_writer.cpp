@@ -16,7 +16,7 @@ namespace mrd::runtime {
 const char* CsvTelemetryWriter::header() {
   return "cycle,time_s,displacement_mm,sample,measured_current_A,scheduled_current_A,"
          "law_current_A,setpoint_A,target_B_T,B_T,velocity_mm_s,force_kN,state,trigger,overruns,"
-         "enable\n";
+         "enable,latched,recoveries\n";
 }
 
 int CsvTelemetryWriter::format(const TelemetryRecord& r, hal::Timestamp start, char* buf,
@@ -25,13 +25,13 @@ int CsvTelemetryWriter::format(const TelemetryRecord& r, hal::Timestamp start, c
   const auto sample = to_string(static_cast<control::SampleCheck>(r.sample));
   const auto state = to_string(static_cast<control::SupervisorState>(r.state));
   const auto trigger = to_string(static_cast<control::Trigger>(r.trigger));
-  return std::snprintf(buf, size, "%llu,%.6f,%.4f,%.*s,%.5g,%.4g,%.5g,%.5g,%.5g,%.5g,%.5g,%.5g,%.*s,%.*s,%u,%d\n",
+  return std::snprintf(buf, size, "%llu,%.6f,%.4f,%.*s,%.5g,%.4g,%.5g,%.5g,%.5g,%.5g,%.5g,%.5g,%.*s,%.*s,%u,%d,%d,%llu\n",
                        static_cast<unsigned long long>(r.cycle), t, r.displacement * 1e3,
                        static_cast<int>(sample.size()), sample.data(), r.measured_current,
                        r.scheduled_current, r.law_current, r.setpoint, r.target_B, r.B,
                        r.velocity * 1e3, r.force * 1e-3, static_cast<int>(state.size()),
                        state.data(), static_cast<int>(trigger.size()), trigger.data(), r.overruns,
-                       r.enable ? 1 : 0);
+                       r.enable ? 1 : 0, r.latched ? 1 : 0, static_cast<unsigned long long>(r.recoveries));
 }
 
 hal::StartResult CsvTelemetryWriter::start(const std::string& path) {

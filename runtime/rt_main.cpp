@@ -12,6 +12,9 @@ extern "C" void on_stop_signal(int) {
 extern "C" void on_stats_signal(int) {
   if (g_signals != nullptr) g_signals->print_stats.store(true);
 }
+extern "C" void on_clear_signal(int) {
+  if (g_signals != nullptr) g_signals->clear_latch.store(true);
+}
 
 }  // namespace
 
@@ -26,9 +29,11 @@ sigset_t install_process_signals(ProcessSignals& signals) {
   sigaction(SIGHUP, &sa, nullptr);
   sa.sa_handler = on_stats_signal;
   sigaction(SIGUSR1, &sa, nullptr);
+  sa.sa_handler = on_clear_signal;
+  sigaction(SIGUSR2, &sa, nullptr);
   sigset_t mask;
   sigemptyset(&mask);
-  for (const int s : {SIGTERM, SIGINT, SIGHUP, SIGUSR1}) sigaddset(&mask, s);
+  for (const int s : {SIGTERM, SIGINT, SIGHUP, SIGUSR1, SIGUSR2}) sigaddset(&mask, s);
   pthread_sigmask(SIG_BLOCK, &mask, nullptr);
   return mask;
 }

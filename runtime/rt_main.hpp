@@ -21,6 +21,7 @@ namespace mrd::runtime {
 struct ProcessSignals {
   std::atomic<bool> stop{false};         // SIGTERM, SIGINT, SIGHUP: end the run through the final cycle
   std::atomic<bool> print_stats{false};  // SIGUSR1
+  std::atomic<bool> clear_latch{false};  // SIGUSR2: an operator clears a latched SAFE
 };
 
 // Installs the handlers for `signals` and blocks those signals on the calling thread, so the
@@ -42,6 +43,7 @@ struct RealTimeHooks {
   std::function<void(hal::Timestamp next_release)> finish;  // on the loop thread, after the stop
   std::function<void(const RtSetupResult&)> ready;          // once the loop thread is set up
   std::function<void()> print_stats;                        // on SIGUSR1
+  std::function<void()> clear_latch;                        // on SIGUSR2
 };
 
 // The one skeleton of mrd-controller and mrd-plant: the bus threads at their priority, the
@@ -71,6 +73,7 @@ void run_real_time(const RealTimeRun& run, ProcessSignals& signals, const sigset
     std::this_thread::sleep_for(run.poll_period);
     if (signals.stop.load()) stop.store(true);
     if (signals.print_stats.exchange(false) && hooks.print_stats) hooks.print_stats();
+    if (signals.clear_latch.exchange(false) && hooks.clear_latch) hooks.clear_latch();
   }
   loop_thread.join();
 }

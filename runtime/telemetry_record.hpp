@@ -24,6 +24,8 @@ struct TelemetryRecord {
   std::uint8_t state = 0;          // SupervisorState
   std::uint8_t trigger = 0;        // Trigger of this cycle's transition (0: none)
   bool enable = false;
+  bool latched = false;            // SAFE holds until an operator clears it
+  std::uint64_t recoveries = 0;    // the observer's J-A recoveries since start
 };
 
 }  // namespace mrd::runtime

@@ -18,6 +18,12 @@ std::string_view to_string(FaultKind k) {
     case FaultKind::kFaultLineUnreadable: return "fault_line_unreadable";
     case FaultKind::kCurrentBias: return "current_bias";
     case FaultKind::kDriverWriteFails: return "driver_write_fails";
+    case FaultKind::kReadbackSilent: return "readback_silent";
+    case FaultKind::kSetpointRefused: return "setpoint_refused";
+    case FaultKind::kEnableWriteFails: return "enable_write_fails";
+    case FaultKind::kHeartbeatWriteFails: return "heartbeat_write_fails";
+    case FaultKind::kDisplacementJump: return "displacement_jump";
+    case FaultKind::kFutureTimestamp: return "future_timestamp";
     case FaultKind::kCount: break;
   }
   return "unknown";

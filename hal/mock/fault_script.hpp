@@ -22,6 +22,13 @@ enum class FaultKind : std::uint8_t {
   kFaultLineUnreadable,  // the driver fault line cannot be read
   kCurrentBias,        // measured current = setpoint + parameter [A]
   kDriverWriteFails,   // write_setpoint() fails with an I/O error
+  kReadbackSilent,     // the driver stops reporting its measured current
+  kSetpointRefused,    // write_setpoint() queues, and the device refuses each write
+  kEnableWriteFails,   // set_enable() fails with an I/O error
+  kHeartbeatWriteFails,  // the heartbeat write fails with an I/O error
+  kDisplacementJump,   // value += parameter [m] on every other sample from the first, flagged
+                       // valid: a sensor jumping back and forth (one sample long: a spike)
+  kFutureTimestamp,    // the sample's timestamp is parameter [s] ahead of the clock
   kCount
 };
 [[nodiscard]] std::string_view to_string(FaultKind k);

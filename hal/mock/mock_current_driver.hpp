@@ -9,8 +9,8 @@
 
 namespace mrd::hal::mock {
 
-// A driver that follows its setpoint exactly and at once, unless the script adds a bias or
-// makes writes fail.
+// A driver that follows its setpoint exactly and at once, unless the script adds a bias, makes
+// writes fail or be refused, or silences the readback.
 class MockCurrentDriver final : public CurrentDriver {
  public:
   MockCurrentDriver(const Clock& clock, const FaultScript& script)
@@ -18,6 +18,7 @@ class MockCurrentDriver final : public CurrentDriver {
 
   IoStatus write_setpoint(double amps) override;
   [[nodiscard]] std::optional<CurrentReading> measured() override;
+  [[nodiscard]] SetpointAcks setpoint_acks() const override { return acks_; }
 
   [[nodiscard]] double last_setpoint() const { return setpoint_; }
   [[nodiscard]] std::uint64_t writes() const { return writes_; }
@@ -29,6 +30,7 @@ class MockCurrentDriver final : public CurrentDriver {
   double setpoint_ = 0.0;  // A; the driver idles at zero
   std::uint64_t writes_ = 0;
   std::uint64_t failed_writes_ = 0;
+  SetpointAcks acks_;
 };
 
 }  // namespace mrd::hal::mock

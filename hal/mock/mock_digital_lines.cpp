@@ -3,6 +3,7 @@
 namespace mrd::hal::mock {
 
 IoStatus MockDigitalLines::set_enable(bool enabled) {
+  if (script_.is_active(FaultKind::kEnableWriteFails, clock_.now())) return IoStatus::kIoError;
   if (enabled != enabled_) ++enable_transitions_;
   enabled_ = enabled;
   return IoStatus::kOk;
@@ -15,6 +16,7 @@ std::optional<bool> MockDigitalLines::driver_fault() {
 }
 
 IoStatus MockDigitalLines::write_heartbeat(bool high) {
+  if (script_.is_active(FaultKind::kHeartbeatWriteFails, clock_.now())) return IoStatus::kIoError;
   if (high != heartbeat_level_) ++heartbeat_toggles_;
   heartbeat_level_ = high;
   return IoStatus::kOk;

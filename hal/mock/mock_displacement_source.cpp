@@ -1,5 +1,6 @@
 #include "hal/mock/mock_displacement_source.hpp"
 
+#include <chrono>
 #include <limits>
 
 namespace mrd::hal::mock {
@@ -29,6 +30,15 @@ std::optional<DisplacementSample> MockDisplacementSource::latest() {
     s.value = std::numeric_limits<double>::quiet_NaN();
   }
   if (const ScriptedFault* f = script_.active(FaultKind::kOutOfRange, now)) s.value = f->parameter;
+  if (const ScriptedFault* f = script_.active(FaultKind::kDisplacementJump, now)) {
+    if (!jump_off_) s.value += f->parameter;
+    jump_off_ = !jump_off_;
+  } else {
+    jump_off_ = false;
+  }
+  if (const ScriptedFault* f = script_.active(FaultKind::kFutureTimestamp, now)) {
+    s.timestamp += std::chrono::duration_cast<Timestamp>(std::chrono::duration<double>(f->parameter));
+  }
   if (script_.is_active(FaultKind::kCorruptedFrame, now)) s.flags = kSampleCorrupted;
   if (script_.is_active(FaultKind::kFrozenValue, now)) {
     if (!frozen_) frozen_ = last_ ? last_->value : s.value;

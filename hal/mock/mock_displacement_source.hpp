@@ -33,6 +33,7 @@ class MockDisplacementSource final : public DisplacementSource {
   std::uint64_t dropped_ = 0;
   std::uint64_t drop_phase_ = 0;
   bool gap_pending_ = false;
+  bool jump_off_ = false;         // kDisplacementJump: this sample goes without the offset
 };
 
 }  // namespace mrd::hal::mock

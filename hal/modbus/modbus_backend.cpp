@@ -37,6 +37,7 @@ std::string_view to_string(ModbusEvent e) {
     case ModbusEvent::kDecodeErrors: return "decode_errors";
     case ModbusEvent::kWritesOk: return "writes_ok";
     case ModbusEvent::kWriteErrors: return "write_errors";
+    case ModbusEvent::kWritesRefused: return "writes_refused";
     case ModbusEvent::kSamplesDropped: return "samples_dropped";
     case ModbusEvent::kCount: break;
   }
@@ -163,6 +164,7 @@ ModbusBackend::Outcome ModbusBackend::write_pending_setpoint() {
   // Kept for after a reconnect; a value the device refuses is dropped, not retried forever.
   if (outcome != Outcome::kLinkFailed) pending_setpoint_.reset();
   if (outcome == Outcome::kOk) counters_.bump(ModbusEvent::kWritesOk);
+  if (outcome == Outcome::kDeviceRefused) counters_.bump(ModbusEvent::kWritesRefused);
   return outcome;
 }
 

@@ -31,6 +31,7 @@ enum class ModbusEvent : std::uint8_t {
   kDecodeErrors,        // the words arrived but made no usable value
   kWritesOk,
   kWriteErrors,
+  kWritesRefused,       // of the write errors, the device answered with an exception
   kSamplesDropped,      // the loop did not drain the ring in time
   kCount
 };
@@ -62,6 +63,9 @@ class ModbusBackend final : public DisplacementSource, public CurrentDriver {
   // kNotConnected when queued but the link is down (it is written after reconnecting).
   IoStatus write_setpoint(double amps) override;
   [[nodiscard]] std::optional<CurrentReading> measured() override;
+  [[nodiscard]] SetpointAcks setpoint_acks() const override {
+    return {counters_.get(ModbusEvent::kWritesOk), counters_.get(ModbusEvent::kWritesRefused)};
+  }
 
   [[nodiscard]] ModbusCounters counters() const { return counters_.snapshot(); }
   // Its I/O thread, for the caller's scheduling set-up.

@@ -117,4 +117,54 @@ TEST(Supervisor, ConfigValidationNamesEachBadKey) {
   EXPECT_NE(r.to_string().find("stale_periods: must be >= 1, got 0"), std::string::npos);
 }
 
+TEST(Supervisor, RefusalsCountUntilOneSetpointIsAcceptedBetween) {
+  Clocked c;
+  while (c.step().state != SupervisorState::kRun) {
+  }
+  const SupervisorInputs refused{.setpoints_refused = 1};
+  const SupervisorInputs accepted{.setpoint_accepted = true};
+  // Refused, accepted, refused ...: never write_failure_periods refusals in a row.
+  for (int i = 0; i < 20; ++i) EXPECT_NE(c.step(i % 2 == 0 ? refused : accepted).state, SupervisorState::kSafe);
+  // Periods without any acknowledgement neither reset nor add: the back end may write slower.
+  c.step(refused);
+  c.step();
+  c.step(refused);
+  c.step();
+  EXPECT_EQ(c.step(refused).state, SupervisorState::kSafe);
+  EXPECT_EQ(c.sup.transitions().get(SupervisorState::kDegraded, SupervisorState::kSafe, Trigger::kSetpointRefused), 1u);
+}
+
+TEST(Supervisor, AVetoIsSafeAtOnceAndAClearOnlyMattersWhenLatched) {
+  Clocked c;
+  while (c.step().state != SupervisorState::kRun) {
+  }
+  const auto d = c.sup.veto(Trigger::kCommandNotFinite, c.now);
+  EXPECT_EQ(d.state, SupervisorState::kSafe);
+  EXPECT_FALSE(d.in_control);
+  EXPECT_FALSE(d.enable);
+  c.sup.clear_latch(c.now);  // not latched: nothing to clear, nothing counted
+  EXPECT_EQ(c.sup.transitions().get(SupervisorState::kSafe, SupervisorState::kSafe, Trigger::kOperatorClear), 0u);
+  EXPECT_EQ(c.step().state, SupervisorState::kSafe);
+}
+
+TEST(Supervisor, ConfigValidationNamesEachNewBadKey) {
+  SupervisorConfig c;
+  c.readback_timeout_periods = -1;
+  c.line_failure_periods = 0;
+  c.observer_recovery_periods = 0;
+  c.max_speed = -1.0;
+  c.driver_fault_limit = 17;
+  c.driver_fault_window = 0;
+  const auto r = c.validate();
+  for (const char* key : {"readback_timeout_periods", "line_failure_periods", "observer_recovery_periods",
+                          "max_speed", "driver_fault_limit", "driver_fault_window"}) {
+    EXPECT_TRUE(r.mentions(key)) << key;
+  }
+  EXPECT_EQ(r.issues().size(), 6u) << r.to_string();
+  SupervisorConfig waits_for_nothing;
+  waits_for_nothing.require_readback = true;
+  waits_for_nothing.readback_timeout_periods = 0;
+  EXPECT_TRUE(waits_for_nothing.validate().mentions("require_readback"));
+}
+
 }  // namespace

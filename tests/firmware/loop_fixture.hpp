@@ -5,6 +5,8 @@
 #include <memory>
 #include <numbers>
 
+#include <gtest/gtest.h>
+
 #include "firmware/control_loop.hpp"
 #include "hal/mock/mock_hal.hpp"
 
@@ -17,14 +19,14 @@ class LoopRig {
   static constexpr hal::Timestamp kPeriod = std::chrono::milliseconds{1};
 
   explicit LoopRig(hal::mock::FaultScript script = {}, control::SupervisorConfig safety = {},
-                   runtime::TelemetryQueue* telemetry = nullptr)
+                   runtime::TelemetryQueue* telemetry = nullptr, const control::ControlLawConfig& law = {})
       : hal_(std::make_unique<hal::mock::MockHal>(std::move(script))),
         loop_(std::make_unique<firmware::ControlLoop>(
-            control::ControlLawConfig{}, safety,
+            law, safety,
             firmware::HalDevices{hal_->lvdt, hal_->driver, hal_->lines}, telemetry)) {}
 
   // Runs cycle number `cycle_` at its release time; `skip` periods are lost before it.
-  control::SupervisorState step(int skip = 0) {
+  control::SupervisorState step(std::int64_t skip = 0) {
     cycle_ += skip;
     const hal::Timestamp now = hal::mock::cycle_time(cycle_, kPeriod);
     hal_->clock.set(now);
@@ -53,5 +55,66 @@ class LoopRig {
   std::unique_ptr<firmware::ControlLoop> loop_;
   std::int64_t cycle_ = 0;
 };
+
+// A fault scripted over cycles kFaultStart..kFaultEnd and the loop's reaction to it, in
+// control periods (the "reaction" column of docs/FIRMWARE.md's transition table).
+inline const control::SupervisorConfig kLimits{};  // the documented defaults
+constexpr std::int64_t kFaultStart = 1000;
+constexpr std::int64_t kFaultEnd = 1050;
+
+inline hal::mock::FaultScript script_of(hal::mock::FaultKind kind, double parameter = 0.0) {
+  return hal::mock::FaultScript{{kind, hal::mock::cycle_time(kFaultStart, LoopRig::kPeriod),
+                      hal::mock::cycle_time(kFaultEnd, LoopRig::kPeriod), parameter}};
+}
+
+// What one fault does: the cycle it first shows DEGRADED (or -1), the cycle it reaches SAFE,
+// and the cycle it is back in RUN.
+struct Reaction {
+  std::int64_t degraded = -1;
+  std::int64_t safe = -1;
+  std::int64_t run_again = -1;
+};
+
+inline Reaction react(LoopRig& rig) {
+  rig.run_to(kFaultStart);
+  EXPECT_EQ(rig.loop().state(), control::SupervisorState::kRun) << "the rig must be running when the fault starts";
+  Reaction r;
+  for (std::int64_t i = 0; i < 5000 && r.run_again < 0; ++i) {
+    const auto s = rig.step();
+    const auto at = rig.cycle() - 1;
+    if (s == control::SupervisorState::kDegraded && r.degraded < 0 && r.safe < 0) r.degraded = at;
+    if (s == control::SupervisorState::kSafe && r.safe < 0) r.safe = at;
+    if (s == control::SupervisorState::kRun && r.safe >= 0) r.run_again = at;
+  }
+  return r;
+}
+
+// Recovery: RUN after recovery_periods good periods counted from the first period without the
+// fault. A fault window ends at kFaultEnd; `first_good` may be later (a fault seen late).
+inline void expect_recovery(const Reaction& r, std::int64_t first_good = kFaultEnd) {
+  EXPECT_EQ(r.run_again, first_good + kLimits.recovery_periods - 1);
+}
+
+// What the reaction tests say, by its short name.
+namespace reaction_terms {
+using control::SupervisorConfig;
+using control::SupervisorState;
+using control::Trigger;
+using hal::mock::FaultKind;
+using hal::mock::FaultScript;
+using hal::mock::cycle_time;
+using test::LoopRig;
+using test::Reaction;
+using test::expect_recovery;
+using test::kFaultEnd;
+using test::kFaultStart;
+using test::kLimits;
+using test::react;
+using test::script_of;
+inline constexpr auto kInit = SupervisorState::kInit;
+inline constexpr auto kRun = SupervisorState::kRun;
+inline constexpr auto kDegraded = SupervisorState::kDegraded;
+inline constexpr auto kSafe = SupervisorState::kSafe;
+}  // namespace reaction_terms
 
 }  // namespace mrd::test

@@ -51,6 +51,8 @@ class RandomFaults {
     if (k == FaultKind::kOutOfRange) parameter = 0.2;        // [m], outside +-50 mm
     if (k == FaultKind::kDroppedSample) parameter = 1 + static_cast<double>(rng_() % 4);
     if (k == FaultKind::kCurrentBias) parameter = 0.5;       // [A], over the 0.1 A tolerance
+    if (k == FaultKind::kDisplacementJump) parameter = 0.01;  // [m] back and forth
+    if (k == FaultKind::kFutureTimestamp) parameter = 0.2;   // [s] ahead
     hal.script = hal::mock::FaultScript{
         {k, hal::mock::cycle_time(cycle, period_), hal::mock::cycle_time(end, period_), parameter}};
     fault_end_ = end;
@@ -133,6 +135,12 @@ SoakFigures run_soak(std::uint64_t cycles, std::uint32_t seed) {
     f.max_abs_B_observer = std::max(f.max_abs_B_observer, std::fabs(record.B));
     f.max_abs_B_plant = std::max(f.max_abs_B_plant, std::fabs(rig.last().B));
 
+    // The operator: a latched SAFE is looked at and cleared once the fault has gone, so the
+    // recovery is judged from there like any other.
+    if (loop.supervisor().latched() && c >= faults.clean_since()) {
+      ++f.latches;
+      loop.request_clear_latch();
+    }
     const bool holding = loop.state() == SupervisorState::kSafe || loop.state() == SupervisorState::kInit;
     if (holding && c >= faults.clean_since()) {
       const auto clean = static_cast<std::uint64_t>(c - faults.clean_since() + 1);

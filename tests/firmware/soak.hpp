@@ -14,6 +14,7 @@ struct SoakFigures {
   // Longest time in SAFE (or INIT) after the last fault ended, in cycles: the recovery time.
   std::uint64_t longest_recovery = 0;
   std::uint64_t stuck_in_safe = 0;   // cycles in SAFE/INIT past the recovery condition (must be 0)
+  std::uint64_t latches = 0;         // SAFE latched by repeated driver faults, cleared by the soak's operator
   std::uint64_t non_finite = 0;      // cycles with a non-finite J-A state or force (must be 0)
   double Ms = 0.0;                   // the config's saturation magnetisation [A/m]
   double max_abs_M_observer = 0.0;   // [A/m]

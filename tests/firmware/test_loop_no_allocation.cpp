@@ -2,6 +2,8 @@
 // each fault kind of the mock HAL, overruns, SAFE and recovery, with telemetry into the ring.
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "runtime/latency_histogram.hpp"
 #include "runtime/loop_statistics.hpp"
 #include "tests/firmware/loop_fixture.hpp"
@@ -32,20 +34,33 @@ TEST(RealTime, ControlLoopCycleDoesNotAllocateOnAnySupervisorPath) {
                                  std::pair{FaultKind::kDriverFault, 0.0},
                                  std::pair{FaultKind::kFaultLineUnreadable, 0.0},
                                  std::pair{FaultKind::kCurrentBias, 0.5},
-                                 std::pair{FaultKind::kDriverWriteFails, 0.0}}) {
+                                 std::pair{FaultKind::kDriverWriteFails, 0.0},
+                                 std::pair{FaultKind::kReadbackSilent, 0.0},
+                                 std::pair{FaultKind::kSetpointRefused, 0.0},
+                                 std::pair{FaultKind::kHeartbeatWriteFails, 0.0},
+                                 std::pair{FaultKind::kDisplacementJump, 0.02},
+                                 std::pair{FaultKind::kFutureTimestamp, 0.2}}) {
     window(kind, at, parameter);
     at += 1000;
   }
+  // A driver fault whose disable fails: SAFE latches until the clear at kClearAt.
+  constexpr std::int64_t kLatchAt = 21000;
+  constexpr std::int64_t kClearAt = 22000;
+  window(FaultKind::kDriverFault, kLatchAt);
+  window(FaultKind::kEnableWriteFails, kLatchAt);
+  mrd::control::SupervisorConfig limits;
+  limits.driver_fault_window = 500;  // the spaced driver faults above must not latch
   mrd::runtime::TelemetryQueue telemetry(1024);
-  LoopRig rig(script, {}, &telemetry);
+  LoopRig rig(script, limits, &telemetry);
   auto stats = std::make_unique<mrd::runtime::LoopStatistics>();
   for (int i = 0; i < 10; ++i) rig.step();  // start-up
 
   std::uint64_t drained = 0;
   mrd::test::start_counting_allocations();
   for (int i = 10; i < 100000; ++i) {
-    // Overruns: a burst of three lost periods every 20000 cycles.
-    const int skip = (i % 20000 == 15000 || i % 20000 == 15001 || i % 20000 == 15002) ? 1 : 0;
+    // Overruns: a burst of three lost periods every 20000 cycles, clear of the faults.
+    const int skip = (i % 20000 == 19500 || i % 20000 == 19501 || i % 20000 == 19502) ? 1 : 0;
+    if (i == kClearAt) rig.loop().request_clear_latch();
     rig.step(skip);
     stats->wake_latency.record(i);
     stats->execution.record(3 * i);
@@ -57,25 +72,42 @@ TEST(RealTime, ControlLoopCycleDoesNotAllocateOnAnySupervisorPath) {
 
   // The run went through every state and every fault trigger, or the zero proves little.
   const auto& t = rig.loop().supervisor().transitions();
-  // SAFE: nine faults (a lost sample in two only degrades) and five overrun bursts.
-  EXPECT_EQ(t.into(SupervisorState::kSafe), 14u);
-  // DEGRADED first: the eight faults that are not immediate, and each overrun burst.
-  EXPECT_EQ(t.into(SupervisorState::kDegraded), 13u);
-  // RUN: start-up, after each of the ten faults, after each burst.
-  EXPECT_EQ(t.into(SupervisorState::kRun), 16u);
-  for (auto trig : {mrd::control::Trigger::kSensorStale, mrd::control::Trigger::kSampleNotFinite,
-                    mrd::control::Trigger::kSampleOutOfRange, mrd::control::Trigger::kSampleCorrupted,
-                    mrd::control::Trigger::kDriverFault, mrd::control::Trigger::kFaultLineUnreadable,
-                    mrd::control::Trigger::kCurrentDisagreement,
-                    mrd::control::Trigger::kSetpointWriteFailed,
-                    mrd::control::Trigger::kRepeatedOverruns}) {
+  // SAFE: fifteen faults less the lost samples (they only degrade), twice for the heartbeat
+  // (SAFE toggles none, so it recovers within its window and trips again), the latched driver
+  // fault, and five overrun bursts.
+  EXPECT_EQ(t.into(SupervisorState::kSafe), 21u);
+  // DEGRADED first: the faults that are not immediate, and each overrun burst.
+  EXPECT_EQ(t.into(SupervisorState::kDegraded), 18u);
+  // RUN: start-up, after each SAFE but the latched one's, after the clear.
+  EXPECT_EQ(t.into(SupervisorState::kRun), 23u);
+  using mrd::control::Trigger;
+  for (auto trig : {Trigger::kSensorStale, Trigger::kSampleNotFinite, Trigger::kSampleOutOfRange,
+                    Trigger::kSampleCorrupted, Trigger::kDriverFault, Trigger::kFaultLineUnreadable,
+                    Trigger::kCurrentDisagreement, Trigger::kSetpointWriteFailed, Trigger::kReadbackLost,
+                    Trigger::kSetpointRefused, Trigger::kLineWriteFailed, Trigger::kSampleJump,
+                    Trigger::kSampleFromFuture, Trigger::kRepeatedOverruns}) {
     std::uint64_t n = 0;
     for (auto from : {SupervisorState::kRun, SupervisorState::kDegraded}) {
       n += t.get(from, SupervisorState::kSafe, trig);
     }
     EXPECT_GE(n, 1u) << to_string(trig);
   }
+  EXPECT_EQ(t.get(SupervisorState::kSafe, SupervisorState::kSafe, Trigger::kDisableFailed), 1u);
+  EXPECT_EQ(t.get(SupervisorState::kSafe, SupervisorState::kSafe, Trigger::kOperatorClear), 1u);
   EXPECT_GT(drained, 90000u);
+}
+
+TEST(RealTime, ANonFiniteCommandsVetoDoesNotAllocate) {
+  mrd::control::ControlLawConfig law;
+  law.schedule.currents.fill(std::numeric_limits<double>::quiet_NaN());
+  LoopRig rig({}, {}, nullptr, law);
+  for (int i = 0; i < 10; ++i) rig.step();
+  mrd::test::start_counting_allocations();
+  for (int i = 10; i < 2000; ++i) rig.step();
+  EXPECT_EQ(mrd::test::stop_counting_allocations(), 0u);
+  EXPECT_GE(rig.loop().supervisor().transitions().get(SupervisorState::kRun, SupervisorState::kSafe,
+                                                      mrd::control::Trigger::kCommandNotFinite),
+            1u);
 }
 
 }  // namespace

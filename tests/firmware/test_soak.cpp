@@ -12,14 +12,15 @@ namespace {
 void print(const mrd::test::SoakFigures& f) {
   std::printf(
       "soak: %llu cycles in %.1f s (%.0f cycles/s), %llu faults, %llu SAFE entries, %llu "
-      "recoveries, longest recovery %llu cycles, stuck in SAFE %llu cycles\n"
+      "recoveries, longest recovery %llu cycles, stuck in SAFE %llu cycles, %llu latches cleared\n"
       "soak: max |M| observer %.4g A/m, max |B| observer %.4g T, plant %.4g T, non-finite %llu\n"
       "soak: resident %ld KiB after warm-up, at most %ld KiB after (+%ld KiB)\n"
       "soak: telemetry %llu offered = %llu written + %llu dropped\n",
       static_cast<unsigned long long>(f.cycles), f.seconds, static_cast<double>(f.cycles) / f.seconds,
       static_cast<unsigned long long>(f.faults), static_cast<unsigned long long>(f.safe_entries),
       static_cast<unsigned long long>(f.recoveries), static_cast<unsigned long long>(f.longest_recovery),
-      static_cast<unsigned long long>(f.stuck_in_safe), f.max_abs_M_observer, f.max_abs_B_observer,
+      static_cast<unsigned long long>(f.stuck_in_safe), static_cast<unsigned long long>(f.latches),
+      f.max_abs_M_observer, f.max_abs_B_observer,
       f.max_abs_B_plant, static_cast<unsigned long long>(f.non_finite), f.rss_after_warmup_kib,
       f.rss_max_kib, f.rss_max_kib - f.rss_after_warmup_kib,
       static_cast<unsigned long long>(f.telemetry_offered),

@@ -7,55 +7,7 @@
 
 namespace {
 
-using mrd::control::SupervisorConfig;
-using mrd::control::SupervisorState;
-using mrd::control::Trigger;
-using mrd::hal::mock::FaultKind;
-using mrd::hal::mock::FaultScript;
-using mrd::hal::mock::cycle_time;
-using mrd::test::LoopRig;
-
-constexpr auto kInit = SupervisorState::kInit;
-constexpr auto kRun = SupervisorState::kRun;
-constexpr auto kDegraded = SupervisorState::kDegraded;
-constexpr auto kSafe = SupervisorState::kSafe;
-
-const SupervisorConfig kLimits{};  // the documented defaults
-constexpr std::int64_t kFaultStart = 1000;
-constexpr std::int64_t kFaultEnd = 1050;
-
-FaultScript script_of(FaultKind kind, double parameter = 0.0) {
-  return FaultScript{{kind, cycle_time(kFaultStart, LoopRig::kPeriod),
-                      cycle_time(kFaultEnd, LoopRig::kPeriod), parameter}};
-}
-
-// What one fault does: the cycle it first shows DEGRADED (or -1), the cycle it reaches SAFE,
-// and the cycle it is back in RUN.
-struct Reaction {
-  std::int64_t degraded = -1;
-  std::int64_t safe = -1;
-  std::int64_t run_again = -1;
-};
-
-Reaction react(LoopRig& rig) {
-  rig.run_to(kFaultStart);
-  EXPECT_EQ(rig.loop().state(), kRun) << "the rig must be running when the fault starts";
-  Reaction r;
-  for (std::int64_t i = 0; i < 5000 && r.run_again < 0; ++i) {
-    const auto s = rig.step();
-    const auto at = rig.cycle() - 1;
-    if (s == kDegraded && r.degraded < 0 && r.safe < 0) r.degraded = at;
-    if (s == kSafe && r.safe < 0) r.safe = at;
-    if (s == kRun && r.safe >= 0) r.run_again = at;
-  }
-  return r;
-}
-
-// Recovery: RUN after recovery_periods good periods counted from the first period without the
-// fault. A fault window ends at kFaultEnd; `first_good` may be later (a fault seen late).
-void expect_recovery(const Reaction& r, std::int64_t first_good = kFaultEnd) {
-  EXPECT_EQ(r.run_again, first_good + kLimits.recovery_periods - 1);
-}
+using namespace mrd::test::reaction_terms;
 
 TEST(SupervisorReaction, StartsInInitAndRunsAfterRecoveryPeriodsGoodPeriods) {
   LoopRig rig;
@@ -95,7 +47,9 @@ TEST(SupervisorReaction, FrozenValueIsABadSampleAfterFrozenPeriodsRepeatsWhenChe
   const Reaction r = react(rig);
   EXPECT_EQ(r.degraded, kFaultStart + limits.frozen_periods);  // its 21st repeat
   EXPECT_EQ(r.safe, kFaultStart + limits.frozen_periods + limits.bad_sample_periods - 1);
-  expect_recovery(r);
+  // The sensor's first live value after 50 ms frozen lies 4.8 mm from the frozen one: a jump
+  // (4.8 m/s in a period), so the first good period is the one after.
+  expect_recovery(r, kFaultEnd + 1);
   const auto& t = rig.loop().supervisor().transitions();
   EXPECT_EQ(t.get(kRun, kDegraded, Trigger::kSampleFrozen), 1u);
   EXPECT_EQ(t.get(kDegraded, kSafe, Trigger::kSampleFrozen), 1u);
@@ -115,7 +69,8 @@ class BadSampleReaction : public ::testing::TestWithParam<std::pair<FaultKind, T
 
 TEST_P(BadSampleReaction, SafeAfterBadSamplePeriodsConsecutiveBadSamples) {
   const auto [kind, trigger] = GetParam();
-  LoopRig rig(script_of(kind, 0.2));  // 0.2 m is the out-of-range value
+  // 0.2 m is the out-of-range value and 0.2 s the future; a 20 mm jump stays in range.
+  LoopRig rig(script_of(kind, kind == FaultKind::kDisplacementJump ? 0.02 : 0.2));
   const Reaction r = react(rig);
   EXPECT_EQ(r.degraded, kFaultStart);
   EXPECT_EQ(r.safe, kFaultStart + kLimits.bad_sample_periods - 1);
@@ -131,7 +86,9 @@ INSTANTIATE_TEST_SUITE_P(
     Kinds, BadSampleReaction,
     ::testing::Values(std::pair{FaultKind::kNotANumber, Trigger::kSampleNotFinite},
                       std::pair{FaultKind::kOutOfRange, Trigger::kSampleOutOfRange},
-                      std::pair{FaultKind::kCorruptedFrame, Trigger::kSampleCorrupted}));
+                      std::pair{FaultKind::kCorruptedFrame, Trigger::kSampleCorrupted},
+                      std::pair{FaultKind::kDisplacementJump, Trigger::kSampleJump},
+                      std::pair{FaultKind::kFutureTimestamp, Trigger::kSampleFromFuture}));
 
 TEST(SupervisorReaction, DriverFaultLineIsSafeInTheSamePeriodWithFailSafeCurrentAndEnableCleared) {
   LoopRig rig(script_of(FaultKind::kDriverFault));
