@@ -2,13 +2,16 @@
 # Sensor faults injected into clean and measured runs (docs/CLOSING-THE-LOOP.md, "Screening"):
 # each run is analysed unfaulted, faulted with screening (the default) and faulted with
 # --no-screening. With screening the fit should match the unfaulted run's within a few per cent.
-# Usage: tools/residual/fault-study.sh [BUILD_DIR] [OUT_DIR]   (needs python3; about 6 min, Dyke's
-# run is 4 of them)
+# Usage: tools/residual/fault-study.sh [BUILD_DIR] [OUT_DIR]   (needs python3 with numpy; about
+# 7 min, Dyke's run is 4 of them)
 set -euo pipefail
 build=${1:-build/release}
 out=${2:-out/fault-study}
 mkdir -p "$out"
 "$build/tools/simulation/mrd-simulate-run" --damper 1kN --profile table4 --duration 10 --out "$out/sim-1kN-table4.csv" > /dev/null
+# The independent generator's run (its own forms, numpy) with a field lag to find through the faults.
+"${MRD_PYTHON:-/usr/bin/python3}" tests/generator/damper_truth.py --profile telegraph --duration 6 --effect coil_lag:2 \
+  --out "$out/indep-coil_lag.csv"
 python3 - "$out" data/damper/quiroz-utfsm/sine <<'PY'
 import csv, math, random, sys
 out, quiroz = sys.argv[1], sys.argv[2]
@@ -23,7 +26,7 @@ def load(name):
     rows = list(csv.reader(open(f"{out}/{name}.csv")))
     return rows[0], [list(map(float, r)) for r in rows[1:]]
 rng = random.Random(7)
-for name in ("sim-1kN-table4", "quiroz-5mm3Hz0x75A", "quiroz-25mm0x25Hz1A"):
+for name in ("sim-1kN-table4", "quiroz-5mm3Hz0x75A", "quiroz-25mm0x25Hz1A", "indep-coil_lag"):
     h, rows = load(name)
     t, x, F = h.index("time_s"), h.index("displacement_mm"), h.index("force_N")
     end = rows[-1][t]
@@ -83,7 +86,7 @@ PY
 echo "| run | fault | screening | set aside | named | RMS before [N] | RMS after [N] |"
 echo "|---|---|---|---:|---|---:|---:|"
 dyke_columns=(--columns t=time_s,D=displacement_cm,Y=voltage_V,F=force_N,V=velocity_cm_s --amps-per-volt 0.5)
-for base in sim-1kN-table4 quiroz-5mm3Hz0x75A quiroz-25mm0x25Hz1A dyke-ranran_50; do
+for base in sim-1kN-table4 indep-coil_lag quiroz-5mm3Hz0x75A quiroz-25mm0x25Hz1A dyke-ranran_50; do
   format=(); [[ $base == dyke-* ]] && format=("${dyke_columns[@]}")
   for fault in "" -clip-stuck -spikes -gap; do
     for mode in on off; do
