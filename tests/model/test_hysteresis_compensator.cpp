@@ -120,6 +120,7 @@ TEST(HysteresisCompensator, CurrentForStopsAtTheIterationCapWithTheBestTrial) {
     HysteresisCompensator compensator(core, target, limits, 1e-3);
     const auto found = compensator.current_for(0.7, core, {0.0, 1.5});
     EXPECT_EQ(found.evaluations, 2 + cap);
+    EXPECT_FALSE(found.reached);
     const double error = std::fabs(found.B - 0.7);
     EXPECT_LE(error, previous_error) << cap;
     previous_error = error;
