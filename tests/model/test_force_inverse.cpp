@@ -67,6 +67,7 @@ struct Tracking {
   int clipped = 0;
   int unreached = 0;
   int samples = 0;
+  int max_evaluations = 0;  // trial integrations of Eq. 10 in one step
 };
 
 // The law's model may differ from the plant's (a lag it does not know of). The first
@@ -97,6 +98,7 @@ Tracking track(const DamperModel& plant_model, const DamperModel& law_model, con
     out.max_error = std::max(out.max_error, std::fabs(error));
     out.clipped += command.clipped;
     out.unreached += !command.reached;
+    out.max_evaluations = std::max(out.max_evaluations, inverse.last_evaluations());
     ++out.samples;
   }
   out.rms_error = std::sqrt(sum_error / out.samples);
@@ -105,8 +107,8 @@ Tracking track(const DamperModel& plant_model, const DamperModel& law_model, con
 }
 
 void print(const char* name, const Tracking& r) {
-  std::printf("%-40s RMS %8.1f N, max %8.1f N of a %8.1f N RMS demand; clipped %d, unreached %d of %d\n", name,
-              r.rms_error, r.max_error, r.demand_rms, r.clipped, r.unreached, r.samples);
+  std::printf("%-36s RMS %8.1f N, max %8.1f N of %8.1f N RMS; clipped %d, unreached %d of %d; <= %d integrations\n",
+              name, r.rms_error, r.max_error, r.demand_rms, r.clipped, r.unreached, r.samples, r.max_evaluations);
 }
 
 CompensatorLimits bipolar() {
