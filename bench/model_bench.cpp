@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "model/force_inverse.hpp"
 #include "model/hysteresis_compensator.hpp"
 #include "model/observer.hpp"
 
@@ -101,6 +102,79 @@ void BM_CompensatorStep(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_CompensatorStep);
+
+// The force-mode law, one period: the inverse (Eq. 11-12, 13 inverted, the J-A search, the coil
+// lag inverted when declared) and the observer step it reads. Table 4's motion with a viscous
+// demand of 250 kN s/m on a bipolar driver (docs/FORCE-CONTROL.md).
+void run_force_law(benchmark::State& state, const mrd::model::DamperModel& model,
+                   const mrd::model::CompensatorLimits& limits, double (*demand)(int i, double v)) {
+  mrd::model::Observer observer{model};
+  mrd::model::ForceInverse inverse(observer, limits);
+  const auto& x = sine_displacement();
+  constexpr double kPeakVelocity = 0.04 * 2.0 * std::numbers::pi * 0.5;  // of sine_displacement
+  int i = 0;
+  long evaluations = 0;
+  for (auto _ : state) {
+    const double v = kPeakVelocity * std::cos(2.0 * std::numbers::pi * i / kSamplesPerCycle);
+    const auto command = inverse.step({.force = demand(i, v), .velocity = v}, observer);
+    benchmark::DoNotOptimize(observer.step({.displacement = x[i], .velocity = v, .coil_current = command.current}));
+    evaluations += inverse.last_evaluations();
+    i = (i + 1) % kSamplesPerCycle;
+  }
+  state.counters["evaluations"] = benchmark::Counter(static_cast<double>(evaluations), benchmark::Counter::kAvgIterations);
+}
+
+mrd::model::CompensatorLimits bipolar_limits() {
+  mrd::model::CompensatorLimits limits;
+  limits.min_current = -limits.max_current;
+  return limits;
+}
+
+double viscous_demand(int, double v) { return 250e3 * v; }
+
+void BM_ForceInverseStep(benchmark::State& state) {
+  run_force_law(state, mrd::model::DamperModel{}, bipolar_limits(), viscous_demand);
+}
+BENCHMARK(BM_ForceInverseStep);
+
+void BM_ForceInverseStepCoilLag(benchmark::State& state) {
+  mrd::model::DamperModel m;
+  m.effects.get<mrd::model::CoilLagEffect>() = {true, 20e-3};
+  run_force_law(state, m, bipolar_limits(), viscous_demand);
+}
+BENCHMARK(BM_ForceInverseStepCoilLag);
+
+// A full swing every period: the demand jumps between far above the maximum force and none.
+// At the default 100 A/s the slew window holds the target outside it, so the search stops at an
+// end after one or two integrations.
+double full_swing_demand(int i, double v) { return i % 2 ? 1e6 * v : 0.0; }
+// A swing inside the range: 40 kN of the 45 kN yield force at 1.5 A, and none.
+double inner_swing_demand(int i, double v) { return i % 2 ? 40e3 * std::tanh(v / 1e-3) + 53e3 * v : 0.0; }
+
+void BM_ForceInverseFullSwing(benchmark::State& state) {
+  run_force_law(state, mrd::model::DamperModel{}, bipolar_limits(), full_swing_demand);
+}
+BENCHMARK(BM_ForceInverseFullSwing);
+
+// The bound at the default limits: a tolerance no trial meets, so every period runs the whole
+// cap (2 + 24 integrations over the 0.1 A slew window).
+void BM_ForceInverseSearchCap(benchmark::State& state) {
+  auto limits = bipolar_limits();
+  limits.tolerance = -1.0;  // no trial meets it, not even an exact one
+  run_force_law(state, mrd::model::DamperModel{}, limits, viscous_demand);
+}
+BENCHMARK(BM_ForceInverseSearchCap);
+
+// The worst case: a driver that slews its whole range in one period (1e4 A/s at 1 kHz), a swing
+// between no force and nearly the most every period, and the whole cap each time: 25
+// integrations over up to 1.5 A.
+void BM_ForceInverseWorstCase(benchmark::State& state) {
+  auto limits = bipolar_limits();
+  limits.slew_rate = 1e4;
+  limits.tolerance = -1.0;  // no trial meets it, not even an exact one
+  run_force_law(state, mrd::model::DamperModel{}, limits, inner_swing_demand);
+}
+BENCHMARK(BM_ForceInverseWorstCase);
 
 }  // namespace
 

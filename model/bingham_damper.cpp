@@ -32,4 +32,10 @@ double BinghamDamper::force(double velocity, double yield_stress) const {
          viscous_coefficient_ * velocity;
 }
 
+double BinghamDamper::yield_stress_for(double force, double velocity) const {
+  const double sign = sign_term(velocity);
+  if (sign == 0.0) return std::fabs(force) / yield_gain_;
+  return (force - viscous_coefficient_ * velocity) / (yield_gain_ * sign);  // Eq. 12 for tau_y
+}
+
 }  // namespace mrd::model

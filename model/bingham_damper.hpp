@@ -29,6 +29,14 @@ class BinghamDamper {
   // Damper force [N] from velocity [m/s] and yield stress [Pa].
   [[nodiscard]] double force(double velocity, double yield_stress) const;
   [[nodiscard]] double yield_force(double yield_stress) const { return yield_gain_ * yield_stress; }
+  // Eq. 11-12 inverted: the yield stress [Pa] that gives `force` [N] at `velocity` [m/s],
+  //   tau_y = (F - c0 v) / ((3 Ap L / hd) tanh(v / v_s)).
+  // The force carries the sign of the motion it resists (F v > 0 dissipates). Negative when no
+  // yield stress can give the force: when it asks the damper to push with the motion, or for
+  // less than the viscous term c0 v alone gives. At v = 0 the sign term is 0 and any stress
+  // gives no force; the fluid at rest holds up to the yield force either way, so the answer is
+  // |F| / (3 Ap L / hd): the field is ready when the motion starts.
+  [[nodiscard]] double yield_stress_for(double force, double velocity) const;
   // The regularised sgn(v) of Eq. 11, tanh(v / v_s).
   [[nodiscard]] double sign_term(double velocity) const;
   [[nodiscard]] double viscous_coefficient() const { return viscous_coefficient_; }  // c0 [N s/m]

@@ -91,4 +91,10 @@ double YieldStress::operator()(double B) const {
   return std::max(0.0, field_gain_ * eq13_field_power(std::fabs(B)) + offset_);  // Eq. 13
 }
 
+double YieldStress::induction(double tau) const {
+  const double field_part = tau - offset_;  // Eq. 13: the B^0.5811 term alone
+  if (!(field_part > 0.0) || !(tau > 0.0)) return 0.0;  // also NaN
+  return std::pow(field_part / field_gain_, 1.0 / kEq13Exponent);
+}
+
 }  // namespace mrd::model

@@ -32,6 +32,15 @@ class YieldStress {
  public:
   explicit YieldStress(const MrFluid& fluid);
   [[nodiscard]] double operator()(double B) const;
+  // Eq. 13 inverted: the least |B| [T] that gives the yield stress `tau` [Pa],
+  //   |B| = ((tau - offset) / gain)^(1 / 0.5811).
+  // Below the zero-field stress (the offset, when it is positive) no field gives less, so it is
+  // 0; so is a NaN. A negative offset makes every B up to the root of Eq. 13 give 0 Pa: the
+  // least of them, 0, answers tau = 0, and just above it the root. No upper clamp: the
+  // caller bounds tau by what its maximum current gives.
+  [[nodiscard]] double induction(double tau) const;
+  // The yield stress at B = 0 [Pa]: the least the fluid has.
+  [[nodiscard]] double zero_field_stress() const { return (*this)(0.0); }
 
  private:
   double field_gain_;  // 146960 V^1.706 rho^0.2 Ms^0.8 [Pa / T^0.5811]

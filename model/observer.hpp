@@ -67,6 +67,7 @@ class Observer {
   [[nodiscard]] const BinghamDamper& damper() const { return damper_; }
   [[nodiscard]] const YieldStress& yield_stress() const { return yield_stress_; }
   [[nodiscard]] const EffectChain& effects() const { return effects_; }
+  [[nodiscard]] double sample_period() const { return sample_period_; }
   void reset();
 
  private:

@@ -1,5 +1,6 @@
 #include "model/effects/coil_lag.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -11,12 +12,36 @@ ValidationReport validate(const CoilLagParams& p) {
   return report;
 }
 
+namespace {
+
+// The share of the distance to the command covered in dt: 1 - exp(-dt/tau), 1 without a lag.
+double lag_gain(double dt, double time_constant) {
+  return time_constant > 0.0 ? -std::expm1(-dt / time_constant) : 1.0;
+}
+
+}  // namespace
+
 CoilLag::CoilLag(const CoilLagParams& params, double sample_period)
-    : gain_(params.time_constant > 0.0 ? -std::expm1(-sample_period / params.time_constant) : 1.0) {}
+    : time_constant_(params.time_constant),
+      period_(sample_period),
+      gain_(lag_gain(sample_period, params.time_constant)) {}
+
+double CoilLag::gain_over(double dt) const { return dt == period_ ? gain_ : lag_gain(dt, time_constant_); }
 
 double CoilLag::step(double command) {
   if (std::isfinite(command)) current_ += gain_ * (command - current_);
   return current_;
+}
+
+double CoilLag::command_for(double target_current, double dt, const CurrentRange& driver) const {
+  const double command = current_ + (target_current - current_) / gain_over(dt);
+  // A NaN target (or dt = 0 with no distance to go) holds the present current.
+  return std::clamp(std::isnan(command) ? current_ : command, driver.lowest, driver.highest);
+}
+
+CurrentRange CoilLag::reachable(double dt, const CurrentRange& driver) const {
+  const double gain = gain_over(dt);
+  return {current_ + gain * (driver.lowest - current_), current_ + gain * (driver.highest - current_)};
 }
 
 std::optional<std::string> CoilLagEffect::implausible(const Params& p, const RunScales& s) {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "common/validation_report.hpp"
+#include "model/current_range.hpp"
 #include "model/effects/effect_traits.hpp"
 
 namespace mrd::model {
@@ -37,8 +38,21 @@ class CoilLag {
   [[nodiscard]] double current() const { return current_; }
   void reset(double current = 0.0) { current_ = current; }
 
+  // The lag inverted over one period `dt` [s]: the command that, held over dt, brings the
+  // current from its present value to `target_current` [A] exactly,
+  //   u = i + (target - i) / (1 - exp(-dt/tau)),
+  // clamped to what the driver may command.
+  [[nodiscard]] double command_for(double target_current, double dt, const CurrentRange& driver) const;
+  // The currents that can flow at the end of `dt` for commands in `driver`: the lag's step
+  // from the two ends (it is monotone in the command).
+  [[nodiscard]] CurrentRange reachable(double dt, const CurrentRange& driver) const;
+
  private:
-  double gain_;  // 1 - exp(-T/tau)
+  [[nodiscard]] double gain_over(double dt) const;
+
+  double time_constant_;  // tau [s]
+  double period_;         // the period gain_ holds for [s]
+  double gain_;           // 1 - exp(-T/tau)
   double current_ = 0.0;
 };
 
@@ -51,6 +65,13 @@ struct CoilLagEffect : EffectTraitsBase<CoilLagParams> {
   static constexpr bool kChangesInduction = true;
   // Hook (effect_chain.hpp): the current that flows, from the one commanded.
   static double coil_current(Element& lag, double command) { return lag.step(command); }
+  // Its inverse (EffectChain::reachable_current, command_for).
+  static CurrentRange reachable_current(const Element& lag, double dt, const CurrentRange& commands) {
+    return lag.reachable(dt, commands);
+  }
+  static double command_for(const Element& lag, double flowing, double dt, const CurrentRange& commands) {
+    return lag.command_for(flowing, dt, commands);
+  }
 
   template <typename Visitor>
   static void fields(Params& p, Visitor&& v) {

@@ -1,5 +1,6 @@
 #include "model/effects/effect_chain.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <type_traits>
 
@@ -49,6 +50,22 @@ double EffectChain::coil_current(double command) {
   });
   coil_current_ = current;
   return current;
+}
+
+CurrentRange EffectChain::reachable_current(const CurrentRange& commands, double dt) const {
+  CurrentRange flowing = commands;
+  for_each_enabled([&]<typename E>(const typename E::Element& e) {
+    if constexpr (requires { E::reachable_current(e, dt, flowing); }) flowing = E::reachable_current(e, dt, flowing);
+  });
+  return flowing;
+}
+
+double EffectChain::command_for(double flowing, double dt, const CurrentRange& commands) const {
+  double command = std::clamp(flowing, commands.lowest, commands.highest);
+  for_each_enabled([&]<typename E>(const typename E::Element& e) {
+    if constexpr (requires { E::command_for(e, flowing, dt, commands); }) command = E::command_for(e, flowing, dt, commands);
+  });
+  return command;
 }
 
 double EffectChain::yield_factor() const {

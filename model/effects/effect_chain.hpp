@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "model/bingham_damper.hpp"
+#include "model/current_range.hpp"
 #include "model/effects/effect_set.hpp"
 
 namespace mrd::model {
@@ -36,6 +37,12 @@ class EffectChain {
 
   [[nodiscard]] PredictedMotion motion(const PredictedMotion& reading, double acceleration) const;
   double coil_current(double command);
+  // Hook 2 inverted, for a force or B command: the currents that can flow at the end of `dt`
+  // for commands in `commands`, and the command that makes `flowing` flow then (clamped to
+  // `commands`). Without an enabled effect that changes the current, what is commanded flows.
+  // Exact for one such effect (today only coil_lag); several would invert in reverse order.
+  [[nodiscard]] CurrentRange reachable_current(const CurrentRange& commands, double dt) const;
+  [[nodiscard]] double command_for(double flowing, double dt, const CurrentRange& commands) const;
   [[nodiscard]] double yield_factor() const;
   // Steps 3-4: the fluid force [N] from the yield stress already scaled by yield_factor().
   double fluid_force(const BinghamDamper& damper, double yield_stress, double velocity);

@@ -30,6 +30,56 @@ TEST(YieldStressEq13, IsClampedAtZeroWhereTheFitGoesNegative) {
   EXPECT_GT(thin(0.1), 0.0);
 }
 
+// Eq. 13 inverted (YieldStress::induction). The hand-computed 60583.845 Pa is 1 T; dtau/dB is
+// 0.5811 * 60437.6 Pa/T there, so 0.01 Pa of rounding is 3e-7 T.
+TEST(YieldStressEq13, InductionInvertsTheHandComputedValues) {
+  const YieldStress tau(MrFluid{2.25, 0.40, 1.5e-6, 2.1});
+  EXPECT_NEAR(tau.induction(60583.845), 1.0, 1e-6);
+  EXPECT_NEAR(tau.induction(40545.997), 0.5, 1e-6);
+}
+
+TEST(YieldStressEq13, InductionRoundTripsOverTheRange) {
+  const YieldStress tau(MrFluid{});
+  double worst = 0.0;
+  for (double B = 1e-6; B <= 3.0; B *= 1.1) {
+    worst = std::max(worst, std::fabs(tau.induction(tau(B)) - B) / B);
+    const double stress = tau.zero_field_stress() + 1e5 * B / 3.0;  // the other way round
+    EXPECT_NEAR(tau(tau.induction(stress)), stress, 1e-10 * stress);
+  }
+  EXPECT_LT(worst, 1e-11);
+}
+
+// Eq. 13 is a power law above its offset: doubling tau - offset multiplies B by 2^(1/0.5811).
+TEST(YieldStressEq13, InductionFollowsThePowerLawAboveTheOffset) {
+  const YieldStress tau(MrFluid{});
+  const double offset = 1083.2 * 0.40 - 287.03;
+  for (const double above : {10.0, 1e3, 5e4}) {
+    EXPECT_NEAR(tau.induction(offset + 2.0 * above) / tau.induction(offset + above), std::pow(2.0, 1.0 / 0.5811),
+                1e-12);
+  }
+}
+
+// No field gives less than the zero-field stress: at and below it, and for bad input, B = 0.
+// A fluid whose offset is negative gives 0 Pa up to the root of Eq. 13; just above 0 Pa the
+// inverse is that root, where the forward equation is back at 0 Pa.
+TEST(YieldStressEq13, InductionIsZeroAtAndBelowTheZeroFieldStress) {
+  const YieldStress tau(MrFluid{});
+  EXPECT_EQ(tau.zero_field_stress(), 1083.2 * 0.40 - 287.03);
+  EXPECT_EQ(tau.induction(tau.zero_field_stress()), 0.0);
+  EXPECT_EQ(tau.induction(0.0), 0.0);
+  EXPECT_EQ(tau.induction(-1e4), 0.0);
+  EXPECT_EQ(tau.induction(std::nan("")), 0.0);
+  // By hand: gain 146960 * 0.2^1.706 * 1.5^0.2 * 2.1^0.8 = 18528 Pa/T^0.5811, offset -70.394 Pa,
+  // root (70.394 / 18528)^(1/0.5811) = 6.84e-5 T.
+  const YieldStress thin(MrFluid{2.25, 0.20, 1.5e-6, 2.1});
+  EXPECT_EQ(thin.induction(0.0), 0.0);
+  const double root = thin.induction(1e-9);
+  EXPECT_NEAR(root, 6.84e-5, 0.01e-5);
+  EXPECT_NEAR(thin(root), 0.0, 1e-8);
+  EXPECT_EQ(thin(0.99 * root), 0.0);
+  EXPECT_GT(thin(1.01 * root), 0.0);
+}
+
 // The tabulated |B|^0.5811 against long double pow, relative, over 2^-40..2^40 T: the table's
 // range (2^-32..2^32) and the std::pow fallback on both sides, on a log grid that does not
 // repeat. The reference exponent is the double 0.5811 (0.5811L differs by 1e-17, which moves
@@ -70,6 +120,38 @@ TEST(BinghamEq12, ForceMatchesHandComputedValues) {
   // Inside the regularisation band: tanh(0.5) of the yield force.
   EXPECT_NEAR(damper.force(0.5e-3, 5e4), 16357.723, 1e-3);
   EXPECT_EQ(damper.force(0.0, 5e4), 0.0);
+}
+
+// Eq. 12 inverted (BinghamDamper::yield_stress_for), against the forward hand values above:
+// at 0.1 m/s tanh is 1 to 1e-86, so tau = (F - c0 v) / (3 Ap L / hd); in the band, tanh(0.5).
+TEST(BinghamEq12, YieldStressForInvertsTheHandComputedForces) {
+  const BinghamDamper damper(DamperGeometry{}, 2.25);
+  EXPECT_NEAR(damper.yield_stress_for(40640.562, 0.1), 5e4, 2e-3);
+  EXPECT_NEAR(damper.yield_stress_for(-40640.562, -0.1), 5e4, 2e-3);
+  EXPECT_NEAR(damper.yield_stress_for(16357.723, 0.5e-3), 5e4, 2e-3);
+  // The viscous force alone needs none (c0 is rounded to 1e-3 N s/m: 1e-4 N, 1.4e-4 Pa).
+  EXPECT_NEAR(damper.yield_stress_for(53005.624 * 0.1, 0.1), 0.0, 2e-4);
+}
+
+TEST(BinghamEq12, YieldStressForRoundTripsThroughTheForce) {
+  const BinghamDamper damper(DamperGeometry{}, 2.25);
+  for (const double v : {-0.3, -2e-3, -1e-4, 1e-5, 7e-4, 0.05}) {
+    for (const double tau : {0.0, 146.25, 1e4, 6e4}) {
+      EXPECT_NEAR(damper.yield_stress_for(damper.force(v, tau), v), tau, 1e-9 * (tau + 1e4)) << v << " " << tau;
+    }
+  }
+}
+
+// Negative where no yield stress can give the force: pushing with the motion, or less than c0 v.
+// At rest the sign is undefined; the documented choice holds |F| (the fluid at rest holds up to
+// the yield force in either direction).
+TEST(BinghamEq12, YieldStressForIsNegativeForForcesNoFieldGivesAndHoldsAtRest) {
+  const BinghamDamper damper(DamperGeometry{}, 2.25);
+  EXPECT_LT(damper.yield_stress_for(-1e4, 0.05), 0.0);
+  EXPECT_LT(damper.yield_stress_for(1e4, -0.05), 0.0);
+  EXPECT_LT(damper.yield_stress_for(0.5 * 53005.624 * 0.05, 0.05), 0.0);
+  EXPECT_NEAR(damper.yield_stress_for(7068.0, 0.0), 1e4, 1e-9);
+  EXPECT_NEAR(damper.yield_stress_for(-7068.0, 0.0), 1e4, 1e-9);
 }
 
 TEST(BinghamEq12, SignRegularisationReachesThe995PercentPointAtThreeScales) {

@@ -75,4 +75,57 @@ TEST(HysteresisCompensator, CannotRemoveRemanenceWithAUnipolarDriver) {
   EXPECT_GT(B, 0.1);  // the remanence stays; only a negative current could clear it
 }
 
+// current_for: the search alone, over an interval the caller gives (a coil lag's reachable
+// currents). The forward J-A from the same state is the reference.
+TEST(HysteresisCompensator, CurrentForFindsTheCurrentThatGivesTheTargetB) {
+  JilesAtherton core = default_core();
+  const TargetCurve target(core, 1.5);
+  HysteresisCompensator compensator(core, target, CompensatorLimits{}, 1e-3);
+  for (const double B : {0.5, 1.1, 0.3, 0.8, 0.05}) {
+    const auto found = compensator.current_for(B, core, {-1.5, 1.5});
+    EXPECT_TRUE(found.reached);
+    EXPECT_LE(found.evaluations, 2 + CompensatorLimits{}.max_iterations);
+    JilesAtherton forward = core;
+    EXPECT_EQ(forward.apply_current(found.current), found.B);
+    EXPECT_NEAR(core.apply_current(found.current), B, CompensatorLimits{}.tolerance) << B;
+  }
+}
+
+TEST(HysteresisCompensator, CurrentForGivesTheNearerEndOfAnUnreachableTarget) {
+  JilesAtherton core = default_core();
+  const TargetCurve target(core, 1.5);
+  HysteresisCompensator compensator(core, target, CompensatorLimits{}, 1e-3);
+  const auto high = compensator.current_for(1.2, core, {0.0, 0.1});
+  EXPECT_EQ(high.current, 0.1);
+  EXPECT_FALSE(high.reached);
+  EXPECT_EQ(high.evaluations, 2);
+  for (int i = 0; i < 20; ++i) core.apply_current(0.1 * i);
+  const auto low = compensator.current_for(0.0, core, {0.0, 1.5});  // the remanence stays
+  EXPECT_EQ(low.current, 0.0);
+  EXPECT_GT(low.B, 0.1);
+  EXPECT_FALSE(low.reached);
+  EXPECT_EQ(low.evaluations, 1);
+}
+
+// With a tolerance no trial meets, the search runs exactly its cap of iterations after the two
+// ends, and more iterations never give a worse best.
+TEST(HysteresisCompensator, CurrentForStopsAtTheIterationCapWithTheBestTrial) {
+  const JilesAtherton core = default_core();
+  const TargetCurve target(core, 1.5);
+  double previous_error = 1.0;
+  for (int cap = 0; cap <= 8; ++cap) {
+    CompensatorLimits limits;
+    limits.tolerance = 0.0;
+    limits.max_iterations = cap;
+    HysteresisCompensator compensator(core, target, limits, 1e-3);
+    const auto found = compensator.current_for(0.7, core, {0.0, 1.5});
+    EXPECT_EQ(found.evaluations, 2 + cap);
+    EXPECT_FALSE(found.reached);
+    const double error = std::fabs(found.B - 0.7);
+    EXPECT_LE(error, previous_error) << cap;
+    previous_error = error;
+  }
+  EXPECT_LT(previous_error, 1e-6);
+}
+
 }  // namespace

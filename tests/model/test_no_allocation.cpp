@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "control/control_law.hpp"
+#include "model/force_inverse.hpp"
 #include "model/hysteresis_compensator.hpp"
 #include "model/observer.hpp"
 #include "tests/support/allocation_counter.hpp"
@@ -49,6 +50,27 @@ TEST(RealTime, ObserverAndCompensatorStepsDoNotAllocate) {
   }
   const auto count = stop_counting_allocations();
   EXPECT_EQ(count, 0u);
+  EXPECT_TRUE(std::isfinite(sink));
+}
+
+// The force inverse with a coil lag declared (its inversion runs), on a demand that is
+// dissipative, then pushes with the motion, then is not finite.
+TEST(RealTime, ForceInverseStepDoesNotAllocate) {
+  mrd::model::DamperModel model;
+  model.effects.get<mrd::model::CoilLagEffect>() = {true, 20e-3};
+  mrd::model::Observer observer(model);
+  mrd::model::ForceInverse inverse(observer, {});
+  double sink = 0.0;
+  start_counting_allocations();
+  for (int i = 0; i < 100000; ++i) {
+    const double phase = 2.0 * std::numbers::pi * 0.5 * i * 1e-3;
+    const double x = 0.04 * std::sin(phase);
+    const double v = 0.04 * std::numbers::pi * std::cos(phase);
+    const double force = i % 3 == 0 ? 250e3 * v : (i % 3 == 1 ? -250e3 * v : std::nan(""));
+    const auto command = inverse.step({.force = force, .velocity = v}, observer);
+    sink += observer.step({.displacement = x, .velocity = v, .coil_current = command.current}).force;
+  }
+  EXPECT_EQ(stop_counting_allocations(), 0u);
   EXPECT_TRUE(std::isfinite(sink));
 }
 
