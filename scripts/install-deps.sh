@@ -4,6 +4,7 @@ set -euo pipefail
 export DEBIAN_FRONTEND=noninteractive
 packages=(
   build-essential cmake ninja-build pkg-config
+  # libboost-dev: Boost.Lockfree for the rings; Boost.Odeint for the tests' J-A reference.
   libeigen3-dev libboost-dev libmodbus-dev libgpiod-dev libtomlplusplus-dev libcli11-dev
   libpagmo-dev
   libgtest-dev libgmock-dev libbenchmark-dev

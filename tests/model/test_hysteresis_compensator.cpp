@@ -45,6 +45,8 @@ TEST(HysteresisCompensator, ReachesAReachableTargetWithinTolerance) {
     EXPECT_NEAR(B, target.B(scheduled), 2e-5) << scheduled;
     EXPECT_NEAR(compensator.target_B(), target.B(scheduled), 1e-15);
   }
+  EXPECT_EQ(core.guard_events(), 0u);  // the target was reached by the equations, not a clamp
+  EXPECT_EQ(core.recoveries(), 0u);
 }
 
 TEST(HysteresisCompensator, RespectsCurrentLimitsAndSlewRate) {
@@ -73,6 +75,8 @@ TEST(HysteresisCompensator, CannotRemoveRemanenceWithAUnipolarDriver) {
   for (int i = 0; i < 100; ++i) B = core.apply_current(compensator.command(0.0, core));
   EXPECT_EQ(compensator.last_command(), 0.0);
   EXPECT_GT(B, 0.1);  // the remanence stays; only a negative current could clear it
+  EXPECT_EQ(core.guard_events(), 0u);
+  EXPECT_EQ(core.recoveries(), 0u);
 }
 
 // current_for: the search alone, over an interval the caller gives (a coil lag's reachable

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -19,6 +20,20 @@ TEST(Crc8SaeJ1850, MatchesTheStandardCheckValue) {
   std::vector<std::uint8_t> bytes(text.begin(), text.end());
   EXPECT_EQ(crc8_sae_j1850(bytes), 0x4B);
   EXPECT_EQ(crc8_sae_j1850({}), 0x00);  // init 0xFF, final XOR 0xFF
+}
+
+// The check table of AUTOSAR's CRC library specification for its 8-bit SAE J1850 routine.
+TEST(Crc8SaeJ1850, MatchesTheAutosarCheckTable) {
+  const std::vector<std::pair<std::vector<std::uint8_t>, std::uint8_t>> table{
+      {{0x00, 0x00, 0x00, 0x00}, 0x59},
+      {{0xF2, 0x01, 0x83}, 0x37},
+      {{0x0F, 0xAA, 0x00, 0x55}, 0x79},
+      {{0x00, 0xFF, 0x55, 0x11}, 0xB8},
+      {{0x33, 0x22, 0x55, 0xAA, 0xBB, 0xCC, 0xDD, 0xEE, 0xFF}, 0xCB},
+      {{0x92, 0x6B, 0x55}, 0x8C},
+      {{0xFF, 0xFF, 0xFF, 0xFF}, 0x74},
+  };
+  for (const auto& [bytes, crc] : table) EXPECT_EQ(crc8_sae_j1850(bytes), crc) << int{crc};
 }
 
 TEST(CanCodec, LvdtFrameRoundTripsInMetres) {
@@ -81,6 +96,62 @@ TEST(CanCodec, RejectsWrongIdDlcAndChecksum) {
   }
 }
 
+// A frame whose checksum byte is anything but the CRC of bytes 0-6 is rejected, for every
+// message: no value is carried out of it, and it does not take the rolling counter, so the
+// sender's next good frame is still in sequence.
+TEST(CanCodec, EveryWrongChecksumIsRejectedForEveryMessage) {
+  const auto check = [](const char* message, auto encode, auto decode, std::uint32_t id) {
+    RollingCounterCheck counter;
+    const Frame first = encode(id, 4).frame;
+    ASSERT_EQ(decode(id, payload(first), id, &counter).status, DecodeStatus::kOk) << message;
+    const Frame good = encode(id, 5).frame;
+    int rejected = 0;
+    for (int checksum = 0; checksum < 256; ++checksum) {
+      if (checksum == good.data[7]) continue;
+      Frame bad = good;
+      bad.data[7] = static_cast<std::uint8_t>(checksum);
+      const auto d = decode(id, payload(bad), id, &counter);
+      EXPECT_EQ(d.status, DecodeStatus::kBadChecksum) << message << " checksum " << checksum;
+      EXPECT_FALSE(carries_values(d.status));
+      EXPECT_EQ(d.value.counter, 0) << "a rejected frame carries nothing out";
+      rejected += d.status == DecodeStatus::kBadChecksum ? 1 : 0;
+    }
+    EXPECT_EQ(rejected, 255) << message;
+    const auto after = decode(id, payload(good), id, &counter);
+    EXPECT_EQ(after.status, DecodeStatus::kOk) << message << ": the bad frames moved the counter";
+    EXPECT_EQ(after.value.counter, 5) << message;
+  };
+  check("LVDT", [](std::uint32_t id, std::uint8_t n) { return encode_lvdt(id, {0.0123, true, n}); },
+        decode_lvdt, kDefaultLvdtId);
+  check("command", [](std::uint32_t id, std::uint8_t n) { return encode_command(id, {1.25, true, n}); },
+        decode_command, kDefaultCommandId);
+  check("feedback", [](std::uint32_t id, std::uint8_t n) { return encode_feedback(id, {-0.75, true, n}); },
+        decode_feedback, kDefaultFeedbackId);
+}
+
+// What a CRC-8 adds over a weaker checksum (an XOR or a sum of the bytes catches every single-bit
+// error too): every two-bit error in the 64-bit frame, and every burst of up to 8 bits, is caught.
+// Bits are numbered in the order the CRC reads them, most significant bit of byte 0 first: a
+// burst that crosses a byte boundary in any other numbering is not one to the CRC.
+TEST(CanCodec, EveryTwoBitErrorAndEveryShortBurstIsCaught) {
+  const Frame good = encode_feedback(kDefaultFeedbackId, {0.321, false, 7}).frame;
+  const auto flipped = [&good](std::uint64_t mask) {  // bit 63 of mask: the first bit read
+    Frame f = good;
+    for (std::size_t i = 0; i < kFrameLength; ++i) f.data[i] ^= static_cast<std::uint8_t>(mask >> (56 - 8 * i));
+    return decode_feedback(f.id, payload(f), kDefaultFeedbackId, nullptr).status;
+  };
+  int missed = 0;
+  for (int a = 0; a < 64; ++a) {
+    for (int b = a + 1; b < 64; ++b) {
+      missed += flipped((std::uint64_t{1} << a) | (std::uint64_t{1} << b)) != DecodeStatus::kBadChecksum;
+    }
+    for (std::uint64_t burst = 1; burst < 256 && a + 8 <= 64; burst += 2) {  // lowest bit at a
+      missed += flipped(burst << a) != DecodeStatus::kBadChecksum;
+    }
+  }
+  EXPECT_EQ(missed, 0);
+}
+
 TEST(CanCodec, RollingCounterFlagsRepeatsAndGapsAndWraps) {
   RollingCounterCheck check;
   const auto frame = [](std::uint8_t counter) {
@@ -114,6 +185,7 @@ TEST(CanCodec, ArbitraryBytesNeverCrashAndDecodeOnlyWithAValidCrc) {
   };
   RollingCounterCheck check;
   int decoded = 0;
+  int bad_checksum = 0;
   for (int i = 0; i < 20000; ++i) {
     std::array<std::uint8_t, 12> bytes{};
     for (auto& b : bytes) b = next();
@@ -122,13 +194,29 @@ TEST(CanCodec, ArbitraryBytesNeverCrashAndDecodeOnlyWithAValidCrc) {
       bytes[7] = crc8_sae_j1850(std::span(bytes).first(7));
     }
     const auto d = decode_lvdt(kDefaultLvdtId, std::span(bytes).first(len), kDefaultLvdtId, &check);
+    // The verdict, from the frame's own bytes: DLC first, then the checksum.
+    if (len != kFrameLength) {
+      ASSERT_EQ(d.status, DecodeStatus::kWrongDlc) << i;
+      continue;
+    }
+    if (bytes[7] != crc8_sae_j1850(std::span(bytes).first(7))) {
+      ASSERT_EQ(d.status, DecodeStatus::kBadChecksum) << i;
+      ++bad_checksum;
+      continue;
+    }
     if (carries_values(d.status)) {
       ++decoded;
-      EXPECT_TRUE(std::isfinite(d.value.displacement));
-      EXPECT_LE(d.value.counter, 15);
+      // The DBC's layout, read here by hand: int32 LE um, the fault bit, the counter nibble.
+      const auto um = static_cast<std::int32_t>(bytes[0] | bytes[1] << 8 | bytes[2] << 16 |
+                                                static_cast<std::uint32_t>(bytes[3]) << 24);
+      ASSERT_DOUBLE_EQ(d.value.displacement, um * 1e-6) << i;
+      ASSERT_EQ(d.value.sensor_fault, (bytes[4] & 1) != 0) << i;
+      ASSERT_EQ(d.value.counter, bytes[6] & 0x0F) << i;
     }
   }
-  EXPECT_GT(decoded, 0);
+  // 1 in 13 frames has 8 bytes; a quarter of those carry a valid CRC.
+  EXPECT_GT(decoded, 250);
+  EXPECT_GT(bad_checksum, 1000);
 }
 
 }  // namespace

@@ -57,6 +57,9 @@ TEST(ObserverEffects, AllOffIsTheBaseModelBitForBit) {
     ASSERT_EQ(e.B, B);
     ASSERT_EQ(e.force, bingham.force(v_at(k), tau(B)));
   }
+  // Two copies of the same J-A would agree bit for bit through a clamp or a reset too.
+  EXPECT_EQ(observer.magnetics().guard_events(), 0u);
+  EXPECT_EQ(observer.magnetics().recoveries(), 0u);
 }
 
 // The force from a known B is the force of the step that computed that B, for the base model
