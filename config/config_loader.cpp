@@ -212,6 +212,29 @@ std::string file_key(const std::string& field) {
   return field;
 }
 
+// Two values of the register map in the same registers would read each other's words: with the
+// current feedback on the LVDT's registers, a negative displacement decodes as 65.5 mm minus its
+// size (the feedback's word replaces the LVDT's high word).
+void check_register_overlaps(TomlReader& in, const hal::modbus::RegisterMap& r) {
+  const auto overlap = [](int a, RegisterKind a_kind, RegisterType a_type, int b, RegisterKind b_kind,
+                          RegisterType b_type) {
+    return a_kind == b_kind && a < b + static_cast<int>(word_count(b_type)) &&
+           b < a + static_cast<int>(word_count(a_type));
+  };
+  if (overlap(r.setpoint_address, RegisterKind::kHolding, r.setpoint.type, r.lvdt_address, r.lvdt_kind, r.lvdt.type)) {
+    in.error("modbus.registers.setpoint_address", "overlaps the LVDT's holding registers");
+  }
+  if (!r.has_current_feedback) return;
+  if (overlap(r.current_feedback_address, r.current_feedback_kind, r.current_feedback.type, r.lvdt_address,
+              r.lvdt_kind, r.lvdt.type)) {
+    in.error("modbus.registers.current_feedback_address", "overlaps the LVDT's registers");
+  }
+  if (overlap(r.current_feedback_address, r.current_feedback_kind, r.current_feedback.type, r.setpoint_address,
+              RegisterKind::kHolding, r.setpoint.type)) {
+    in.error("modbus.registers.current_feedback_address", "overlaps the setpoint's holding registers");
+  }
+}
+
 // Checks that need more than one section, and the physics of the whole.
 void cross_check(TomlReader& in, const ControllerConfig& c) {
   const auto& law = c.law;
@@ -249,14 +272,7 @@ void cross_check(TomlReader& in, const ControllerConfig& c) {
                                           std::to_string(static_cast<long>(per_pass)) +
                                           " each): expect dropped records");
   }
-  const auto& r = c.modbus.registers;
-  if (c.backends.uses(DeviceBackend::kModbus) && r.lvdt_kind == RegisterKind::kHolding) {
-    const int lvdt_end = r.lvdt_address + static_cast<int>(word_count(r.lvdt.type));
-    const int sp_end = r.setpoint_address + static_cast<int>(word_count(r.setpoint.type));
-    if (r.setpoint_address < lvdt_end && r.lvdt_address < sp_end) {
-      in.error("modbus.registers.setpoint_address", "overlaps the LVDT's holding registers");
-    }
-  }
+  if (c.backends.uses(DeviceBackend::kModbus)) check_register_overlaps(in, c.modbus.registers);
 }
 
 void validate_all(TomlReader& in, ControllerConfig& c) {
