@@ -194,6 +194,7 @@ void read_all(TomlReader& in, ControllerConfig& c) {
   in.get("realtime.cpu", c.realtime.cpu);
   in.get("realtime.lock_memory", c.realtime.lock_memory);
   in.get("realtime.io_priority", c.realtime.io_priority);
+  in.get("realtime.cpu_dma_latency", c.realtime.cpu_dma_latency);
   in.get("telemetry.path", c.telemetry.path);
   in.get("telemetry.directory", c.telemetry.directory);
   in.get("telemetry.decimation", c.telemetry.decimation);

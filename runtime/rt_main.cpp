@@ -44,6 +44,10 @@ std::string describe_rt_setup(const RealtimeConfig& config, const RtSetupResult&
   text += io_threads == 0             ? "none"
           : rt.io_fifo == io_threads ? "SCHED_FIFO " + std::to_string(config.io_priority)
                                      : "SCHED_OTHER";
+  text += ", cpu_dma_latency ";
+  text += config.cpu_dma_latency < 0 ? "left alone"
+          : rt.dma_latency.held()    ? std::to_string(config.cpu_dma_latency) + " us"
+                                     : "NOT held";
   return text;
 }
 

@@ -48,10 +48,12 @@ struct RealTimeHooks {
 // loop on its own thread (SCHED_FIFO, pinned, pre-faulted stack) releasing `cycle` on a fixed
 // period, the calling thread polling the signal flags; on stop, `finish` runs one last time on
 // the loop thread (the controller drives the fail-safe current there) before it ends.
-// lock_memory() is the caller's, before it allocates the run's buffers.
+// lock_memory() is the caller's, before it allocates the run's buffers; the CPU wake-up latency
+// limit is held here, in `rt`, until the caller destroys it.
 template <typename Cycle>
 void run_real_time(const RealTimeRun& run, ProcessSignals& signals, const sigset_t* unblock,
                    RtSetupResult& rt, LoopStatistics& stats, Cycle&& cycle, const RealTimeHooks& hooks) {
+  hold_cpu_dma_latency(run.realtime, rt);
   make_io_threads_realtime(run.realtime, run.io_threads, rt);
   std::atomic<bool> stop{false};
   std::atomic<bool> setup_done{false};
