@@ -200,6 +200,8 @@ void read_all(TomlReader& in, ControllerConfig& c) {
   in.get("telemetry.decimation", c.telemetry.decimation);
   in.get("telemetry.ring_size", c.telemetry.ring_size);
   in.get("telemetry.flush_period", c.telemetry.flush_period);
+  in.get("telemetry.per_run", c.telemetry.per_run);
+  in.get("telemetry.max_bytes", c.telemetry.max_bytes);
 }
 
 void report(TomlReader& in, const ValidationReport& r, std::string_view table) {

@@ -50,7 +50,7 @@ int run_controller(const config::ControllerConfig& config, const RunOptions& opt
   if (config.telemetry.enabled()) {
     queue = std::make_unique<runtime::TelemetryQueue>(static_cast<std::size_t>(config.telemetry.ring_size));
     writer = std::make_unique<runtime::CsvTelemetryWriter>(*queue, config.telemetry.flush_period);
-    if (const auto started = writer->start(config.telemetry.resolved_path()); !started.ok) {
+    if (const auto started = writer->start(config.telemetry); !started.ok) {
       std::fprintf(stderr, "mrd-controller: %s\n", started.error.c_str());
       return 1;
     }
@@ -76,7 +76,7 @@ int run_controller(const config::ControllerConfig& config, const RunOptions& opt
   std::fprintf(out, "mrd-controller: %.0f Hz, lvdt=%s driver=%s lines=%s%s%s\n", config.rate,
                to_string(config.backends.lvdt).data(), to_string(config.backends.driver).data(),
                to_string(config.backends.lines).data(), motion ? ", mock LVDT on the simulation sine" : "",
-               config.telemetry.enabled() ? (", telemetry " + config.telemetry.resolved_path()).c_str() : "");
+               writer ? (", telemetry " + writer->path()).c_str() : "");
 
   runtime::LoopStatistics stats;
   const runtime::RealTimeRun run{.realtime = config.realtime,
@@ -105,10 +105,11 @@ int run_controller(const config::ControllerConfig& config, const RunOptions& opt
   std::fprintf(out, "final setpoint %.3f A (fail-safe %.3f A), enable %s\n", loop.last().setpoint,
                config.safety.fail_safe_current, loop.last().enable ? "on" : "off");
   if (queue) {
-    std::fprintf(out, "telemetry: %llu records offered, %llu written, %llu dropped -> %s\n",
+    std::fprintf(out, "telemetry: %llu records offered, %llu written, %llu dropped, %llu over the size cap -> %s\n",
                  static_cast<unsigned long long>(queue->offered()),
                  static_cast<unsigned long long>(writer->written()),
-                 static_cast<unsigned long long>(queue->dropped()), config.telemetry.resolved_path().c_str());
+                 static_cast<unsigned long long>(queue->dropped()),
+                 static_cast<unsigned long long>(writer->capped()), writer->path().c_str());
     if (const auto t0 = writer->start_time()) {
       std::fprintf(out, "telemetry: time_s 0 is CLOCK_MONOTONIC %.9f s\n",
                    std::chrono::duration<double>(*t0).count());

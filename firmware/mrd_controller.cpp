@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
   app.add_option("--check-config", check_path, "validate FILE, print every problem, exit 0 or 1");
   app.add_option("--duration", options.duration_s, "run this many seconds (0: until SIGTERM, SIGINT or SIGHUP)")
       ->check(CLI::Range(0.0, 1e7))->capture_default_str();
-  app.add_option("--telemetry", telemetry_path, "write telemetry CSV here (overrides telemetry.path, and telemetry.directory with its directory)");
+  app.add_option("--telemetry", telemetry_path, "write telemetry CSV to exactly this file (overrides telemetry.path, telemetry.directory with its directory, and telemetry.per_run)");
   app.add_option("--rate", rate, "control rate [Hz] (overrides loop.rate)")->check(CLI::Range(10.0, 20000.0));
   app.add_flag("--bench", options.bench,
                "loop benchmark: mock HAL and its sine whatever the config says, no telemetry, "
@@ -70,6 +70,7 @@ int main(int argc, char** argv) {
     const std::filesystem::path file(telemetry_path);
     config.telemetry.directory = file.has_parent_path() ? file.parent_path().string() : ".";
     config.telemetry.path = file.filename().string();
+    config.telemetry.per_run = false;  // exactly the file named, as before
   }
   if (options.bench) {
     config.backends = {};  // all mock

@@ -34,6 +34,7 @@ TEST(ControllerRun, DefaultConfigRunsOnTheMockHalAndStopsInSafeWithTelemetryAcco
   auto config = mrd::config::load_default_config().config;
   const auto csv = std::filesystem::temp_directory_path() / "mrd_controller_run.csv";
   config.telemetry.path = csv.string();
+  config.telemetry.per_run = false;
   config.realtime.priority = 0;  // a unit test does not ask for SCHED_FIFO
   config.safety.recovery_periods = 50;
   // SCHED_OTHER on a shared machine overruns now and then; this test is not about that.
