@@ -23,6 +23,20 @@ int print_report(const mrd::config::LoadedConfig& loaded, const std::string& nam
   return 0;
 }
 
+// Modbus TCP to another host needs the network up before the service starts; the unit does not
+// order itself after network-online.target, since CAN and RTU boxes must not wait for it.
+void note_network(const mrd::config::ControllerConfig& config) {
+  if (!config.backends.uses(mrd::config::DeviceBackend::kModbus) ||
+      config.modbus.transport != mrd::hal::modbus::Transport::kTcp) {
+    return;
+  }
+  const std::string& host = config.modbus.tcp.host;
+  if (host == "localhost" || host.starts_with("127.") || host == "::1") return;
+  std::printf("note: Modbus TCP to %s needs the network: order the service after network-online.target "
+              "(systemctl edit mrd-controller.service; docs/DEPLOY.md, \"The network\")\n",
+              host.c_str());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -54,7 +68,10 @@ int main(int argc, char** argv) {
   if (!check_path.empty()) {
     const auto loaded = mrd::config::load_config_file(check_path);
     const int rc = print_report(loaded, check_path);
-    if (rc == 0) std::printf("%s: ok\n", check_path.c_str());
+    if (rc == 0) {
+      note_network(loaded.config);
+      std::printf("%s: ok\n", check_path.c_str());
+    }
     return rc;
   }
 

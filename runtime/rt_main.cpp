@@ -6,8 +6,11 @@ namespace {
 
 ProcessSignals* g_signals = nullptr;
 
-extern "C" void on_stop_signal(int) {
-  if (g_signals != nullptr) g_signals->stop.store(true);
+extern "C" void on_stop_signal(int signal) {
+  if (g_signals == nullptr) return;
+  int none = 0;
+  g_signals->stop_signal.compare_exchange_strong(none, signal);
+  g_signals->stop.store(true);
 }
 extern "C" void on_stats_signal(int) {
   if (g_signals != nullptr) g_signals->print_stats.store(true);
@@ -15,8 +18,20 @@ extern "C" void on_stats_signal(int) {
 
 }  // namespace
 
+const char* signal_name(int signal) {
+  switch (signal) {
+    case SIGTERM: return "SIGTERM";
+    case SIGINT: return "SIGINT";
+    case SIGHUP: return "SIGHUP";
+    default: return "a signal";
+  }
+}
+
+hal::Timestamp monotonic_now() { return hal::MonotonicClock{}.now(); }
+
 sigset_t install_process_signals(ProcessSignals& signals) {
   static_assert(std::atomic<bool>::is_always_lock_free, "signal handlers set atomic flags");
+  static_assert(std::atomic<int>::is_always_lock_free, "signal handlers set atomic flags");
   g_signals = &signals;
   struct sigaction sa{};
   sigemptyset(&sa.sa_mask);

@@ -20,8 +20,14 @@ namespace mrd::runtime {
 // Flags the process's signal handlers set (async-signal-safe: lock-free atomics only).
 struct ProcessSignals {
   std::atomic<bool> stop{false};         // SIGTERM, SIGINT, SIGHUP: end the run through the final cycle
+  std::atomic<int> stop_signal{0};       // which of them came first (0: none yet)
   std::atomic<bool> print_stats{false};  // SIGUSR1
 };
+
+// "SIGHUP" for a stop signal's number.
+[[nodiscard]] const char* signal_name(int signal);
+// CLOCK_MONOTONIC now: the time the hooks' `tick` gets.
+[[nodiscard]] hal::Timestamp monotonic_now();
 
 // Installs the handlers for `signals` and blocks those signals on the calling thread, so the
 // threads it starts afterwards inherit a mask without them and only the main thread takes
@@ -42,6 +48,7 @@ struct RealTimeHooks {
   std::function<void(hal::Timestamp next_release)> finish;  // on the loop thread, after the stop
   std::function<void(const RtSetupResult&)> ready;          // once the loop thread is set up
   std::function<void()> print_stats;                        // on SIGUSR1
+  std::function<void(hal::Timestamp now)> tick;             // every poll period, while the loop runs
 };
 
 // The one skeleton of mrd-controller and mrd-plant: the bus threads at their priority, the
@@ -73,6 +80,7 @@ void run_real_time(const RealTimeRun& run, ProcessSignals& signals, const sigset
     std::this_thread::sleep_for(run.poll_period);
     if (signals.stop.load()) stop.store(true);
     if (signals.print_stats.exchange(false) && hooks.print_stats) hooks.print_stats();
+    if (hooks.tick) hooks.tick(monotonic_now());
   }
   loop_thread.join();
 }

@@ -5,6 +5,8 @@ export DEBIAN_FRONTEND=noninteractive
 packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev libboost-dev libmodbus-dev libgpiod-dev libtomlplusplus-dev libcli11-dev
+  libsystemd-dev  # sd_notify: the unit's Type=notify and watchdog
+  rt-tests        # cyclictest, the reference of scripts/bench-loop.sh
   libpagmo-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox
