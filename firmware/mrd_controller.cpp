@@ -9,6 +9,7 @@
 
 #include "config/config_loader.hpp"
 #include "firmware/controller.hpp"
+#include "firmware/probe.hpp"
 
 namespace {
 
@@ -46,6 +47,7 @@ int main(int argc, char** argv) {
   std::string telemetry_path;
   double rate = 0.0;
   bool print_default = false;
+  bool probe = false;
   mrd::firmware::RunOptions options;
   app.add_option("--config", config_path, "TOML config file (default: the embedded config, "
                                           "also installed as etc/mrd/mrd.toml)");
@@ -58,6 +60,10 @@ int main(int argc, char** argv) {
                "loop benchmark: mock HAL and its sine whatever the config says, no telemetry, "
                "latency histograms printed");
   app.add_flag("--print-default-config", print_default, "print the embedded default config and exit");
+  app.add_flag("--probe", probe,
+               "commissioning: open the configured buses with the driver held off (enable low, no setpoint "
+               "written), print decoded LVDT and current readings for 1 s, exit 0 (ok), 1 (a bus cannot "
+               "start) or 2 (readings wrong, each problem printed)");
   CLI11_PARSE(app, argc, argv);
 
   if (print_default) {
@@ -95,6 +101,7 @@ int main(int argc, char** argv) {
   }
   const auto checked = mrd::config::revalidate(config, "command line");
   if (print_report(checked, "command line") != 0) return 1;
+  if (probe) return mrd::firmware::run_probe(checked.config, {}, stdout);
 
   // The loop, bus and telemetry threads inherit a mask without the signals, so only the main
   // thread takes them; it polls the flags the handlers set.
