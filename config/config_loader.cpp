@@ -201,11 +201,14 @@ void read_all(TomlReader& in, ControllerConfig& c) {
   in.get("realtime.cpu", c.realtime.cpu);
   in.get("realtime.lock_memory", c.realtime.lock_memory);
   in.get("realtime.io_priority", c.realtime.io_priority);
+  in.get("realtime.cpu_dma_latency", c.realtime.cpu_dma_latency);
   in.get("telemetry.path", c.telemetry.path);
   in.get("telemetry.directory", c.telemetry.directory);
   in.get("telemetry.decimation", c.telemetry.decimation);
   in.get("telemetry.ring_size", c.telemetry.ring_size);
   in.get("telemetry.flush_period", c.telemetry.flush_period);
+  in.get("telemetry.per_run", c.telemetry.per_run);
+  in.get("telemetry.max_bytes", c.telemetry.max_bytes);
 }
 
 void report(TomlReader& in, const ValidationReport& r, std::string_view table) {
@@ -217,6 +220,29 @@ std::string file_key(const std::string& field) {
   if (field.starts_with("limits.")) return "compensator." + field.substr(7);
   if (field == "observer.sample_period") return "loop.rate";
   return field;
+}
+
+// Two values of the register map in the same registers would read each other's words: with the
+// current feedback on the LVDT's registers, a negative displacement decodes as 65.5 mm minus its
+// size (the feedback's word replaces the LVDT's high word).
+void check_register_overlaps(TomlReader& in, const hal::modbus::RegisterMap& r) {
+  const auto overlap = [](int a, RegisterKind a_kind, RegisterType a_type, int b, RegisterKind b_kind,
+                          RegisterType b_type) {
+    return a_kind == b_kind && a < b + static_cast<int>(word_count(b_type)) &&
+           b < a + static_cast<int>(word_count(a_type));
+  };
+  if (overlap(r.setpoint_address, RegisterKind::kHolding, r.setpoint.type, r.lvdt_address, r.lvdt_kind, r.lvdt.type)) {
+    in.error("modbus.registers.setpoint_address", "overlaps the LVDT's holding registers");
+  }
+  if (!r.has_current_feedback) return;
+  if (overlap(r.current_feedback_address, r.current_feedback_kind, r.current_feedback.type, r.lvdt_address,
+              r.lvdt_kind, r.lvdt.type)) {
+    in.error("modbus.registers.current_feedback_address", "overlaps the LVDT's registers");
+  }
+  if (overlap(r.current_feedback_address, r.current_feedback_kind, r.current_feedback.type, r.setpoint_address,
+              RegisterKind::kHolding, r.setpoint.type)) {
+    in.error("modbus.registers.current_feedback_address", "overlaps the setpoint's holding registers");
+  }
 }
 
 // Checks that need more than one section, and the physics of the whole.
@@ -256,14 +282,7 @@ void cross_check(TomlReader& in, const ControllerConfig& c) {
                                           std::to_string(static_cast<long>(per_pass)) +
                                           " each): expect dropped records");
   }
-  const auto& r = c.modbus.registers;
-  if (c.backends.uses(DeviceBackend::kModbus) && r.lvdt_kind == RegisterKind::kHolding) {
-    const int lvdt_end = r.lvdt_address + static_cast<int>(word_count(r.lvdt.type));
-    const int sp_end = r.setpoint_address + static_cast<int>(word_count(r.setpoint.type));
-    if (r.setpoint_address < lvdt_end && r.lvdt_address < sp_end) {
-      in.error("modbus.registers.setpoint_address", "overlaps the LVDT's holding registers");
-    }
-  }
+  if (c.backends.uses(DeviceBackend::kModbus)) check_register_overlaps(in, c.modbus.registers);
 }
 
 void validate_all(TomlReader& in, ControllerConfig& c) {

@@ -140,6 +140,12 @@ void TomlReader::get(std::string_view path, int& value) {
   value = static_cast<int>(v);
 }
 
+void TomlReader::get(std::string_view path, std::int64_t& value) {
+  const toml::node* node = lookup(path);
+  if (node == nullptr || !expect(*node, path, toml::node_type::integer, "an integer")) return;
+  value = node->as_integer()->get();
+}
+
 void TomlReader::get(std::string_view path, std::uint32_t& value) {
   const toml::node* node = lookup(path);
   if (node == nullptr || !expect(*node, path, toml::node_type::integer, "an integer")) return;

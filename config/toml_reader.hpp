@@ -29,6 +29,7 @@ class TomlReader {
 
   void get(std::string_view path, double& value);
   void get(std::string_view path, int& value);
+  void get(std::string_view path, std::int64_t& value);
   void get(std::string_view path, std::uint32_t& value);
   void get(std::string_view path, bool& value);
   void get(std::string_view path, std::string& value);

@@ -6,41 +6,73 @@
 #include <vector>
 
 #include "firmware/control_loop.hpp"
-#include "runtime/csv_telemetry_writer.hpp"
 #include "firmware/hal_set.hpp"
-#include "hal/mock/mock_motion.hpp"
+#include "firmware/mock_drive.hpp"
+#include "runtime/csv_telemetry_writer.hpp"
+#include "runtime/journal.hpp"
 #include "runtime/loop_report.hpp"
 #include "runtime/rt_main.hpp"
+#include "runtime/service_notifier.hpp"
+#include "runtime/supervisor_feed.hpp"
 
 namespace mrd::firmware {
 
 namespace {
 
-void print_stats(std::FILE* out, const runtime::LoopStatistics& stats, const ControlLoop& loop,
-                 const HalSet& hal, bool histograms) {
+// Runs on the main thread while the loop runs: every value it reads from the loop's side is an
+// atomic (the statistics, the transition counts, the bus counters) or the feed's snapshot of
+// the supervisor's state; nothing reads the ControlLoop itself.
+void print_stats(std::FILE* out, const runtime::LoopStatistics& stats, const runtime::SupervisorFeed& feed,
+                 const ControlLoop& loop, const HalSet& hal, bool histograms) {
   std::string text = "--- mrd-controller statistics ---\n" + runtime::format_loop_statistics(stats);
   if (histograms) {
     text += runtime::format_histogram("wake-up latency", stats.wake_latency);
     text += runtime::format_histogram("execution time", stats.execution);
   }
-  text += "supervisor: " + std::string(to_string(loop.state())) + ", transitions:\n";
+  text += "supervisor: " + std::string(to_string(feed.state())) + ", transitions:\n";
   text += runtime::format_transitions(loop.supervisor().transitions());
   text += hal.counters();
   std::fputs(text.c_str(), out);
   std::fflush(out);
 }
 
+runtime::ServiceStatus service_status(const config::ControllerConfig& config, const runtime::LoopStatistics& stats,
+                                      const runtime::SupervisorFeed& feed) {
+  return {.state = feed.state(),
+          .rate = config.rate,
+          .cycles = stats.cycles.get(),
+          .overruns = stats.overruns.get(),
+          .wake_p99_ns = stats.wake_latency.percentile(0.99)};
+}
+
+// The transitions the loop published since the last call, into the journal (main thread).
+void log_transitions(runtime::SupervisorFeed& feed, const runtime::Journal& journal, hal::Timestamp start,
+                     std::uint64_t& lost_logged) {
+  feed.drain([&](const runtime::SupervisorEvent& e) {
+    journal.write(runtime::transition_priority(e), runtime::format_transition(e, start));
+  });
+  if (const std::uint64_t lost = feed.lost(); lost > lost_logged) {
+    journal.write(runtime::Priority::kWarning,
+                  "supervisor: " + std::to_string(lost - lost_logged) + " transitions not logged (the feed was full)");
+    lost_logged = lost;
+  }
+}
+
 }  // namespace
 
 int run_controller(const config::ControllerConfig& config, const RunOptions& options,
                    runtime::ProcessSignals& signals, std::FILE* out, const sigset_t* unblock) {
+  const runtime::Journal journal = options.log != nullptr ? runtime::Journal(options.log, false, "mrd-controller")
+                                                          : runtime::Journal::for_stderr("mrd-controller");
   runtime::RtSetupResult rt;
   runtime::lock_memory(config.realtime, rt);
 
   const hal::MonotonicClock clock;
   HalSet hal(config, clock);
   if (const auto started = hal.start(); !started.ok) {
-    std::fprintf(stderr, "mrd-controller: cannot start the back ends:\n%s", started.error.c_str());
+    std::string error = "cannot start the back ends:\n" + started.error;
+    while (error.ends_with('\n')) error.pop_back();
+    journal.write(runtime::Priority::kErr, error);
     return 1;
   }
   const std::vector<hal::IoThread*> io_threads = hal.io_threads();
@@ -50,35 +82,29 @@ int run_controller(const config::ControllerConfig& config, const RunOptions& opt
   if (config.telemetry.enabled()) {
     queue = std::make_unique<runtime::TelemetryQueue>(static_cast<std::size_t>(config.telemetry.ring_size));
     writer = std::make_unique<runtime::CsvTelemetryWriter>(*queue, config.telemetry.flush_period);
-    if (const auto started = writer->start(config.telemetry.resolved_path()); !started.ok) {
-      std::fprintf(stderr, "mrd-controller: %s\n", started.error.c_str());
+    if (const auto started = writer->start(config.telemetry); !started.ok) {
+      journal.write(runtime::Priority::kErr, started.error);
       return 1;
     }
   }
 
   ControlLoop loop(config.law, config.safety, hal.devices(), queue.get(), config.telemetry.decimation);
-  hal::mock::MockHal* mock = hal.mock();
-  std::optional<hal::mock::MockMotion> motion;
-  if (config.backends.lvdt == config::DeviceBackend::kMock) {
-    const auto& s = config.simulation;
-    motion.emplace(s.amplitude, s.frequency, s.lvdt_noise, s.seed);
-  }
-
+  MockDrive mock(config, hal.mock());
+  runtime::SupervisorFeed feed;
   const auto cycle = [&](hal::Timestamp release) {
-    if (motion) {
-      motion->advance(*mock, release);
-    } else if (mock != nullptr) {
-      mock->clock.set(release);
-    }
-    loop.step(release);
+    mock.advance(release);
+    feed.publish(loop.step(release));
   };
 
   std::fprintf(out, "mrd-controller: %.0f Hz, lvdt=%s driver=%s lines=%s%s%s\n", config.rate,
                to_string(config.backends.lvdt).data(), to_string(config.backends.driver).data(),
-               to_string(config.backends.lines).data(), motion ? ", mock LVDT on the simulation sine" : "",
-               config.telemetry.enabled() ? (", telemetry " + config.telemetry.resolved_path()).c_str() : "");
+               to_string(config.backends.lines).data(), mock.moves_lvdt() ? ", mock LVDT on the simulation sine" : "",
+               writer ? (", telemetry " + writer->path()).c_str() : "");
 
   runtime::LoopStatistics stats;
+  runtime::ServiceNotifier notifier;
+  const hal::Timestamp start = clock.now();
+  std::uint64_t lost_logged = 0;
   const runtime::RealTimeRun run{.realtime = config.realtime,
                                  .period = config.period(),
                                  .max_cycles = static_cast<std::uint64_t>(options.duration_s * config.rate + 0.5),
@@ -90,31 +116,46 @@ int run_controller(const config::ControllerConfig& config, const RunOptions& opt
             loop.request_shutdown();
             cycle(std::max(next, clock.now()));
           },
+      // The buses are up and the loop thread is set up: systemd may consider the service started.
       .ready =
           [&](const runtime::RtSetupResult& done) {
             std::fprintf(out, "%s\n", runtime::describe_rt_setup(config.realtime, done, io_threads.size()).c_str());
-            for (const auto& w : done.warnings) std::fprintf(stderr, "mrd-controller: warning: %s\n", w.c_str());
             std::fflush(out);
+            for (const auto& w : done.warnings) journal.write(runtime::Priority::kWarning, "warning: " + w);
+            notifier.ready(service_status(config, stats, feed), clock.now());
           },
-      .print_stats = [&] { print_stats(out, stats, loop, hal, options.bench); },
+      .print_stats = [&] { print_stats(out, stats, feed, loop, hal, options.bench); },
       .clear_latch =
           [&] {
             loop.request_clear_latch();
-            std::fprintf(out, "mrd-controller: SIGUSR2: an operator cleared the latch\n");
-            std::fflush(out);
+            journal.write(runtime::Priority::kNotice, "SIGUSR2: an operator cleared the latch");
+          },
+      .tick =
+          [&](hal::Timestamp now) {
+            log_transitions(feed, journal, start, lost_logged);
+            notifier.tick(now, service_status(config, stats, feed));
           }};
   runtime::run_real_time(run, signals, unblock, rt, stats, cycle, hooks);
+  // The loop thread has ended (joined): the final cycle's transition is in the feed.
+  log_transitions(feed, journal, start, lost_logged);
+  const int stop_signal = signals.stop_signal.load();
+  const std::string why = stop_signal != 0  ? std::string("stopped on ") + runtime::signal_name(stop_signal)
+                          : signals.stop.load() ? std::string("stopped on request")
+                                                : std::string("stopped after the run's duration");
+  journal.write(runtime::Priority::kNotice, why + ", fail-safe current written");
+  notifier.stopping(why);
   if (writer) writer->stop();
   hal.stop();
 
-  print_stats(out, stats, loop, hal, options.bench);
+  print_stats(out, stats, feed, loop, hal, options.bench);
   std::fprintf(out, "final setpoint %.3f A (fail-safe %.3f A), enable %s\n", loop.last().setpoint,
                config.safety.fail_safe_current, loop.last().enable ? "on" : "off");
   if (queue) {
-    std::fprintf(out, "telemetry: %llu records offered, %llu written, %llu dropped -> %s\n",
+    std::fprintf(out, "telemetry: %llu records offered, %llu written, %llu dropped, %llu over the size cap -> %s\n",
                  static_cast<unsigned long long>(queue->offered()),
                  static_cast<unsigned long long>(writer->written()),
-                 static_cast<unsigned long long>(queue->dropped()), config.telemetry.resolved_path().c_str());
+                 static_cast<unsigned long long>(queue->dropped()),
+                 static_cast<unsigned long long>(writer->capped()), writer->path().c_str());
     if (const auto t0 = writer->start_time()) {
       std::fprintf(out, "telemetry: time_s 0 is CLOCK_MONOTONIC %.9f s\n",
                    std::chrono::duration<double>(*t0).count());

@@ -13,11 +13,16 @@ namespace mrd::firmware {
 struct RunOptions {
   double duration_s = 0.0;  // 0: until SIGTERM, SIGINT or SIGHUP
   bool bench = false;       // also print the latency histograms
+  // Supervisor transitions, warnings and the stop, as they happen; null: stderr, with syslog
+  // priorities ("<2>...") when stderr is journald's stream (runtime::Journal).
+  std::FILE* log = nullptr;
 };
 
 // mrd-controller's run: builds the back ends, the loop and the telemetry writer, runs the loop
 // on its own real-time thread, prints statistics on request and at exit, and on stop drives the
-// fail-safe current before anything is torn down. Returns the process exit code.
+// fail-safe current before anything is torn down. Under systemd it reports readiness, feeds the
+// watchdog while the loop's cycles advance and keeps STATUS= current (runtime::ServiceNotifier);
+// supervisor transitions reach the log as they happen. Returns the process exit code.
 // `unblock`, if given, is the set of signals the caller blocked so that the threads started
 // here inherit it; it is unblocked on the calling thread once they run.
 int run_controller(const config::ControllerConfig& config, const RunOptions& options,

@@ -9,6 +9,7 @@
 
 #include "config/config_loader.hpp"
 #include "firmware/controller.hpp"
+#include "firmware/probe.hpp"
 
 namespace {
 
@@ -23,6 +24,20 @@ int print_report(const mrd::config::LoadedConfig& loaded, const std::string& nam
   return 0;
 }
 
+// Modbus TCP to another host needs the network up before the service starts; the unit does not
+// order itself after network-online.target, since CAN and RTU boxes must not wait for it.
+void note_network(const mrd::config::ControllerConfig& config) {
+  if (!config.backends.uses(mrd::config::DeviceBackend::kModbus) ||
+      config.modbus.transport != mrd::hal::modbus::Transport::kTcp) {
+    return;
+  }
+  const std::string& host = config.modbus.tcp.host;
+  if (host == "localhost" || host.starts_with("127.") || host == "::1") return;
+  std::printf("note: Modbus TCP to %s needs the network: order the service after network-online.target "
+              "(systemctl edit mrd-controller.service; docs/DEPLOY.md, \"The network\")\n",
+              host.c_str());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -32,18 +47,23 @@ int main(int argc, char** argv) {
   std::string telemetry_path;
   double rate = 0.0;
   bool print_default = false;
+  bool probe = false;
   mrd::firmware::RunOptions options;
   app.add_option("--config", config_path, "TOML config file (default: the embedded config, "
                                           "also installed as etc/mrd/mrd.toml)");
   app.add_option("--check-config", check_path, "validate FILE, print every problem, exit 0 or 1");
   app.add_option("--duration", options.duration_s, "run this many seconds (0: until SIGTERM, SIGINT or SIGHUP)")
       ->check(CLI::Range(0.0, 1e7))->capture_default_str();
-  app.add_option("--telemetry", telemetry_path, "write telemetry CSV here (overrides telemetry.path, and telemetry.directory with its directory)");
+  app.add_option("--telemetry", telemetry_path, "write telemetry CSV to exactly this file (overrides telemetry.path, telemetry.directory with its directory, and telemetry.per_run)");
   app.add_option("--rate", rate, "control rate [Hz] (overrides loop.rate)")->check(CLI::Range(10.0, 20000.0));
   app.add_flag("--bench", options.bench,
                "loop benchmark: mock HAL and its sine whatever the config says, no telemetry, "
                "latency histograms printed");
   app.add_flag("--print-default-config", print_default, "print the embedded default config and exit");
+  app.add_flag("--probe", probe,
+               "commissioning: open the configured buses with the driver held off (enable low, no setpoint "
+               "written), print decoded LVDT and current readings for 1 s, exit 0 (ok), 1 (a bus cannot "
+               "start) or 2 (readings wrong, each problem printed)");
   CLI11_PARSE(app, argc, argv);
 
   if (print_default) {
@@ -54,7 +74,10 @@ int main(int argc, char** argv) {
   if (!check_path.empty()) {
     const auto loaded = mrd::config::load_config_file(check_path);
     const int rc = print_report(loaded, check_path);
-    if (rc == 0) std::printf("%s: ok\n", check_path.c_str());
+    if (rc == 0) {
+      note_network(loaded.config);
+      std::printf("%s: ok\n", check_path.c_str());
+    }
     return rc;
   }
 
@@ -70,6 +93,7 @@ int main(int argc, char** argv) {
     const std::filesystem::path file(telemetry_path);
     config.telemetry.directory = file.has_parent_path() ? file.parent_path().string() : ".";
     config.telemetry.path = file.filename().string();
+    config.telemetry.per_run = false;  // exactly the file named, as before
   }
   if (options.bench) {
     config.backends = {};  // all mock
@@ -77,6 +101,7 @@ int main(int argc, char** argv) {
   }
   const auto checked = mrd::config::revalidate(config, "command line");
   if (print_report(checked, "command line") != 0) return 1;
+  if (probe) return mrd::firmware::run_probe(checked.config, {}, stdout);
 
   // The loop, bus and telemetry threads inherit a mask without the signals, so only the main
   // thread takes them; it polls the flags the handlers set.

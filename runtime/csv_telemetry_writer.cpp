@@ -3,8 +3,10 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <filesystem>
 #include <cmath>
 #include <cstring>
 
@@ -34,17 +36,80 @@ int CsvTelemetryWriter::format(const TelemetryRecord& r, hal::Timestamp start, c
                        r.enable ? 1 : 0, r.latched ? 1 : 0, static_cast<unsigned long long>(r.recoveries));
 }
 
-hal::StartResult CsvTelemetryWriter::start(const std::string& path) {
+std::string CsvTelemetryWriter::run_file(const std::string& path, unsigned n) {
+  const std::filesystem::path p(path);
+  char number[16];
+  std::snprintf(number, sizeof number, "-%04u", n);
+  return (p.parent_path() / (p.stem().string() + number + p.extension().string())).string();
+}
+
+namespace {
+
+// The highest run number among the files beside `path` named as run_file names them.
+unsigned last_run(const std::string& path) {
+  const std::filesystem::path p(path);
+  const std::string stem = p.stem().string() + "-";
+  const std::string extension = p.extension().string();
+  unsigned last = 0;
+  std::error_code error;
+  const auto dir = p.parent_path().empty() ? std::filesystem::path(".") : p.parent_path();
+  for (const auto& entry : std::filesystem::directory_iterator(dir, error)) {
+    const std::string name = entry.path().filename().string();
+    if (!name.starts_with(stem) || !name.ends_with(extension)) continue;
+    const std::string digits = name.substr(stem.size(), name.size() - stem.size() - extension.size());
+    if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) continue;
+    last = std::max(last, static_cast<unsigned>(std::stoul(digits)));
+  }
+  return last;
+}
+
+}  // namespace
+
+int CsvTelemetryWriter::open_file(const std::string& path, int flags) {
   // O_NOFOLLOW: a symbolic link put where the file goes after the config was checked must not
   // redirect the writes out of telemetry.directory.
-  const int fd = open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0640);
+  const int fd = open(path.c_str(), O_WRONLY | O_CREAT | O_NOFOLLOW | O_CLOEXEC | flags, 0640);
   file_ = fd >= 0 ? fdopen(fd, "w") : nullptr;
   if (file_ == nullptr) {
     const int error = errno;
     if (fd >= 0) close(fd);
-    return hal::StartResult::failure("cannot open telemetry file " + path + ": " + std::strerror(error));
+    return error;
   }
-  std::fputs(header(), file_);
+  path_ = path;
+  return 0;
+}
+
+namespace {
+hal::StartResult cannot_open(const std::string& path, int error) {
+  return hal::StartResult::failure("cannot open telemetry file " + path + ": " + std::strerror(error));
+}
+}  // namespace
+
+hal::StartResult CsvTelemetryWriter::start(const TelemetryConfig& config) {
+  max_bytes_ = static_cast<std::uint64_t>(std::max<std::int64_t>(config.max_bytes, 0));
+  const std::string path = config.resolved_path();
+  if (!config.per_run) {
+    const int error = open_file(path, O_TRUNC);
+    return error == 0 ? start_thread() : cannot_open(path, error);
+  }
+  // O_EXCL: a file that appeared since the directory was read (another start) is never
+  // truncated; this start takes the next number.
+  const unsigned first = last_run(path) + 1;
+  for (unsigned n = first; n < first + 100; ++n) {
+    const int error = open_file(run_file(path, n), O_EXCL);
+    if (error == 0) return start_thread();
+    if (error != EEXIST) return cannot_open(run_file(path, n), error);
+  }
+  return cannot_open(run_file(path, first), EEXIST);
+}
+
+hal::StartResult CsvTelemetryWriter::start(const std::string& path) {
+  const int error = open_file(path, O_TRUNC);
+  return error == 0 ? start_thread() : cannot_open(path, error);
+}
+
+hal::StartResult CsvTelemetryWriter::start_thread() {
+  write_line(header(), std::strlen(header()));
   const auto pause = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
       std::chrono::duration<double>(flush_period_s_));
   thread_.start("mrd-telemetry", [this, pause] {
@@ -53,17 +118,31 @@ hal::StartResult CsvTelemetryWriter::start(const std::string& path) {
   return hal::StartResult::success();
 }
 
+bool CsvTelemetryWriter::write_line(const char* line, std::size_t length) {
+  if (max_bytes_ > 0 && bytes_ + length > max_bytes_) return false;
+  std::fwrite(line, 1, length, file_);
+  bytes_ += length;
+  return true;
+}
+
 void CsvTelemetryWriter::drain_once() {
   char line[512];
-  const std::size_t n = queue_.drain([&](const TelemetryRecord& r) {
+  std::uint64_t written = 0;
+  std::uint64_t capped = 0;
+  queue_.drain([&](const TelemetryRecord& r) {
     if (!start_) start_ = r.time;
     const int len = format(r, *start_, line, sizeof line);
-    if (len > 0) std::fwrite(line, 1, static_cast<std::size_t>(len), file_);
+    if (len > 0 && write_line(line, std::min(static_cast<std::size_t>(len), sizeof line - 1))) {
+      ++written;
+    } else {
+      ++capped;
+    }
   });
-  if (n > 0) {
+  if (written > 0) {
     std::fflush(file_);
-    written_.fetch_add(n, std::memory_order_relaxed);
+    written_.fetch_add(written, std::memory_order_relaxed);
   }
+  if (capped > 0) capped_.fetch_add(capped, std::memory_order_relaxed);
 }
 
 void CsvTelemetryWriter::stop() {

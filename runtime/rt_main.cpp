@@ -6,8 +6,11 @@ namespace {
 
 ProcessSignals* g_signals = nullptr;
 
-extern "C" void on_stop_signal(int) {
-  if (g_signals != nullptr) g_signals->stop.store(true);
+extern "C" void on_stop_signal(int signal) {
+  if (g_signals == nullptr) return;
+  int none = 0;
+  g_signals->stop_signal.compare_exchange_strong(none, signal);
+  g_signals->stop.store(true);
 }
 extern "C" void on_stats_signal(int) {
   if (g_signals != nullptr) g_signals->print_stats.store(true);
@@ -18,8 +21,20 @@ extern "C" void on_clear_signal(int) {
 
 }  // namespace
 
+const char* signal_name(int signal) {
+  switch (signal) {
+    case SIGTERM: return "SIGTERM";
+    case SIGINT: return "SIGINT";
+    case SIGHUP: return "SIGHUP";
+    default: return "a signal";
+  }
+}
+
+hal::Timestamp monotonic_now() { return hal::MonotonicClock{}.now(); }
+
 sigset_t install_process_signals(ProcessSignals& signals) {
   static_assert(std::atomic<bool>::is_always_lock_free, "signal handlers set atomic flags");
+  static_assert(std::atomic<int>::is_always_lock_free, "signal handlers set atomic flags");
   g_signals = &signals;
   struct sigaction sa{};
   sigemptyset(&sa.sa_mask);
@@ -49,6 +64,10 @@ std::string describe_rt_setup(const RealtimeConfig& config, const RtSetupResult&
   text += io_threads == 0             ? "none"
           : rt.io_fifo == io_threads ? "SCHED_FIFO " + std::to_string(config.io_priority)
                                      : "SCHED_OTHER";
+  text += ", cpu_dma_latency ";
+  text += config.cpu_dma_latency < 0 ? "left alone"
+          : rt.dma_latency.held()    ? std::to_string(config.cpu_dma_latency) + " us"
+                                     : "NOT held";
   return text;
 }
 

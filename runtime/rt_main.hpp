@@ -20,9 +20,15 @@ namespace mrd::runtime {
 // Flags the process's signal handlers set (async-signal-safe: lock-free atomics only).
 struct ProcessSignals {
   std::atomic<bool> stop{false};         // SIGTERM, SIGINT, SIGHUP: end the run through the final cycle
+  std::atomic<int> stop_signal{0};       // which of them came first (0: none yet)
   std::atomic<bool> print_stats{false};  // SIGUSR1
   std::atomic<bool> clear_latch{false};  // SIGUSR2: an operator clears a latched SAFE
 };
+
+// "SIGHUP" for a stop signal's number.
+[[nodiscard]] const char* signal_name(int signal);
+// CLOCK_MONOTONIC now: the time the hooks' `tick` gets.
+[[nodiscard]] hal::Timestamp monotonic_now();
 
 // Installs the handlers for `signals` and blocks those signals on the calling thread, so the
 // threads it starts afterwards inherit a mask without them and only the main thread takes
@@ -44,16 +50,19 @@ struct RealTimeHooks {
   std::function<void(const RtSetupResult&)> ready;          // once the loop thread is set up
   std::function<void()> print_stats;                        // on SIGUSR1
   std::function<void()> clear_latch;                        // on SIGUSR2
+  std::function<void(hal::Timestamp now)> tick;             // every poll period, while the loop runs
 };
 
 // The one skeleton of mrd-controller and mrd-plant: the bus threads at their priority, the
 // loop on its own thread (SCHED_FIFO, pinned, pre-faulted stack) releasing `cycle` on a fixed
 // period, the calling thread polling the signal flags; on stop, `finish` runs one last time on
 // the loop thread (the controller drives the fail-safe current there) before it ends.
-// lock_memory() is the caller's, before it allocates the run's buffers.
+// lock_memory() is the caller's, before it allocates the run's buffers; the CPU wake-up latency
+// limit is held here, in `rt`, until the caller destroys it.
 template <typename Cycle>
 void run_real_time(const RealTimeRun& run, ProcessSignals& signals, const sigset_t* unblock,
                    RtSetupResult& rt, LoopStatistics& stats, Cycle&& cycle, const RealTimeHooks& hooks) {
+  hold_cpu_dma_latency(run.realtime, rt);
   make_io_threads_realtime(run.realtime, run.io_threads, rt);
   std::atomic<bool> stop{false};
   std::atomic<bool> setup_done{false};
@@ -74,6 +83,7 @@ void run_real_time(const RealTimeRun& run, ProcessSignals& signals, const sigset
     if (signals.stop.load()) stop.store(true);
     if (signals.print_stats.exchange(false) && hooks.print_stats) hooks.print_stats();
     if (signals.clear_latch.exchange(false) && hooks.clear_latch) hooks.clear_latch();
+    if (hooks.tick) hooks.tick(monotonic_now());
   }
   loop_thread.join();
 }

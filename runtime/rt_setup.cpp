@@ -20,6 +20,8 @@ ValidationReport RealtimeConfig::validate() const {
   r.check(priority == 0 || io_priority < priority, "io_priority",
           "must be below realtime.priority (" + std::to_string(priority) +
               "): a bus thread must not preempt the loop, got " + std::to_string(io_priority));
+  r.check(cpu_dma_latency >= -1 && cpu_dma_latency <= 1000000, "cpu_dma_latency",
+          "must be -1 (leave it) or 0..1000000 us, got " + std::to_string(cpu_dma_latency));
   r.check(cpu >= -1 && cpu < 1024, "cpu", "must be -1 (no affinity) or a CPU number, got " +
                                               std::to_string(cpu));
   return r;
@@ -36,6 +38,13 @@ void lock_memory(const RealtimeConfig& config, RtSetupResult& result) {
       std::string("mlockall failed (") + std::strerror(err) +
       "): memory is not locked and page faults may delay the loop; grant CAP_IPC_LOCK or raise "
       "LimitMEMLOCK (the systemd unit does both)");
+}
+
+void hold_cpu_dma_latency(const RealtimeConfig& config, RtSetupResult& result, const std::string& device) {
+  if (config.cpu_dma_latency < 0) return;
+  if (std::string warning = result.dma_latency.hold(config.cpu_dma_latency, device); !warning.empty()) {
+    result.warnings.push_back(std::move(warning));
+  }
 }
 
 namespace {

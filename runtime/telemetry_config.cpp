@@ -34,6 +34,8 @@ ValidationReport TelemetryConfig::validate() const {
   r.check(decimation >= 1, "decimation", "must be >= 1, got " + std::to_string(decimation));
   r.check(ring_size >= 16 && ring_size <= (1 << 22), "ring_size",
           "must be in 16..4194304 records, got " + std::to_string(ring_size));
+  r.check(max_bytes == 0 || max_bytes >= 4096, "max_bytes",
+          "must be 0 (no cap) or at least 4096 bytes, got " + std::to_string(max_bytes));
   r.check(std::isfinite(flush_period) && flush_period > 0.0 && flush_period <= 10.0, "flush_period",
           "must be in (0, 10] s");
   return r;

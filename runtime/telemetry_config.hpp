@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 
 #include "common/validation_report.hpp"
@@ -15,6 +16,12 @@ struct TelemetryConfig {
   int decimation = 1;        // one record every N cycles
   int ring_size = 8192;      // records the ring holds between two writer passes
   double flush_period = 0.05;  // [s] how often the writer drains the ring
+  // Each start writes its own file, numbered after the ones already there ("run.csv" becomes
+  // run-0001.csv, run-0002.csv, ...), so a restart never truncates the last run's record.
+  // false: `path` itself, truncated (mrd-controller --telemetry names an exact file).
+  bool per_run = true;
+  // The most a file may grow to [bytes]; the rest of the run is counted, not written. 0: no cap.
+  std::int64_t max_bytes = 536870912;
 
   [[nodiscard]] bool enabled() const { return !path.empty(); }
   // `path` resolved against `directory`, what the writer opens.

@@ -6,6 +6,8 @@ packages=(
   build-essential cmake ninja-build pkg-config
   # libboost-dev: Boost.Lockfree for the rings; Boost.Odeint for the tests' J-A reference.
   libeigen3-dev libboost-dev libmodbus-dev libgpiod-dev libtomlplusplus-dev libcli11-dev
+  libsystemd-dev  # sd_notify: the unit's Type=notify and watchdog
+  rt-tests        # cyclictest, the reference of scripts/bench-loop.sh
   libpagmo-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox

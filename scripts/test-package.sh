@@ -54,6 +54,9 @@ check "conffiles lists $config" grep -qx "$config" "$work/control/conffiles"
 check "Depends computed by dpkg-shlibdeps (libmodbus)" \
   bash -c "dpkg-deb -f '$controller_deb' Depends | grep -q 'libmodbus5'"
 check "unit in /lib/systemd/system" bash -c "dpkg-deb -c '$controller_deb' | grep -q ' ./lib/systemd/system/mrd-controller.service$'"
+check "udev rule for /dev/cpu_dma_latency" bash -c "dpkg-deb -c '$controller_deb' | grep -q ' ./lib/udev/rules.d/60-mrd-cpu-dma-latency.rules$'"
+check "networkd file for can0" bash -c "dpkg-deb -c '$controller_deb' | grep -q ' ./lib/systemd/network/80-mrd-can0.network$'"
+check "example configs" bash -c "dpkg-deb -c '$controller_deb' | grep -q ' ./usr/share/doc/mrd-controller/examples/can-box.toml$'"
 
 if [[ $(id -u) -ne 0 ]]; then
   echo "test-package: the install checks need root; only the package files were checked"
@@ -71,6 +74,10 @@ check "service user mrd, no login" bash -c "getent passwd mrd | grep -q ':/nonex
 check "installed mrd-controller accepts the installed config" /usr/bin/mrd-controller --check-config "$config"
 check "mrd-controller runs the simulated rig for 0.2 s" /usr/bin/mrd-controller --duration 0.2
 check "mrd-replay starts" /usr/bin/mrd-replay --help
+check "the installed example configs are accepted" bash -c \
+  "for f in /usr/share/doc/mrd-controller/examples/*.toml; do /usr/bin/mrd-controller --check-config \$f || exit 1; done"
+check "unit is Type=notify with a watchdog" bash -c \
+  "grep -qx 'Type=notify' /lib/systemd/system/mrd-controller.service && grep -q '^WatchdogSec=' /lib/systemd/system/mrd-controller.service"
 check "unit names the installed paths" \
   grep -qx "ExecStart=/usr/bin/mrd-controller --config $config" /lib/systemd/system/mrd-controller.service
 

@@ -22,6 +22,10 @@ ctest --test-dir build/release -L hil -E '^hil\.vm$' --repeat until-pass:3 --out
 stage "asan: build and every fast test under AddressSanitizer + UndefinedBehaviorSanitizer"
 cmake --workflow --preset asan
 
+stage "tsan: the statistics (SIGUSR1) path against the loop thread under ThreadSanitizer"
+# Builds only the controller's libraries and mrd_thread_tests in build/tsan (label "threads").
+cmake --workflow --preset tsan-threads
+
 stage "fuzz: every libFuzzer target for ${MRD_FUZZ_SECONDS:-20} s (clang)"
 FUZZ_JOBS=${FUZZ_JOBS:-2} scripts/fuzz.sh "${MRD_FUZZ_SECONDS:-20}"
 

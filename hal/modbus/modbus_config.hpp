@@ -36,7 +36,7 @@ struct RegisterMap {
                           0.0};
 
   bool has_current_feedback = false;  // the driver reports its measured current
-  int current_feedback_address = 0;
+  int current_feedback_address = 2;  // after the LVDT's two words (mrd.toml and docs say 2)
   RegisterKind current_feedback_kind = RegisterKind::kInput;
   RegisterFormat current_feedback{RegisterType::kInt16, WordOrder::kHighFirst, ByteOrder::kNormal,
                                   1e-3, 0.0};

@@ -120,6 +120,7 @@ void read_all(const toml::table& root, TomlReader& in, PlantConfig& c, const std
   in.get("realtime.cpu", c.realtime.cpu);
   in.get("realtime.lock_memory", c.realtime.lock_memory);
   in.get("realtime.io_priority", c.realtime.io_priority);
+  in.get("realtime.cpu_dma_latency", c.realtime.cpu_dma_latency);
   read_profile(in, c.profile);
   in.get("modbus.enabled", c.modbus.enabled);
   in.get("modbus.listen", c.modbus.listen);

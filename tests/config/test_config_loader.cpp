@@ -226,6 +226,22 @@ rate = 5
       << lines_of(um);
 }
 
+// The current feedback in the LVDT's registers reads one word of the other: a negative
+// displacement decoded as 65.5 mm minus its size (found by mrd-controller --probe against
+// mrd-plant, when the struct's default address was 0 and the file's 2).
+TEST(ConfigBad, CurrentFeedbackOverlappingTheLvdtOrTheSetpoint) {
+  const std::string head = "[backends]\nlvdt = \"modbus\"\ndriver = \"modbus\"\n[modbus.registers]\n"
+                           "has_current_feedback = true\n";
+  EXPECT_TRUE(load_config_text(head, "ok.toml").ok()) << "the default feedback address is past the LVDT";
+  const LoadedConfig lvdt = load_config_text(head + "current_feedback_address = 1\n", "f.toml");
+  EXPECT_TRUE(has_error_containing(lvdt, "modbus.registers.current_feedback_address", "overlaps the LVDT's registers"))
+      << lines_of(lvdt);
+  const LoadedConfig setpoint =
+      load_config_text(head + "current_feedback_kind = \"holding\"\ncurrent_feedback_address = 0\n", "f.toml");
+  EXPECT_TRUE(has_error_containing(setpoint, "modbus.registers.current_feedback_address", "overlaps the setpoint's"))
+      << lines_of(setpoint);
+}
+
 TEST(ConfigBad, BadRegisterMaps) {
   const LoadedConfig c = load_config_text(R"([backends]
 lvdt = "modbus"

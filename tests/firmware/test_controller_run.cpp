@@ -10,30 +10,34 @@
 #include <string>
 
 #include "config/config_loader.hpp"
+#include "tests/support/notify_socket.hpp"
+#include "tests/support/test_files.hpp"
 
 namespace {
 
-// Runs the controller and returns what it printed.
+using mrd::test::read_and_close;
+
+// Runs the controller and returns what it printed; its log (transitions) into `log`.
 std::string run(const mrd::config::ControllerConfig& config, double seconds,
-                bool stop_at_once = false) {
+                bool stop_at_once = false, std::string* log = nullptr) {
   std::FILE* out = std::tmpfile();
+  std::FILE* log_file = std::tmpfile();
   mrd::runtime::ProcessSignals signals;
   signals.stop.store(stop_at_once);  // as if SIGTERM arrived before the first cycle
   mrd::firmware::RunOptions options;
   options.duration_s = seconds;
+  options.log = log_file;
   EXPECT_EQ(mrd::firmware::run_controller(config, options, signals, out), 0);
-  std::rewind(out);
-  std::string text;
-  char buf[4096];
-  while (std::fgets(buf, sizeof buf, out) != nullptr) text += buf;
-  std::fclose(out);
-  return text;
+  const std::string logged = read_and_close(log_file);
+  if (log != nullptr) *log = logged;
+  return read_and_close(out);
 }
 
 TEST(ControllerRun, DefaultConfigRunsOnTheMockHalAndStopsInSafeWithTelemetryAccounted) {
   auto config = mrd::config::load_default_config().config;
   const auto csv = std::filesystem::temp_directory_path() / "mrd_controller_run.csv";
   config.telemetry.path = csv.string();
+  config.telemetry.per_run = false;
   config.realtime.priority = 0;  // a unit test does not ask for SCHED_FIFO
   config.safety.recovery_periods = 50;
   // SCHED_OTHER on a shared machine overruns now and then; this test is not about that.
@@ -61,9 +65,33 @@ TEST(ControllerRun, StopSignalFlagEndsTheRunWithTheFailSafeCycle) {
   auto config = mrd::config::load_default_config().config;
   config.realtime.priority = 0;
   config.safety.overrun_limit = 1000000;  // as above: SAFE only by the stop
-  const std::string text = run(config, 0.0, true);  // no duration: runs until the flag
+  std::string log;
+  const std::string text = run(config, 0.0, true, &log);  // no duration: runs until the flag
   EXPECT_NE(text.find("INIT -> SAFE (shutdown): 1"), std::string::npos) << text;
   EXPECT_NE(text.find("enable off"), std::string::npos) << text;
+  // The transition reached the log as a line of its own, then the stop.
+  EXPECT_NE(log.find("mrd-controller: supervisor: INIT -> SAFE (shutdown) at cycle "), std::string::npos) << log;
+  EXPECT_NE(log.find("mrd-controller: stopped on request, fail-safe current written"),
+            std::string::npos)
+      << log;
+}
+
+// Under systemd: READY=1 before anything else, STATUS= lines with the state and the rate,
+// STOPPING=1 last (the watchdog's timing is ServiceNotifier's test, on scripted time).
+TEST(ControllerRun, TellsSystemdReadyStatusAndStopping) {
+  mrd::test::FakeNotifySocket systemd;
+  ASSERT_TRUE(systemd.ok());
+  auto config = mrd::config::load_default_config().config;
+  config.realtime.priority = 0;
+  config.safety.overrun_limit = 1000000;
+  run(config, 0.05);
+  const auto sent = systemd.messages();
+  ASSERT_GE(sent.size(), 2u);
+  EXPECT_TRUE(sent.front().starts_with("READY=1\nSTATUS=INIT, 1000 Hz, wake-up p99 ")) << sent.front();
+  EXPECT_EQ(sent.back(), "STOPPING=1\nSTATUS=stopped after the run's duration");
+  for (std::size_t i = 1; i + 1 < sent.size(); ++i) {
+    EXPECT_TRUE(sent[i].starts_with("STATUS=") || sent[i] == "WATCHDOG=1") << sent[i];
+  }
 }
 
 }  // namespace

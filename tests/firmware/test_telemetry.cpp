@@ -8,6 +8,7 @@
 #include "runtime/telemetry_queue.hpp"
 #include "tests/firmware/loop_fixture.hpp"
 #include "tests/hal/test_wait.hpp"
+#include "tests/support/test_files.hpp"
 
 namespace {
 
@@ -88,6 +89,76 @@ TEST(TelemetryLoop, DecimationOffersOneRecordEveryNCycles) {
   std::uint64_t last = 0;
   q.drain([&](const TelemetryRecord& r) { last = r.cycle; });
   EXPECT_EQ(last, 90u);
+}
+
+}  // namespace
+
+namespace {
+
+using mrd::runtime::TelemetryConfig;
+
+// A fresh directory for one test's telemetry files.
+class TelemetryFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    config_.directory = dir_.path().string();
+    config_.path = "run.csv";
+  }
+
+  // One start of the writer: `cycles` cycles of the loop, then stop.
+  std::string one_run(int cycles, TelemetryQueue& q) {
+    mrd::test::LoopRig rig({}, {}, &q);
+    CsvTelemetryWriter writer(q, 3600.0);
+    EXPECT_TRUE(writer.start(config_).ok);
+    for (int i = 0; i < cycles; ++i) rig.step();
+    writer.stop();
+    EXPECT_EQ(writer.written() + writer.capped() + q.dropped(), q.offered());
+    capped_ = writer.capped();
+    return writer.path();
+  }
+  static std::size_t lines(const std::filesystem::path& p) {
+    std::ifstream in(p);
+    std::size_t n = 0;
+    for (std::string line; std::getline(in, line);) ++n;
+    return n;
+  }
+
+  mrd::test::TestDirectory dir_{"mrd_telemetry_runs"};
+  TelemetryConfig config_;
+  std::uint64_t capped_ = 0;
+};
+
+TEST_F(TelemetryFiles, EachStartWritesItsOwnNumberedFileAndKeepsTheLastRunsRecord) {
+  TelemetryQueue first(1024);
+  EXPECT_EQ(one_run(300, first), (dir_ / "run-0001.csv").string());
+  TelemetryQueue second(1024);
+  EXPECT_EQ(one_run(200, second), (dir_ / "run-0002.csv").string());
+  EXPECT_EQ(lines(dir_ / "run-0001.csv"), 301u);  // header and every row of the first run
+  EXPECT_EQ(lines(dir_ / "run-0002.csv"), 201u);
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "run.csv"));
+
+  // Numbers continue after the highest there, whatever else the directory holds.
+  std::ofstream(dir_ / "run-0041.csv") << "an earlier run\n";
+  std::ofstream(dir_ / "run-notes.csv") << "not a run\n";
+  TelemetryQueue third(1024);
+  EXPECT_EQ(one_run(10, third), (dir_ / "run-0042.csv").string());
+  EXPECT_EQ(lines(dir_ / "run-0041.csv"), 1u);
+}
+
+TEST_F(TelemetryFiles, TheSizeCapIsHonouredAndWhatItKeptOutIsCounted) {
+  config_.max_bytes = 8192;
+  TelemetryQueue q(4096);
+  const std::string path = one_run(1000, q);  // about 100 bytes a row: 100 kB uncapped
+  EXPECT_LE(std::filesystem::file_size(path), 8192u);
+  EXPECT_GT(std::filesystem::file_size(path), 8192u - 512u);  // filled up to the last row that fits
+  EXPECT_GT(capped_, 800u);
+  EXPECT_EQ(q.dropped(), 0u);
+}
+
+TEST_F(TelemetryFiles, WithoutPerRunThePathItselfIsWritten) {
+  config_.per_run = false;
+  TelemetryQueue q(1024);
+  EXPECT_EQ(one_run(5, q), (dir_ / "run.csv").string());
 }
 
 }  // namespace

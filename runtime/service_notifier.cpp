@@ -1,0 +1,51 @@
+#include "runtime/service_notifier.hpp"
+
+#include <systemd/sd-daemon.h>
+
+#include <cinttypes>
+#include <cstdio>
+
+namespace mrd::runtime {
+
+std::string format_status(const ServiceStatus& s) {
+  char line[160];
+  std::snprintf(line, sizeof line, "%s, %.0f Hz, wake-up p99 %.1f us, overruns %" PRIu64 ", cycles %" PRIu64,
+                std::string(to_string(s.state)).c_str(), s.rate, static_cast<double>(s.wake_p99_ns) * 1e-3,
+                s.overruns, s.cycles);
+  return line;
+}
+
+ServiceNotifier::ServiceNotifier(std::chrono::nanoseconds status_period) : status_period_(status_period) {
+  std::uint64_t usec = 0;
+  if (sd_watchdog_enabled(0, &usec) > 0) watchdog_ = std::chrono::microseconds(usec);
+}
+
+void ServiceNotifier::send(const std::string& message) { sd_notify(0, message.c_str()); }
+
+void ServiceNotifier::ready(const ServiceStatus& status, hal::Timestamp now) {
+  send("READY=1\nSTATUS=" + format_status(status));
+  last_status_ = now;
+  last_kick_ = now;
+  cycles_at_kick_ = status.cycles;
+}
+
+void ServiceNotifier::stopping(const std::string& why) { send("STOPPING=1\nSTATUS=" + why); }
+
+void ServiceNotifier::tick(hal::Timestamp now, const ServiceStatus& status) {
+  if (watchdog_.count() > 0 && now - last_kick_ >= watchdog_ / 2) {
+    if (status.cycles > cycles_at_kick_) {
+      send("WATCHDOG=1");
+      ++kicks_;
+      last_kick_ = now;
+      cycles_at_kick_ = status.cycles;
+    } else {
+      ++withheld_;  // the loop did not move: let systemd's timer run out
+    }
+  }
+  if (now - last_status_ >= status_period_) {
+    send("STATUS=" + format_status(status));
+    last_status_ = now;
+  }
+}
+
+}  // namespace mrd::runtime

@@ -1,0 +1,64 @@
+#pragma once
+
+#include <atomic>
+#include <boost/lockfree/spsc_queue.hpp>
+#include <cstddef>
+#include <cstdint>
+
+#include "common/single_writer_counter.hpp"
+#include "control/supervisor.hpp"
+#include "hal/clock.hpp"
+#include "runtime/telemetry_record.hpp"
+
+namespace mrd::runtime {
+
+// One supervisor transition, as the real-time thread saw it.
+struct SupervisorEvent {
+  std::uint64_t cycle = 0;
+  hal::Timestamp time{};  // the cycle's release time
+  control::SupervisorState from = control::SupervisorState::kInit;
+  control::SupervisorState to = control::SupervisorState::kInit;
+  control::Trigger trigger = control::Trigger::kNone;
+};
+
+// What the real-time thread tells the others about the supervisor, and the only way they
+// learn it: the state as a single-writer snapshot (an atomic the loop stores once a cycle) and
+// each transition as an event in a lock-free SPSC ring that one non-real-time thread drains
+// into the journal. The loop never blocks on it and never allocates: a full ring drops the
+// event and counts it. Nothing here reads the supervisor object from another thread.
+class SupervisorFeed {
+ public:
+  static constexpr std::size_t kCapacity = 256;  // a flapping fault at 1 kHz for 100 ms
+
+  // Loop thread, after every cycle, with the record that cycle produced.
+  void publish(const TelemetryRecord& r) noexcept {
+    const auto to = static_cast<control::SupervisorState>(r.state);
+    const auto why = static_cast<control::Trigger>(r.trigger);
+    if (why != control::Trigger::kNone) {
+      if (!ring_.push(SupervisorEvent{r.cycle, r.time, last_, to, why})) lost_.add();
+    }
+    last_ = to;
+    state_.store(r.state, std::memory_order_release);
+  }
+
+  // Any thread: the state after the newest published cycle.
+  [[nodiscard]] control::SupervisorState state() const {
+    return static_cast<control::SupervisorState>(state_.load(std::memory_order_acquire));
+  }
+  // Any thread: transitions the ring had no room for.
+  [[nodiscard]] std::uint64_t lost() const { return lost_.get(); }
+
+  // The one consumer thread: hands every queued event to `sink`, oldest first.
+  template <typename Sink>
+  std::size_t drain(Sink&& sink) {
+    return ring_.consume_all(sink);
+  }
+
+ private:
+  boost::lockfree::spsc_queue<SupervisorEvent, boost::lockfree::capacity<kCapacity>> ring_;
+  std::atomic<std::uint8_t> state_{static_cast<std::uint8_t>(control::SupervisorState::kInit)};
+  control::SupervisorState last_ = control::SupervisorState::kInit;  // loop thread only
+  SingleWriterCounter lost_;
+};
+
+}  // namespace mrd::runtime

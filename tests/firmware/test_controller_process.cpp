@@ -1,0 +1,96 @@
+// mrd-controller as systemd runs it, a process of its own: READY=1 then WATCHDOG=1 on the
+// notify socket while it runs, a stop signal (SIGHUP like SIGTERM) through the fail-safe cycle
+// to exit code 0, and each start's own telemetry file. Every wait is for an event, bounded.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <string>
+
+#include "tests/hil/child_process.hpp"
+#include "tests/support/notify_socket.hpp"
+#include "tests/support/test_files.hpp"
+
+namespace {
+
+using mrd::test::ChildProcess;
+using std::chrono::milliseconds;
+using std::chrono::seconds;
+
+class ControllerProcess : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    // The embedded config, without SCHED_FIFO (a test), telemetry into this test's directory.
+    std::ofstream(config()) << "[realtime]\npriority = 0\n[safety]\noverrun_limit = 1000000\n"
+                               "[telemetry]\npath = \"telemetry.csv\"\ndirectory = \""
+                            << dir_.path().string() << "\"\n";
+  }
+  [[nodiscard]] std::string config() const { return (dir_ / "mrd.toml").string(); }
+
+  mrd::test::TestDirectory dir_{"mrd_controller_process"};
+};
+
+// Waits for the first datagram that starts with `prefix`, skipping others.
+std::optional<std::string> wait_message(mrd::test::FakeNotifySocket& systemd, const std::string& prefix) {
+  const auto deadline = std::chrono::steady_clock::now() + seconds(10);
+  while (std::chrono::steady_clock::now() < deadline) {
+    const auto m = systemd.next(milliseconds(500));
+    if (m && m->starts_with(prefix)) return m;
+  }
+  return std::nullopt;
+}
+
+class StopSignal : public ControllerProcess, public ::testing::WithParamInterface<int> {};
+
+TEST_P(StopSignal, EndsTheRunThroughTheFailSafeCycleWithExitCodeZero) {
+  mrd::test::FakeNotifySocket systemd;
+  ASSERT_TRUE(systemd.ok());
+  setenv("WATCHDOG_USEC", "200000", 1);  // WatchdogSec=0.2 (no WATCHDOG_PID: any pid may take it)
+  ChildProcess controller({MRD_CONTROLLER_BINARY, "--config", config()});
+  unsetenv("WATCHDOG_USEC");
+  ASSERT_TRUE(controller.started());
+
+  const auto ready = wait_message(systemd, "READY=1");
+  ASSERT_TRUE(ready) << controller.output();
+  EXPECT_NE(ready->find("STATUS=INIT, 1000 Hz"), std::string::npos) << *ready;
+  EXPECT_TRUE(wait_message(systemd, "WATCHDOG=1")) << "no watchdog kick while the loop runs";
+
+  controller.signal(GetParam());
+  const auto code = controller.wait_exit(seconds(10));
+  ASSERT_TRUE(code) << controller.output();
+  EXPECT_EQ(*code, 0) << controller.output();
+  const std::string& out = controller.output();
+  const std::string name = GetParam() == SIGHUP ? "SIGHUP" : "SIGTERM";
+  EXPECT_TRUE(std::regex_search(out, std::regex("supervisor: (INIT|RUN|DEGRADED) -> SAFE \\(shutdown\\) at cycle")))
+      << out;
+  EXPECT_NE(out.find("stopped on " + name + ", fail-safe current written"), std::string::npos) << out;
+  EXPECT_NE(out.find("final setpoint 0.000 A (fail-safe 0.000 A), enable off"), std::string::npos) << out;
+  const auto stopping = wait_message(systemd, "STOPPING=1");
+  ASSERT_TRUE(stopping);
+  EXPECT_EQ(*stopping, "STOPPING=1\nSTATUS=stopped on " + name);
+}
+
+INSTANTIATE_TEST_SUITE_P(HupAndTerm, StopSignal, ::testing::Values(SIGHUP, SIGTERM),
+                         [](const ::testing::TestParamInfo<int>& p) { return std::string(p.param == SIGHUP ? "SIGHUP" : "SIGTERM"); });
+
+TEST_F(ControllerProcess, TwoStartsKeepTwoTelemetryFiles) {
+  for (int run = 0; run < 2; ++run) {
+    ChildProcess controller({MRD_CONTROLLER_BINARY, "--config", config(), "--duration", "0.1"});
+    const auto code = controller.wait_exit(seconds(10));
+    ASSERT_TRUE(code);
+    ASSERT_EQ(*code, 0) << controller.output();
+  }
+  for (const char* name : {"telemetry-0001.csv", "telemetry-0002.csv"}) {
+    std::ifstream in(dir_ / name);
+    std::size_t lines = 0;
+    for (std::string line; std::getline(in, line);) ++lines;
+    EXPECT_EQ(lines, 102u) << name << ": the header, 100 cycles and the shutdown cycle";
+  }
+}
+
+}  // namespace
