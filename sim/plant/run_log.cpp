@@ -24,7 +24,7 @@ void RunLog::write(const RigSample& s) {
        .B = r.B, .temperature = r.temperature},
       line);
   std::fwrite(line, 1, n, file_);
-  ++rows_;
+  rows_.add();
 }
 
 void RunLog::close() {

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <string>
 
+#include "common/single_writer_counter.hpp"
 #include "hal/status.hpp"
 #include "record/run_csv_writer.hpp"
 #include "sim/plant/rig.hpp"
@@ -23,13 +24,14 @@ class RunLog {
   [[nodiscard]] hal::StartResult open(const std::string& path);
   void write(const RigSample& s);
   void close();
-  [[nodiscard]] std::uint64_t rows() const { return rows_; }
+  // Any thread: the stepping thread writes, SIGUSR1's printout on the main thread reads.
+  [[nodiscard]] std::uint64_t rows() const { return rows_.get(); }
 
   static constexpr record::RunCsvLayout kLayout{.B = true, .temperature = true};
 
  private:
   std::FILE* file_ = nullptr;
-  std::uint64_t rows_ = 0;
+  SingleWriterCounter rows_;
   record::RunCsvWriter writer_{kLayout};
 };
 
