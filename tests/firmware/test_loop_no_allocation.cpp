@@ -99,6 +99,8 @@ TEST(RealTime, ControlLoopCycleDoesNotAllocateOnAnySupervisorPath) {
 
 TEST(RealTime, ANonFiniteCommandsVetoDoesNotAllocate) {
   mrd::control::ControlLawConfig law;
+  // A corrupted schedule through the uncompensated path: the slew limiter passes the NaN on.
+  law.compensate_hysteresis = false;
   law.schedule.currents.fill(std::numeric_limits<double>::quiet_NaN());
   LoopRig rig({}, {}, nullptr, law);
   for (int i = 0; i < 10; ++i) rig.step();

@@ -137,6 +137,8 @@ TEST(SupervisedFault, DriverFaultsFurtherApartThanTheWindowNeverLatch) {
 
 TEST(SupervisedFault, ANonFiniteCommandIsNeverWrittenAndIsSafeInItsOwnPeriod) {
   mrd::control::ControlLawConfig law;
+  // A corrupted schedule through the uncompensated path: the slew limiter passes the NaN on.
+  law.compensate_hysteresis = false;
   law.schedule.currents.fill(std::numeric_limits<double>::quiet_NaN());
   LoopRig rig({}, {}, nullptr, law);
   for (std::int64_t i = 0; i < 3 * kLimits.recovery_periods; ++i) {
