@@ -72,8 +72,9 @@ ValidationReport SupervisorConfig::validate() const {
   at_least("line_failure_periods", line_failure_periods, 1);
   at_least("observer_recovery_periods", observer_recovery_periods, 1);
   r.check(std::isfinite(max_speed) && max_speed >= 0.0, "max_speed", "must be a finite value >= 0 m/s (0: off)");
-  r.check(driver_fault_limit >= 1 && driver_fault_limit <= 16, "driver_fault_limit",
-          "must be 1..16, got " + std::to_string(driver_fault_limit));
+  constexpr int kMaxLimit = static_cast<int>(Supervisor::kMaxDriverFaultLimit);
+  r.check(driver_fault_limit >= 1 && driver_fault_limit <= kMaxLimit, "driver_fault_limit",
+          "must be 1.." + std::to_string(kMaxLimit) + ", got " + std::to_string(driver_fault_limit));
   at_least("driver_fault_window", driver_fault_window, 1);
   at_least("overrun_limit", overrun_limit, 1);
   at_least("overrun_window", overrun_window, 1);

@@ -138,6 +138,9 @@ class Supervisor {
  public:
   explicit Supervisor(const SupervisorConfig& config) : config_(config) {}
 
+  // The largest driver_fault_limit validate() accepts: the size of the latch's ring.
+  static constexpr std::size_t kMaxDriverFaultLimit = 16;
+
   SupervisorDecision step(const SupervisorInputs& in, hal::Timestamp now);
   // This period's command cannot be written: SAFE now, with `why`, and the decision that holds.
   SupervisorDecision veto(Trigger why, hal::Timestamp now);
@@ -176,9 +179,7 @@ class Supervisor {
   std::int64_t failed_disables_ = 0;
   std::int64_t recovering_ = 0;
   std::int64_t periods_ = 0;         // steps taken, the driver-fault window's clock
-  // Periods of the last driver_fault_limit driver-side SAFE entries, a ring (the limit is
-  // capped to its size by validate()).
-  static constexpr std::size_t kMaxDriverFaultLimit = 16;
+  // Periods of the last driver_fault_limit driver-side SAFE entries, a ring.
   std::array<std::int64_t, kMaxDriverFaultLimit> driver_faults_{};
   std::size_t driver_fault_count_ = 0;
   std::int64_t good_ = 0;

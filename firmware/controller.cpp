@@ -39,6 +39,7 @@ void print_stats(std::FILE* out, const runtime::LoopStatistics& stats, const run
 runtime::ServiceStatus service_status(const config::ControllerConfig& config, const runtime::LoopStatistics& stats,
                                       const runtime::SupervisorFeed& feed) {
   return {.state = feed.state(),
+          .latched = feed.latched(),
           .rate = config.rate,
           .cycles = stats.cycles.get(),
           .overruns = stats.overruns.get(),

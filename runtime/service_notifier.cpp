@@ -8,9 +8,9 @@
 namespace mrd::runtime {
 
 std::string format_status(const ServiceStatus& s) {
-  char line[160];
-  std::snprintf(line, sizeof line, "%s, %.0f Hz, wake-up p99 %.1f us, overruns %" PRIu64 ", cycles %" PRIu64,
-                std::string(to_string(s.state)).c_str(), s.rate, static_cast<double>(s.wake_p99_ns) * 1e-3,
+  char line[192];
+  std::snprintf(line, sizeof line, "%s%s, %.0f Hz, wake-up p99 %.1f us, overruns %" PRIu64 ", cycles %" PRIu64,
+                std::string(to_string(s.state)).c_str(), s.latched ? " latched (clear: SIGUSR2)" : "", s.rate, static_cast<double>(s.wake_p99_ns) * 1e-3,
                 s.overruns, s.cycles);
   return line;
 }

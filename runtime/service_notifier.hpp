@@ -12,12 +12,14 @@ namespace mrd::runtime {
 // The STATUS= line systemctl status shows: state, rate, wake-up p99 and overruns so far.
 struct ServiceStatus {
   control::SupervisorState state = control::SupervisorState::kInit;
+  bool latched = false;            // SAFE until an operator's SIGUSR2
   double rate = 0.0;               // [Hz]
   std::uint64_t cycles = 0;
   std::uint64_t overruns = 0;
   std::uint64_t wake_p99_ns = 0;   // since start
 };
-// "RUN, 1000 Hz, wake-up p99 42.1 us, overruns 0, cycles 120000"
+// "RUN, 1000 Hz, wake-up p99 42.1 us, overruns 0, cycles 120000"; a latched SAFE reads
+// "SAFE latched (clear: SIGUSR2), 1000 Hz, ...", so `systemctl status` says what to do.
 [[nodiscard]] std::string format_status(const ServiceStatus& s);
 
 // systemd's service protocol through libsystemd's sd_notify (Type=notify, WatchdogSec=). Every

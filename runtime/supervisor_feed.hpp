@@ -39,12 +39,15 @@ class SupervisorFeed {
     }
     last_ = to;
     state_.store(r.state, std::memory_order_release);
+    latched_.store(r.latched, std::memory_order_release);
   }
 
   // Any thread: the state after the newest published cycle.
   [[nodiscard]] control::SupervisorState state() const {
     return static_cast<control::SupervisorState>(state_.load(std::memory_order_acquire));
   }
+  // Any thread: whether that state is a SAFE only an operator's clear (SIGUSR2) ends.
+  [[nodiscard]] bool latched() const { return latched_.load(std::memory_order_acquire); }
   // Any thread: transitions the ring had no room for.
   [[nodiscard]] std::uint64_t lost() const { return lost_.get(); }
 
@@ -57,6 +60,7 @@ class SupervisorFeed {
  private:
   boost::lockfree::spsc_queue<SupervisorEvent, boost::lockfree::capacity<kCapacity>> ring_;
   std::atomic<std::uint8_t> state_{static_cast<std::uint8_t>(control::SupervisorState::kInit)};
+  std::atomic<bool> latched_{false};
   control::SupervisorState last_ = control::SupervisorState::kInit;  // loop thread only
   SingleWriterCounter lost_;
 };

@@ -48,6 +48,15 @@ TEST(ServiceNotifier, StatusLineNamesStateRateP99AndOverruns) {
   EXPECT_EQ(format_status(status(120000)), "RUN, 1000 Hz, wake-up p99 42.1 us, overruns 2, cycles 120000");
 }
 
+TEST(ServiceNotifier, ALatchedSafeSaysHowToClearIt) {
+  ServiceStatus latched = status(5000, SupervisorState::kSafe);
+  latched.latched = true;
+  EXPECT_EQ(format_status(latched),
+            "SAFE latched (clear: SIGUSR2), 1000 Hz, wake-up p99 42.1 us, overruns 2, cycles 5000");
+  EXPECT_EQ(format_status(status(5000, SupervisorState::kSafe)),
+            "SAFE, 1000 Hz, wake-up p99 42.1 us, overruns 2, cycles 5000");
+}
+
 TEST(ServiceNotifier, ReadyFirstThenWatchdogOnlyWhileCyclesAdvance) {
   mrd::test::FakeNotifySocket systemd;
   ASSERT_TRUE(systemd.ok());

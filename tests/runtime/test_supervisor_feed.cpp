@@ -53,6 +53,18 @@ TEST(SupervisorFeed, EachTransitionIsOneEventWithTheStateItLeft) {
   EXPECT_TRUE(drain(feed).empty());
 }
 
+TEST(SupervisorFeed, TheLatchIsPublishedWithTheStateAndClearsWithIt) {
+  SupervisorFeed feed;
+  EXPECT_FALSE(feed.latched());
+  TelemetryRecord latched = record(7, SupervisorState::kSafe, Trigger::kDriverFault);
+  latched.latched = true;
+  feed.publish(latched);
+  EXPECT_TRUE(feed.latched());
+  feed.publish(record(8, SupervisorState::kSafe, Trigger::kOperatorClear));
+  EXPECT_FALSE(feed.latched());
+  EXPECT_EQ(feed.state(), SupervisorState::kSafe);
+}
+
 TEST(SupervisorFeed, AFullRingDropsAndCountsTheLoopNeverWaits) {
   SupervisorFeed feed;
   const std::size_t n = SupervisorFeed::kCapacity + 10;
