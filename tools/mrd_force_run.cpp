@@ -14,7 +14,6 @@
 #include <string>
 #include <vector>
 
-#include "model/effects/coil_lag.hpp"
 #include "tools/force_run/controller_identification.hpp"
 #include "tools/force_run/force_run.hpp"
 #include "tools/gnuplot.hpp"
@@ -136,8 +135,7 @@ int main(int argc, char** argv) {
   }
 
   const double dt = 1e-3;
-  mrd::model::DamperModel plant;
-  if (coil_lag_ms > 0.0) plant.effects.get<mrd::model::CoilLagEffect>() = {true, coil_lag_ms * 1e-3};
+  const mrd::model::DamperModel plant = mrd::tools::with_coil_lag({}, coil_lag_ms * 1e-3);
   mrd::model::CompensatorLimits limits;
   limits.min_current = -limits.max_current;  // bipolar: a unipolar driver cannot clear remanence
   if (const auto report = mrd::model::validate(plant); !report.ok()) {

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <random>
 
-#include "model/effects/coil_lag.hpp"
+#include "tools/force_run/force_run.hpp"
 #include "model/slew_limiter.hpp"
 #include "sim/damper_plant.hpp"
 #include "sim/displacement_profile.hpp"
@@ -92,22 +92,22 @@ IdentifiedController identify_controller(const model::DamperModel& plant, const 
   IdentifiedController out;
   model::DamperModel start = nominal;
   start.jiles_atherton = identify_magnetics(plant, limits, options, out);
-  start.effects.get<model::CoilLagEffect>().enabled = false;
+  const model::EffectInfo& lag = coil_lag_effect();
+  lag.disable(start.effects);
 
   const FitSeries series = simulated_force_run(plant, limits, options);
   const SeriesScales scales = series_scales(series);
   FittedModel fit = fit_space(base_space(start, start, scales, FieldGain::kKept), series, nullptr, options.seed);
-  if (plant.effects.get<model::CoilLagEffect>().enabled) {
+  if (lag.enabled(plant.effects)) {
     // The lag on the first fit, then the base again with the lag in: the first fit's force
     // scale and viscous term leaned to make up for the lag it did not have.
-    const model::EffectInfo* lag = model::find_effect("coil_lag");
-    fit = fit_space(effect_space(*lag, fit.model, scales), series, nullptr, options.seed + 1);
+    fit = fit_space(effect_space(lag, fit.model, scales), series, nullptr, options.seed + 1);
     const ParameterSpace joint = combine(base_space(fit.model, fit.model, scales, FieldGain::kKept),
-                                         effect_space(*lag, fit.model, scales));
+                                         effect_space(lag, fit.model, scales));
     Point from(joint.bounds.lower.size());
-    from << base_coordinates(fit.model, scales, FieldGain::kKept), effect_coordinates(*lag, fit.model, scales);
+    from << base_coordinates(fit.model, scales, FieldGain::kKept), effect_coordinates(lag, fit.model, scales);
     fit = refine_space(joint, series, from, 200);
-    out.notes.push_back(formatted("coil lag: tau %.2f ms", fit.model.effects.get<model::CoilLagEffect>().time_constant * 1e3));
+    out.notes.push_back(formatted("coil lag: tau %.2f ms", coil_lag_time_constant(fit.model) * 1e3));
   }
   const model::BinghamDamper fitted(fit.model.geometry, fit.model.fluid.viscosity);
   const model::BinghamDamper truth(plant.geometry, plant.fluid.viscosity);

@@ -139,6 +139,21 @@ ForceRunResult run_force_tracking(const DemandProfile& profile, const ForceRunOp
   return result;
 }
 
+const model::EffectInfo& coil_lag_effect() {
+  static const model::EffectInfo* const info = model::find_effect(model::CoilLagEffect::kName);
+  return *info;
+}
+
+model::DamperModel with_coil_lag(model::DamperModel m, double time_constant) {
+  m.effects.get<model::CoilLagEffect>() = {time_constant > 0.0, time_constant > 0.0 ? time_constant : 5e-3};
+  return m;
+}
+
+double coil_lag_time_constant(const model::DamperModel& m) {
+  const auto& lag = m.effects.get<model::CoilLagEffect>();
+  return lag.enabled ? lag.time_constant : 0.0;
+}
+
 model::DamperModel perturbed_model(const model::DamperModel& truth) {
   model::DamperModel m = truth;
   m.jiles_atherton.Ms *= 1.10;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "model/damper_model.hpp"
+#include "model/effects/effect_set.hpp"
 #include "model/hysteresis_compensator.hpp"
 #include "tools/force_run/force_strategies.hpp"
 #include "tools/force_run/shear_building.hpp"
@@ -81,6 +82,14 @@ struct ForceRunResult {
 };
 
 ForceRunResult run_force_tracking(const DemandProfile& profile, const ForceRunOptions& options);
+
+// The coil lag is the one effect the strategies treat apart (inverse_ja_lag inverts it); these
+// are the only places mrd-force-run names it (cmake/check_effect_names.cmake).
+const model::EffectInfo& coil_lag_effect();
+// `m` with a coil lag of `time_constant` [s], or none for 0.
+model::DamperModel with_coil_lag(model::DamperModel m, double time_constant);
+// [s], 0 when the model has none.
+double coil_lag_time_constant(const model::DamperModel& m);
 
 // The documented perturbation of the controller's model (docs/FORCE-CONTROL.md): every J-A
 // and Bingham parameter off by 10-20 % with fixed signs, the coil lag's tau +20 %.

@@ -1,8 +1,9 @@
 # Runs mrd-force-run and checks issue 18's goals in its JSON (docs/FORCE-CONTROL.md):
 #   GOAL=hysteresis: inverse_ja <= 0.5 inverse_bingham and < clipped_on_off (RMS error);
 #   GOAL=lag:        inverse_ja_lag <= 0.5 inverse_ja.
-# cmake -DTOOL=... -DJSON=... -DGOAL=hysteresis|lag -DARGS="--duration;6" -P check_goals.cmake
-execute_process(COMMAND ${TOOL} ${ARGS} --json ${JSON} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+# cmake -DTOOL=... -DJSON=... -DGOAL=hysteresis|lag -DARGS=--duration,6 -P check_goals.cmake
+string(REPLACE "," ";" args "${ARGS}")
+execute_process(COMMAND ${TOOL} ${args} --json ${JSON} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("${out}")
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "mrd-force-run exited ${rc}: ${err}")
