@@ -8,10 +8,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <map>
 #include <nlohmann/json.hpp>
-#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "tools/force_run/controller_identification.hpp"
@@ -31,10 +30,12 @@ struct CaseRun {
   std::vector<std::string> notes;
 };
 
-nlohmann::json to_json(const CaseRun& run, const DemandProfile& profile, double coil_lag_ms) {
+nlohmann::json to_json(const CaseRun& run, std::string_view profile_name, const DemandProfile& profile,
+                       double coil_lag_ms) {
   nlohmann::json j;
   j["case"] = run.name;
-  j["profile"] = profile.description;
+  j["profile"] = std::string(profile_name);
+  j["profile_description"] = profile.description;
   j["coil_lag_ms"] = coil_lag_ms;
   j["desired_rms_N"] = run.result.desired_rms;
   j["reachable_fraction"] = run.result.reachable_fraction;
@@ -204,9 +205,9 @@ int main(int argc, char** argv) {
     for (std::size_t i = 0; i < runs.size(); ++i) {
       if (runs[i].name == "identified") top = i;
     }
-    nlohmann::json j = to_json(runs[top], profile, coil_lag_ms);
+    nlohmann::json j = to_json(runs[top], profile_choice, profile, coil_lag_ms);
     j["runs"] = nlohmann::json::array();
-    for (const auto& run : runs) j["runs"].push_back(to_json(run, profile, coil_lag_ms));
+    for (const auto& run : runs) j["runs"].push_back(to_json(run, profile_choice, profile, coil_lag_ms));
     std::ofstream out(json_path);
     out << j.dump(2) << '\n';
     if (!out) {
