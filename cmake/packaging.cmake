@@ -88,7 +88,8 @@ set(CPACK_COMPONENT_TOOLS_DESCRIPTION
 Programs that check and tune the controller away from the box:
 mrd-table4-run, mrd-ja-scan, mrd-identify (Jiles-Atherton parameters
 from measured B-H loops, where built), mrd-replay (recorded runs through
-the controller's observer and control law) and mrd-simulate-run (runs
-from the simulated damper).")
+the controller's observer and control law), mrd-simulate-run (runs
+from the simulated damper) and mrd-force-run (force-control strategies
+compared on the simulated damper, where built).")
 
 include(CPack)
