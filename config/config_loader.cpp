@@ -304,6 +304,9 @@ void cross_check(TomlReader& in, const ControllerConfig& c) {
                                           std::to_string(static_cast<long>(per_pass)) +
                                           " each): expect dropped records");
   }
+  if (c.backends.demand && *c.backends.demand != DeviceBackend::kMock) {
+    in.error("backends.demand", "the demand over Modbus or CAN is not implemented yet: use \"mock\"");
+  }
   if (c.backends.demand == DeviceBackend::kMock && c.backends.lvdt != DeviceBackend::kMock) {
     in.error("backends.demand", "\"mock\" asks for simulation.demand_damping times the mock LVDT's velocity: "
                                 "it needs backends.lvdt = \"mock\"");

@@ -70,3 +70,14 @@ demand = "mock"
 }
 
 }  // namespace
+
+namespace {
+
+TEST(ForceModeConfig, TheDemandOverABusIsRefusedUntilItIsImplemented) {
+  const LoadedConfig c = load_config_text("[control]\nmode = \"force\"\n[backends]\ndemand = \"can\"\n", "can.toml");
+  EXPECT_TRUE(mrd::test::has_error(c, "can.toml:4: backends.demand: the demand over Modbus or CAN is not implemented "
+                                      "yet: use \"mock\""))
+      << c.report();
+}
+
+}  // namespace
