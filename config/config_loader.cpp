@@ -28,6 +28,8 @@ ValidationReport SimulationConfig::validate() const {
   r.check(std::isfinite(amplitude) && amplitude >= 0.0, "amplitude", "must be a finite value >= 0 m");
   r.check(std::isfinite(frequency) && frequency > 0.0, "frequency", "must be a finite value > 0 Hz");
   r.check(std::isfinite(lvdt_noise) && lvdt_noise >= 0.0, "lvdt_noise", "must be a finite value >= 0 m");
+  r.check(std::isfinite(demand_damping) && demand_damping >= 0.0, "demand_damping",
+          "must be a finite value >= 0 N s/m");
   return r;
 }
 
@@ -138,6 +140,9 @@ void read_damper(TomlReader& in, model::DamperModel& d) {
 }
 
 void read_law(TomlReader& in, control::ControlLawConfig& law) {
+  in.get_enum("control.mode", law.mode,
+              {{"table4", control::ControlMode::kTable4}, {"force", control::ControlMode::kForce}});
+  in.get("force.invert_coil_lag", law.force.invert_coil_lag);
   read_damper(in, law.damper);
   in.get("schedule.thresholds", law.schedule.thresholds);
   in.get("schedule.currents", law.schedule.currents);
@@ -176,6 +181,9 @@ void read_safety(TomlReader& in, control::SupervisorConfig& s) {
   in.get("safety.enable_in_safe", s.enable_in_safe);
   in.get("safety.recovery_periods", s.recovery_periods);
   in.get("safety.degraded_clear_periods", s.degraded_clear_periods);
+  // Force mode's demand checks, judged by the supervisor as the LVDT's are.
+  in.get("force.demand_range", s.demand_range);
+  in.get("force.demand_max_age", s.demand_stale_periods);
 }
 
 void read_all(TomlReader& in, ControllerConfig& c) {
@@ -188,14 +196,21 @@ void read_all(TomlReader& in, ControllerConfig& c) {
                {"can", DeviceBackend::kCan}});
   in.get_enum("backends.lines", c.backends.lines,
               {{"mock", LinesBackend::kMock}, {"gpio", LinesBackend::kGpio}});
+  DeviceBackend demand = DeviceBackend::kMock;
+  in.get_enum("backends.demand", demand,
+              {{"mock", DeviceBackend::kMock}, {"modbus", DeviceBackend::kModbus},
+               {"can", DeviceBackend::kCan}});
   in.get("simulation.amplitude", c.simulation.amplitude);
   in.get("simulation.frequency", c.simulation.frequency);
   in.get("simulation.lvdt_noise", c.simulation.lvdt_noise);
   in.get("simulation.seed", c.simulation.seed);
+  in.get("simulation.demand_damping", c.simulation.demand_damping);
   read_modbus(in, c.modbus);
   read_can(in, c.can);
   read_gpio(in, c.gpio);
   read_law(in, c.law);
+  // The demand channel is opened in force mode only: table4 reads none.
+  if (c.law.mode == control::ControlMode::kForce) c.backends.demand = demand;
   read_safety(in, c.safety);
   in.get("realtime.priority", c.realtime.priority);
   in.get("realtime.cpu", c.realtime.cpu);
@@ -213,6 +228,13 @@ void read_all(TomlReader& in, ControllerConfig& c) {
 
 void report(TomlReader& in, const ValidationReport& r, std::string_view table) {
   for (const auto& p : r.issues()) in.error(std::string(table) + "." + p.field, p.message);
+}
+
+// SupervisorConfig's demand fields come from the file's [force] table.
+std::string safety_key(const std::string& field) {
+  if (field == "demand_range") return "force.demand_range";
+  if (field == "demand_stale_periods") return "force.demand_max_age";
+  return "safety." + field;
 }
 
 // ControlLaw's validate() names its own struct fields; these are the keys the file uses.
@@ -282,6 +304,13 @@ void cross_check(TomlReader& in, const ControllerConfig& c) {
                                           std::to_string(static_cast<long>(per_pass)) +
                                           " each): expect dropped records");
   }
+  if (c.backends.demand && *c.backends.demand != DeviceBackend::kMock) {
+    in.error("backends.demand", "the demand over Modbus or CAN is not implemented yet: use \"mock\"");
+  }
+  if (c.backends.demand == DeviceBackend::kMock && c.backends.lvdt != DeviceBackend::kMock) {
+    in.error("backends.demand", "\"mock\" asks for simulation.demand_damping times the mock LVDT's velocity: "
+                                "it needs backends.lvdt = \"mock\"");
+  }
   if (c.backends.uses(DeviceBackend::kModbus)) check_register_overlaps(in, c.modbus.registers);
 }
 
@@ -291,7 +320,8 @@ void validate_all(TomlReader& in, ControllerConfig& c) {
   report(in, c.can.validate(), "can");
   report(in, c.gpio.validate(), "gpio");
   report(in, c.simulation.validate(), "simulation");
-  report(in, c.safety.validate(), "safety");
+  const ValidationReport safety = c.safety.validate();
+  for (const auto& p : safety.issues()) in.error(safety_key(p.field), p.message);
   report(in, c.realtime.validate(), "realtime");
   report(in, c.telemetry.validate(), "telemetry");
   const ValidationReport law_report = validate(c.law);

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <optional>
 #include <string_view>
 
 #include "control/control_law.hpp"
@@ -23,8 +24,9 @@ struct BackendSelection {
   DeviceBackend lvdt = DeviceBackend::kMock;
   DeviceBackend driver = DeviceBackend::kMock;
   LinesBackend lines = LinesBackend::kMock;
+  std::optional<DeviceBackend> demand;  // the force demand; set in force mode only
 
-  [[nodiscard]] bool uses(DeviceBackend b) const { return lvdt == b || driver == b; }
+  [[nodiscard]] bool uses(DeviceBackend b) const { return lvdt == b || driver == b || demand == b; }
   [[nodiscard]] bool any_mock() const {
     return uses(DeviceBackend::kMock) || lines == LinesBackend::kMock;
   }
@@ -37,6 +39,9 @@ struct SimulationConfig {
   double frequency = 0.5;     // [Hz]
   double lvdt_noise = 5e-6;   // RMS [m]
   std::uint32_t seed = 1;
+  // Force mode with the mock demand: the outer controller asks for c v on the sine's velocity,
+  // a dissipative demand (docs/FORCE-CONTROL.md).
+  double demand_damping = 250e3;  // [N s/m]
 
   [[nodiscard]] ValidationReport validate() const;  // field paths relative to [simulation]
 };

@@ -29,7 +29,9 @@ ControlLaw::ControlLaw(const ControlLawConfig& config)
                    config.limits, config.observer.sample_period),
       uncompensated_(config.limits.min_current, config.limits.max_current, config.limits.slew_rate,
                      config.observer.sample_period),
-      compensate_(config.compensate_hysteresis) {}
+      compensate_(config.compensate_hysteresis) {
+  if (config.mode == ControlMode::kForce) force_.emplace(observer_, config.limits, config.force);
+}
 
 const ControlLaw::Observation& ControlLaw::observe(const model::Measurement& m) {
   observation_.scheduled_current = schedule_.update(m.displacement);
@@ -37,7 +39,12 @@ const ControlLaw::Observation& ControlLaw::observe(const model::Measurement& m) 
   return observation_;
 }
 
-ControlLaw::Command ControlLaw::command() {
+ControlLaw::Command ControlLaw::command(double demand) {
+  if (force_) {
+    // The velocity over the coming period is taken as the observer's now (docs/FORCE-CONTROL.md).
+    const model::ForceCommand f = force_->step({demand, observation_.estimate.velocity}, observer_);
+    return {f.current, f.target_B, demand, f.yield_force, f.clipped, f.reached};
+  }
   const double scheduled = observation_.scheduled_current;
   if (compensate_) return {compensator_.command(scheduled, observer_.magnetics()), compensator_.target_B()};
   return {uncompensated_.update(scheduled), compensator_.target().B(scheduled)};

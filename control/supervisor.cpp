@@ -42,6 +42,12 @@ std::string_view to_string(Trigger t) {
     case Trigger::kRepeatedOverruns: return "repeated_overruns";
     case Trigger::kShutdown: return "shutdown";
     case Trigger::kOperatorClear: return "operator_clear";
+    case Trigger::kDemandMissing: return "demand_missing";
+    case Trigger::kDemandStale: return "demand_stale";
+    case Trigger::kDemandOutOfRange: return "demand_out_of_range";
+    case Trigger::kDemandNotFinite: return "demand_not_finite";
+    case Trigger::kDemandCorrupted: return "demand_corrupted";
+    case Trigger::kDemandFromFuture: return "demand_from_future";
     case Trigger::kCount: break;
   }
   return "?";
@@ -85,6 +91,8 @@ ValidationReport SupervisorConfig::validate() const {
   }
   at_least("recovery_periods", recovery_periods, 1);
   at_least("degraded_clear_periods", degraded_clear_periods, 1);
+  at_least("demand_stale_periods", demand_stale_periods, 1);
+  r.check(std::isfinite(demand_range) && demand_range > 0.0, "demand_range", "must be a finite value > 0 N");
   return r;
 }
 
@@ -121,6 +129,22 @@ Trigger trigger_of(SampleCheck c) {
   return Trigger::kNone;
 }
 
+// The same judgement of the force demand; the frozen and jump checks do not apply to it.
+Trigger demand_trigger_of(SampleCheck c) {
+  switch (c) {
+    case SampleCheck::kOutOfRange: return Trigger::kDemandOutOfRange;
+    case SampleCheck::kNotFinite: return Trigger::kDemandNotFinite;
+    case SampleCheck::kCorrupted:
+    case SampleCheck::kFrozen:
+    case SampleCheck::kJump: return Trigger::kDemandCorrupted;
+    case SampleCheck::kFromFuture: return Trigger::kDemandFromFuture;
+    case SampleCheck::kMissing:
+    case SampleCheck::kStale: return Trigger::kDemandMissing;
+    case SampleCheck::kFresh: break;
+  }
+  return Trigger::kNone;
+}
+
 // SAFE entries that point at the driver or its wiring: repeated, they latch.
 bool is_driver_side(Trigger t) {
   switch (t) {
@@ -140,6 +164,8 @@ void Supervisor::update_counters(const SupervisorInputs& in) {
   const auto run = [](std::int64_t& counter, bool condition) { counter = condition ? counter + 1 : 0; };
   run(without_sample_, in.sample != SampleCheck::kFresh);
   run(bad_samples_, is_bad_value(in.sample));
+  run(without_demand_, in.demand != SampleCheck::kFresh);
+  run(bad_demands_, is_bad_value(in.demand));
   run(disagreeing_, in.current_disagrees);
   run(failed_writes_, in.setpoint_write_failed);
   run(failed_lines_, in.line_write_failed);
@@ -166,6 +192,8 @@ Trigger Supervisor::hard_trigger(const SupervisorInputs& in) const {
   if (*in.driver_fault) return Trigger::kDriverFault;
   if (bad_samples_ >= config_.bad_sample_periods) return trigger_of(in.sample);
   if (without_sample_ > config_.stale_periods) return Trigger::kSensorStale;
+  if (bad_demands_ >= config_.bad_sample_periods) return demand_trigger_of(in.demand);
+  if (without_demand_ > config_.demand_stale_periods) return Trigger::kDemandStale;
   if (disagreeing_ >= config_.current_disagreement_periods) return Trigger::kCurrentDisagreement;
   if (failed_writes_ >= config_.write_failure_periods) return Trigger::kSetpointWriteFailed;
   if (refused_ >= config_.write_failure_periods) return Trigger::kSetpointRefused;
@@ -179,6 +207,7 @@ Trigger Supervisor::hard_trigger(const SupervisorInputs& in) const {
 // DEGRADED triggers: a problem that has not lasted long enough for SAFE.
 Trigger Supervisor::soft_trigger(const SupervisorInputs& in) const {
   if (in.sample != SampleCheck::kFresh) return trigger_of(in.sample);
+  if (in.demand != SampleCheck::kFresh) return demand_trigger_of(in.demand);
   if (in.current_disagrees) return Trigger::kCurrentDisagreement;
   if (in.setpoint_write_failed) return Trigger::kSetpointWriteFailed;
   if (in.setpoints_refused > 0) return Trigger::kSetpointRefused;
@@ -247,9 +276,9 @@ SupervisorDecision Supervisor::step(const SupervisorInputs& in, hal::Timestamp n
   SupervisorDecision d;
   switch (state_) {
     case SupervisorState::kInit:
-      // Before the first proof of health a silent sensor keeps INIT (same outputs as SAFE);
-      // every other hard trigger is a fault already.
-      if (hard != Trigger::kNone && hard != Trigger::kSensorStale) {
+      // Before the first proof of health a silent sensor or outer controller keeps INIT (same
+      // outputs as SAFE); every other hard trigger is a fault already.
+      if (hard != Trigger::kNone && hard != Trigger::kSensorStale && hard != Trigger::kDemandStale) {
         go(SupervisorState::kSafe, hard, now, d);
       } else if (good_ >= config_.recovery_periods) {
         go(SupervisorState::kRun, Trigger::kGoodPeriods, now, d);

@@ -44,6 +44,13 @@ enum class Trigger : std::uint8_t {
   kRepeatedOverruns,      // overrun_limit overruns without overrun_window clean periods between
   kShutdown,              // SIGTERM/SIGINT/SIGHUP: SAFE and stay there
   kOperatorClear,         // an operator cleared the latch (SAFE stays SAFE until good periods)
+  // Force mode: the outer controller's demand, judged as the LVDT's samples are.
+  kDemandMissing,         // no fresh demand this period (nothing new, repeated, or too old)
+  kDemandStale,           // more than demand_stale_periods periods without a fresh usable demand
+  kDemandOutOfRange,      // |demand| above [force] demand_range
+  kDemandNotFinite,       // NaN or infinite
+  kDemandCorrupted,       // checksum/decode failure
+  kDemandFromFuture,      // stamped ahead of the cycle by more than the allowed age
   kCount
 };
 
@@ -77,6 +84,10 @@ struct SupervisorConfig {
   bool enable_in_safe = false;       // driver enable line in INIT and SAFE
   int recovery_periods = 200;        // M: good periods before INIT/SAFE -> RUN
   int degraded_clear_periods = 10;   // good periods before DEGRADED -> RUN
+  double demand_range = 60e3;        // force mode: [N] a demand above this in magnitude is out of
+                                     // range (the file's [force] demand_range)
+  int demand_stale_periods = 5;      // force mode: SAFE after more than this many periods without a
+                                     // fresh demand (the file's [force] demand_max_age)
 
   [[nodiscard]] ValidationReport validate() const;  // field paths relative to [safety]
 };
@@ -84,6 +95,7 @@ struct SupervisorConfig {
 // What the loop observed this period. Everything the supervisor judges arrives here.
 struct SupervisorInputs {
   SampleCheck sample = SampleCheck::kFresh;
+  SampleCheck demand = SampleCheck::kFresh;  // force mode's demand (DemandChecker); fresh otherwise
   std::optional<bool> driver_fault = false;  // nullopt: the line could not be read
   bool current_disagrees = false;            // judged by the loop, only when a reading exists
   bool setpoint_write_failed = false;        // the previous period's write
@@ -172,6 +184,8 @@ class Supervisor {
   // Consecutive-period counters.
   std::int64_t without_sample_ = 0;
   std::int64_t bad_samples_ = 0;
+  std::int64_t without_demand_ = 0;
+  std::int64_t bad_demands_ = 0;
   std::int64_t disagreeing_ = 0;
   std::int64_t failed_writes_ = 0;
   std::int64_t refused_ = 0;         // refused setpoints since the last accepted one

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace mrd::firmware {
 
@@ -25,6 +26,8 @@ ControlLoop::ControlLoop(const control::ControlLawConfig& law, const control::Su
                 .max_age = safety.stale_periods * to_period(law.observer.sample_period),
                 .frozen_periods = safety.frozen_periods,
                 .max_speed = safety.max_speed}),
+      demand_checker_({.range = safety.demand_range,
+                       .max_age = safety.demand_stale_periods * to_period(law.observer.sample_period)}),
       hal_(devices),
       telemetry_(telemetry),
       decimation_(telemetry_decimation > 0 ? static_cast<std::uint64_t>(telemetry_decimation) : 1u),
@@ -33,6 +36,9 @@ ControlLoop::ControlLoop(const control::ControlLawConfig& law, const control::Su
       current_tolerance_(safety.current_tolerance),
       readback_timeout_(safety.readback_timeout_periods * to_period(law.observer.sample_period)),
       require_readback_(safety.require_readback) {
+  if (law.mode == control::ControlMode::kForce && hal_.demand == nullptr) {
+    throw std::invalid_argument("control.mode = \"force\" needs a demand source");
+  }
   law_.hold(fail_safe_current_);
 }
 
@@ -63,6 +69,9 @@ const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
   // 1-2. The newest sample, judged.
   if (clear_requested_.exchange(false, std::memory_order_relaxed)) supervisor_.clear_latch(now);
   const control::SampleCheck check = checker_.check(hal_.lvdt.latest(), now);
+  const bool force_mode = law_.mode() == control::ControlMode::kForce;
+  const control::SampleCheck demand_check =
+      force_mode ? demand_checker_.check(hal_.demand->latest_demand(), now) : control::SampleCheck::kFresh;
   const std::optional<bool> fault = hal_.lines.driver_fault();
   const std::optional<hal::CurrentReading> measured = hal_.driver.measured();
   double coil = last_setpoint_;
@@ -82,6 +91,7 @@ const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
   const std::uint64_t recoveries = law_.observer().magnetics().recoveries();
   control::SupervisorDecision d = supervisor_.step(
       {.sample = check,
+       .demand = demand_check,
        .driver_fault = fault,
        .current_disagrees = disagrees,
        .setpoint_write_failed = write_failed_,
@@ -98,8 +108,10 @@ const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
 
   // 5. The compensated command, only while the law drives the coil, and only a finite one.
   control::ControlLaw::Command command{kNotComputed, kNotComputed};
+  // Force mode's demand: the last good one, held while demands are missing or bad.
+  const double demand = force_mode ? demand_checker_.held_value() : kNotComputed;
   if (d.in_control) {
-    command = law_.command();
+    command = law_.command(demand);
     if (!std::isfinite(command.current)) d = supervisor_.veto(control::Trigger::kCommandNotFinite, now);
   }
   if (!d.in_control) law_.hold(fail_safe_current_);
@@ -126,7 +138,12 @@ const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
                             static_cast<std::uint8_t>(d.trigger),
                             d.enable,
                             d.latched,
-                            recoveries};
+                            recoveries,
+                            demand,
+                            command.yield_force,
+                            static_cast<std::uint8_t>(demand_check),
+                            command.clipped,
+                            command.reached};
   if (telemetry_ != nullptr && cycles_ % decimation_ == 0) telemetry_->offer(record_);
   ++cycles_;
   return record_;

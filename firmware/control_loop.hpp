@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "control/control_law.hpp"
+#include "control/demand_check.hpp"
 #include "firmware/hal_devices.hpp"
 #include "control/sample_check.hpp"
 #include "control/supervisor.hpp"
@@ -16,8 +17,9 @@
 namespace mrd::firmware {
 
 // One control cycle:
-//   1. take the newest sample;            5. only while in control, compensate the command
-//   2. check freshness and range;            (otherwise the law holds the fail-safe current);
+//   1. take the newest sample (and, in     5. only while in control, compensate the command
+//      force mode, the newest demand);       (otherwise the law holds the fail-safe current);
+//   2. check freshness and range;
 //   3. apply the Table 4 schedule and     6. write the current setpoint and the lines;
 //      run the observer;                  7. push a telemetry record into the lock-free ring.
 //   4. let the supervisor decide;
@@ -27,6 +29,7 @@ namespace mrd::firmware {
 class ControlLoop {
  public:
   // The period is the control law's sample period. `telemetry` may be null (no telemetry).
+  // Force mode needs `devices.demand` (std::invalid_argument without it).
   ControlLoop(const control::ControlLawConfig& law, const control::SupervisorConfig& safety, HalDevices devices,
               runtime::TelemetryQueue* telemetry = nullptr, int telemetry_decimation = 1);
 
@@ -55,6 +58,7 @@ class ControlLoop {
   control::ControlLaw law_;
   control::Supervisor supervisor_;
   control::SampleChecker checker_;
+  control::DemandChecker demand_checker_;
   HalDevices hal_;
   runtime::TelemetryQueue* telemetry_;
   std::uint64_t decimation_;

@@ -82,7 +82,8 @@ int run_controller(const config::ControllerConfig& config, const RunOptions& opt
   std::unique_ptr<runtime::CsvTelemetryWriter> writer;
   if (config.telemetry.enabled()) {
     queue = std::make_unique<runtime::TelemetryQueue>(static_cast<std::size_t>(config.telemetry.ring_size));
-    writer = std::make_unique<runtime::CsvTelemetryWriter>(*queue, config.telemetry.flush_period);
+    writer = std::make_unique<runtime::CsvTelemetryWriter>(*queue, config.telemetry.flush_period,
+                                                           config.law.mode == control::ControlMode::kForce);
     if (const auto started = writer->start(config.telemetry); !started.ok) {
       journal.write(runtime::Priority::kErr, started.error);
       return 1;
@@ -97,9 +98,12 @@ int run_controller(const config::ControllerConfig& config, const RunOptions& opt
     feed.publish(loop.step(release));
   };
 
-  std::fprintf(out, "mrd-controller: %.0f Hz, lvdt=%s driver=%s lines=%s%s%s\n", config.rate,
+  const std::string mode = config.backends.demand
+                               ? ", force mode, demand=" + std::string(to_string(*config.backends.demand))
+                               : std::string();
+  std::fprintf(out, "mrd-controller: %.0f Hz, lvdt=%s driver=%s lines=%s%s%s%s\n", config.rate,
                to_string(config.backends.lvdt).data(), to_string(config.backends.driver).data(),
-               to_string(config.backends.lines).data(), mock.moves_lvdt() ? ", mock LVDT on the simulation sine" : "",
+               to_string(config.backends.lines).data(), mode.c_str(), mock.moves_lvdt() ? ", mock LVDT on the simulation sine" : "",
                writer ? (", telemetry " + writer->path()).c_str() : "");
 
   runtime::LoopStatistics stats;

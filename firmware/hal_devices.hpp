@@ -1,16 +1,18 @@
 #pragma once
 
 #include "hal/current_driver.hpp"
+#include "hal/demand_source.hpp"
 #include "hal/digital_lines.hpp"
 #include "hal/displacement_source.hpp"
 
 namespace mrd::firmware {
 
-// The three devices one control loop talks to, whichever back ends provide them.
+// The devices one control loop talks to, whichever back ends provide them.
 struct HalDevices {
   hal::DisplacementSource& lvdt;
   hal::CurrentDriver& driver;
   hal::DigitalLines& lines;
+  hal::DemandSource* demand = nullptr;  // the force demand; force mode needs it, table4 reads none
 };
 
 }  // namespace mrd::firmware

@@ -29,7 +29,7 @@ class HalSet {
   [[nodiscard]] hal::StartResult start();
   void stop();
 
-  [[nodiscard]] HalDevices devices() { return {*lvdt_, *driver_, *lines_}; }
+  [[nodiscard]] HalDevices devices() { return {*lvdt_, *driver_, *lines_, demand_}; }
   [[nodiscard]] hal::mock::MockHal* mock() { return mock_.get(); }
   // The bus back ends' I/O threads (after start()), for the real-time set-up.
   [[nodiscard]] std::vector<hal::IoThread*> io_threads();
@@ -47,6 +47,7 @@ class HalSet {
   hal::DisplacementSource* lvdt_ = nullptr;
   hal::CurrentDriver* driver_ = nullptr;
   hal::DigitalLines* lines_ = nullptr;
+  hal::DemandSource* demand_ = nullptr;  // force mode only
 };
 
 }  // namespace mrd::firmware

@@ -17,7 +17,7 @@ class MockDrive {
   MockDrive(const config::ControllerConfig& config, hal::mock::MockHal* mock) : mock_(mock) {
     if (mock_ != nullptr && config.backends.lvdt == config::DeviceBackend::kMock) {
       const auto& s = config.simulation;
-      motion_.emplace(s.amplitude, s.frequency, s.lvdt_noise, s.seed);
+      motion_.emplace(s.amplitude, s.frequency, s.lvdt_noise, s.seed, s.demand_damping);
     }
   }
 

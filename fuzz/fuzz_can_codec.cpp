@@ -1,6 +1,6 @@
 // libFuzzer target: the CAN frame decoder (hal/can/can_codec), rolling counter and CRC-8
 // included. The input is a stream of frames as a receiver would see them: per frame one
-// header byte (bits 0-1: LVDT, command or feedback decoder; bits 2-5: DLC 0-15; bit 6: a
+// header byte (bits 0-1: LVDT, command, feedback or force demand decoder; bits 2-5: DLC 0-15; bit 6: a
 // foreign id) and then DLC payload bytes. Each decoder keeps its own counter check across the
 // stream. A frame that carries values must be 8 bytes with a good checksum, its values finite,
 // and encoding them again must give back the same payload.
@@ -55,6 +55,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   RollingCounterCheck lvdt_counter;
   RollingCounterCheck command_counter;
   RollingCounterCheck feedback_counter;
+  RollingCounterCheck demand_counter;
   std::span<const std::uint8_t> rest(data, size);
   while (!rest.empty()) {
     const std::uint8_t header = rest[0];
@@ -72,9 +73,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         check_frame(decode_command, encode_command, kDefaultCommandId, command_counter, payload,
                     foreign, 2, 2, &CurrentCommandFrame::setpoint);
         break;
-      default:
+      case 2:
         check_frame(decode_feedback, encode_feedback, kDefaultFeedbackId, feedback_counter, payload,
                     foreign, 2, 2, &CurrentFeedbackFrame::measured);
+        break;
+      default:
+        check_frame(decode_demand, encode_demand, kDefaultDemandId, demand_counter, payload, foreign, 4, 4,
+                    &ForceDemandFrame::demand);
         break;
     }
   }

@@ -4,27 +4,11 @@
 #include <optional>
 
 #include "hal/clock.hpp"
+#include "hal/sample.hpp"
 
 namespace mrd::hal {
 
-// Bit flags a back end sets on a sample. A sample without kSampleValid must not be used.
-enum SampleFlag : std::uint8_t {
-  kSampleValid = 1u << 0,
-  kSampleCorrupted = 1u << 1,    // checksum, decode or sensor-status failure; value is unusable
-  kSampleSequenceGap = 1u << 2,  // one or more frames were lost before this one (value is usable)
-  kSampleSensorFault = 1u << 3,  // the sensor itself reports the value unusable
-};
-
-struct DisplacementSample {
-  double value = 0.0;         // m
-  Timestamp timestamp{};      // when the back end received it, on the loop's clock
-  std::uint32_t sequence = 0; // +1 per sample the back end produced; repeats mean a stale sample
-  std::uint8_t flags = 0;     // SampleFlag bits
-
-  [[nodiscard]] bool usable() const {
-    return (flags & kSampleValid) != 0 && (flags & (kSampleCorrupted | kSampleSensorFault)) == 0;
-  }
-};
+using DisplacementSample = Sample;  // value [m]
 
 // The LVDT. Hot path: no throw, no allocation.
 class DisplacementSource {

@@ -15,25 +15,46 @@
 
 namespace mrd::runtime {
 
-const char* CsvTelemetryWriter::header() {
-  return "cycle,time_s,displacement_mm,sample,measured_current_A,scheduled_current_A,"
-         "law_current_A,setpoint_A,target_B_T,B_T,velocity_mm_s,force_kN,state,trigger,overruns,"
-         "enable,latched,recoveries\n";
+namespace {
+#define MRD_TELEMETRY_COLUMNS                                                                    \
+  "cycle,time_s,displacement_mm,sample,measured_current_A,scheduled_current_A,"                  \
+  "law_current_A,setpoint_A,target_B_T,B_T,velocity_mm_s,force_kN,state,trigger,overruns,"       \
+  "enable,latched,recoveries"
+constexpr const char* kHeader = MRD_TELEMETRY_COLUMNS "\n";
+// Force mode: the demand the law used, Eq. 12's yield force at its target, the demand's check,
+// and the inverse's flags (docs/FORCE-CONTROL.md).
+constexpr const char* kForceHeader = MRD_TELEMETRY_COLUMNS ",demand_N,yield_force_N,demand,clipped,reached\n";
+#undef MRD_TELEMETRY_COLUMNS
+
+// The force columns after the line `format` wrote (its '\n' replaced).
+int append_force_columns(const TelemetryRecord& r, char* buf, std::size_t size, int length) {
+  if (length <= 0 || static_cast<std::size_t>(length) >= size) return length;
+  const auto check = to_string(static_cast<control::SampleCheck>(r.demand_check));
+  const int more = std::snprintf(buf + length - 1, size - static_cast<std::size_t>(length) + 1,
+                                 ",%.6g,%.6g,%.*s,%d,%d\n", r.demand, r.yield_force,
+                                 static_cast<int>(check.size()), check.data(), r.clipped ? 1 : 0,
+                                 r.reached ? 1 : 0);
+  return more < 0 ? more : length - 1 + more;
 }
+}  // namespace
+
+const char* CsvTelemetryWriter::header() { return kHeader; }
+const char* CsvTelemetryWriter::force_header() { return kForceHeader; }
 
 int CsvTelemetryWriter::format(const TelemetryRecord& r, hal::Timestamp start, char* buf,
-                               std::size_t size) {
+                               std::size_t size, bool force_columns) {
   const double t = std::chrono::duration<double>(r.time - start).count();
   const auto sample = to_string(static_cast<control::SampleCheck>(r.sample));
   const auto state = to_string(static_cast<control::SupervisorState>(r.state));
   const auto trigger = to_string(static_cast<control::Trigger>(r.trigger));
-  return std::snprintf(buf, size, "%llu,%.6f,%.4f,%.*s,%.5g,%.4g,%.5g,%.5g,%.5g,%.5g,%.5g,%.5g,%.*s,%.*s,%u,%d,%d,%llu\n",
+  const int length = std::snprintf(buf, size, "%llu,%.6f,%.4f,%.*s,%.5g,%.4g,%.5g,%.5g,%.5g,%.5g,%.5g,%.5g,%.*s,%.*s,%u,%d,%d,%llu\n",
                        static_cast<unsigned long long>(r.cycle), t, r.displacement * 1e3,
                        static_cast<int>(sample.size()), sample.data(), r.measured_current,
                        r.scheduled_current, r.law_current, r.setpoint, r.target_B, r.B,
                        r.velocity * 1e3, r.force * 1e-3, static_cast<int>(state.size()),
                        state.data(), static_cast<int>(trigger.size()), trigger.data(), r.overruns,
                        r.enable ? 1 : 0, r.latched ? 1 : 0, static_cast<unsigned long long>(r.recoveries));
+  return force_columns ? append_force_columns(r, buf, size, length) : length;
 }
 
 std::string CsvTelemetryWriter::run_file(const std::string& path, unsigned n) {
@@ -109,7 +130,8 @@ hal::StartResult CsvTelemetryWriter::start(const std::string& path) {
 }
 
 hal::StartResult CsvTelemetryWriter::start_thread() {
-  write_line(header(), std::strlen(header()));
+  const char* columns = force_columns_ ? force_header() : header();
+  write_line(columns, std::strlen(columns));
   const auto pause = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
       std::chrono::duration<double>(flush_period_s_));
   thread_.start("mrd-telemetry", [this, pause] {
@@ -131,7 +153,7 @@ void CsvTelemetryWriter::drain_once() {
   std::uint64_t capped = 0;
   queue_.drain([&](const TelemetryRecord& r) {
     if (!start_) start_ = r.time;
-    const int len = format(r, *start_, line, sizeof line);
+    const int len = format(r, *start_, line, sizeof line, force_columns_);
     if (len > 0 && write_line(line, std::min(static_cast<std::size_t>(len), sizeof line - 1))) {
       ++written;
     } else {

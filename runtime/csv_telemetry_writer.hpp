@@ -18,8 +18,9 @@ namespace mrd::runtime {
 // writes CSV. It may block on the disk; the loop never waits for it.
 class CsvTelemetryWriter {
  public:
-  CsvTelemetryWriter(TelemetryQueue& queue, double flush_period_s)
-      : queue_(queue), flush_period_s_(flush_period_s) {}
+  // `force_columns`: force mode's columns after the others (table4 files are unchanged).
+  CsvTelemetryWriter(TelemetryQueue& queue, double flush_period_s, bool force_columns = false)
+      : queue_(queue), flush_period_s_(flush_period_s), force_columns_(force_columns) {}
   ~CsvTelemetryWriter() { stop(); }
   CsvTelemetryWriter(const CsvTelemetryWriter&) = delete;
   CsvTelemetryWriter& operator=(const CsvTelemetryWriter&) = delete;
@@ -41,8 +42,10 @@ class CsvTelemetryWriter {
   // written; read it after stop(). Another process on the same host joins its log by it.
   [[nodiscard]] std::optional<hal::Timestamp> start_time() const { return start_; }
   static const char* header();
+  static const char* force_header();  // header() with force mode's columns
   // One CSV line (with '\n') into buf, time counted from `start`; returns the length.
-  static int format(const TelemetryRecord& r, hal::Timestamp start, char* buf, std::size_t size);
+  static int format(const TelemetryRecord& r, hal::Timestamp start, char* buf, std::size_t size,
+                    bool force_columns = false);
   // The file a run numbered `n` writes for `path`: "dir/run.csv" -> "dir/run-0007.csv".
   static std::string run_file(const std::string& path, unsigned n);
 
@@ -54,6 +57,7 @@ class CsvTelemetryWriter {
 
   TelemetryQueue& queue_;
   double flush_period_s_;
+  bool force_columns_;
   std::FILE* file_ = nullptr;
   std::optional<hal::Timestamp> start_;  // the first record's time: the CSV's t = 0
   std::string path_;

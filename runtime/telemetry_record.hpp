@@ -26,6 +26,12 @@ struct TelemetryRecord {
   bool enable = false;
   bool latched = false;            // SAFE holds until an operator clears it
   std::uint64_t recoveries = 0;    // the observer's J-A recoveries since start
+  // Force mode (NaN, fresh and false in table4 mode):
+  double demand = 0.0;             // the demand the law used (the last good one) [N]
+  double yield_force = 0.0;        // Eq. 12 at the law's target_B [N]; NaN when not in control
+  std::uint8_t demand_check = 0;   // SampleCheck of this period's demand
+  bool clipped = false;            // the demand pushed with the motion or lay beyond the range
+  bool reached = false;            // the inverse's J-A search met its tolerance
 };
 
 }  // namespace mrd::runtime

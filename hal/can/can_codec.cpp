@@ -14,6 +14,7 @@ constexpr std::size_t kCounterByte = 6;
 constexpr std::size_t kChecksumByte = 7;
 constexpr double kMetresPerCount = 1e-6;  // DBC: 0.001 mm
 constexpr double kAmpsPerCount = 1e-3;    // DBC: 1 mA
+constexpr double kNewtonsPerCount = 0.1;  // DBC: 0.1 N
 
 // Id, DLC, checksum, then counter: the order a receiver can trust each field in.
 DecodeStatus open_frame(std::uint32_t id, std::span<const std::uint8_t> data,
@@ -55,7 +56,7 @@ EncodeStatus write_le(double si, double unit, Frame& f) {
 
 // Every frame is {scaled integer in bytes 0.., a flag bit, the counter}; only the integer's
 // width, its unit and the flag's byte differ. Out is LvdtFrame, CurrentCommandFrame or
-// CurrentFeedbackFrame, all {double, bool, counter}.
+// CurrentFeedbackFrame or ForceDemandFrame, all {double, bool, counter}.
 template <typename Int, typename Out>
 Decoded<Out> decode_payload(std::uint32_t id, std::span<const std::uint8_t> data,
                             std::uint32_t expected_id, RollingCounterCheck* counter, double unit,
@@ -134,6 +135,12 @@ Decoded<CurrentFeedbackFrame> decode_feedback(std::uint32_t id, std::span<const 
                                                             kAmpsPerCount, kFlagByte);
 }
 
+Decoded<ForceDemandFrame> decode_demand(std::uint32_t id, std::span<const std::uint8_t> data,
+                                        std::uint32_t expected_id, RollingCounterCheck* counter) {
+  return decode_payload<std::int32_t, ForceDemandFrame>(id, data, expected_id, counter, kNewtonsPerCount,
+                                                        kLvdtFlagByte);
+}
+
 Encoded encode_lvdt(std::uint32_t id, const LvdtFrame& f) {
   return encode_payload<std::int32_t>(id, f.displacement, f.sensor_fault, f.counter,
                                       kMetresPerCount, kLvdtFlagByte);
@@ -147,6 +154,10 @@ Encoded encode_command(std::uint32_t id, const CurrentCommandFrame& f) {
 Encoded encode_feedback(std::uint32_t id, const CurrentFeedbackFrame& f) {
   return encode_payload<std::int16_t>(id, f.measured, f.driver_fault, f.counter, kAmpsPerCount,
                                       kFlagByte);
+}
+
+Encoded encode_demand(std::uint32_t id, const ForceDemandFrame& f) {
+  return encode_payload<std::int32_t>(id, f.demand, f.invalid, f.counter, kNewtonsPerCount, kLvdtFlagByte);
 }
 
 }  // namespace mrd::hal::can

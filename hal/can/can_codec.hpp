@@ -15,6 +15,7 @@ namespace mrd::hal::can {
 inline constexpr std::uint32_t kDefaultLvdtId = 0x110;
 inline constexpr std::uint32_t kDefaultCommandId = 0x210;
 inline constexpr std::uint32_t kDefaultFeedbackId = 0x211;
+inline constexpr std::uint32_t kDefaultDemandId = 0x120;  // force mode's demand
 inline constexpr std::size_t kFrameLength = 8;
 
 // CRC-8 SAE J1850: polynomial 0x1D, init 0xFF, no reflection, final XOR 0xFF.
@@ -66,6 +67,13 @@ struct CurrentFeedbackFrame {
   std::uint8_t counter = 0;
 };
 
+// Force mode: the force the outer controller demands (docs/FORCE-CONTROL.md).
+struct ForceDemandFrame {
+  double demand = 0.0;   // N (the wire carries 0.1 N)
+  bool invalid = false;  // the outer controller says its demand is unusable
+  std::uint8_t counter = 0;
+};
+
 template <typename T>
 struct Decoded {
   DecodeStatus status = DecodeStatus::kOk;
@@ -85,6 +93,8 @@ struct Decoded {
                                                             std::span<const std::uint8_t> data,
                                                             std::uint32_t expected_id,
                                                             RollingCounterCheck* counter);
+[[nodiscard]] Decoded<ForceDemandFrame> decode_demand(std::uint32_t id, std::span<const std::uint8_t> data,
+                                                      std::uint32_t expected_id, RollingCounterCheck* counter);
 
 enum class EncodeStatus : std::uint8_t { kOk, kNotFinite, kOutOfRange };
 struct Encoded {
@@ -95,5 +105,6 @@ struct Encoded {
 [[nodiscard]] Encoded encode_lvdt(std::uint32_t id, const LvdtFrame& f);
 [[nodiscard]] Encoded encode_command(std::uint32_t id, const CurrentCommandFrame& f);
 [[nodiscard]] Encoded encode_feedback(std::uint32_t id, const CurrentFeedbackFrame& f);
+[[nodiscard]] Encoded encode_demand(std::uint32_t id, const ForceDemandFrame& f);
 
 }  // namespace mrd::hal::can

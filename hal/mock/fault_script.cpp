@@ -24,6 +24,10 @@ std::string_view to_string(FaultKind k) {
     case FaultKind::kHeartbeatWriteFails: return "heartbeat_write_fails";
     case FaultKind::kDisplacementJump: return "displacement_jump";
     case FaultKind::kFutureTimestamp: return "future_timestamp";
+    case FaultKind::kDemandMissing: return "demand_missing";
+    case FaultKind::kDemandStale: return "demand_stale";
+    case FaultKind::kDemandNotFinite: return "demand_not_finite";
+    case FaultKind::kDemandOutOfRange: return "demand_out_of_range";
     case FaultKind::kCount: break;
   }
   return "unknown";

@@ -29,6 +29,11 @@ enum class FaultKind : std::uint8_t {
   kDisplacementJump,   // value += parameter [m] on every other sample from the first, flagged
                        // valid: a sensor jumping back and forth (one sample long: a spike)
   kFutureTimestamp,    // the sample's timestamp is parameter [s] ahead of the clock
+  // The force demand (force mode), as the LVDT's faults above:
+  kDemandMissing,      // no demand at all
+  kDemandStale,        // the previous demand again: same value, timestamp and sequence
+  kDemandNotFinite,    // value NaN, flagged valid
+  kDemandOutOfRange,   // value = parameter [N], flagged valid
   kCount
 };
 [[nodiscard]] std::string_view to_string(FaultKind k);

@@ -3,6 +3,7 @@
 #include "hal/clock.hpp"
 #include "hal/mock/fault_script.hpp"
 #include "hal/mock/mock_current_driver.hpp"
+#include "hal/mock/mock_demand_source.hpp"
 #include "hal/mock/mock_digital_lines.hpp"
 #include "hal/mock/mock_displacement_source.hpp"
 
@@ -21,6 +22,7 @@ struct MockHal {
   MockDisplacementSource lvdt{clock, script};
   MockCurrentDriver driver{clock, script};
   MockDigitalLines lines{clock, script};
+  MockDemandSource demand{clock, script};  // force mode
 };
 
 }  // namespace mrd::hal::mock

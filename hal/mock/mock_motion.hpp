@@ -17,21 +17,28 @@ namespace mrd::hal::mock {
 // the damper's physics, its buses and its faults are mrd-plant's (sim/). Allocation-free.
 class MockMotion {
  public:
-  MockMotion(double amplitude, double frequency, double noise_rms, std::uint32_t seed)
-      : amplitude_(amplitude), frequency_(frequency), rng_(seed), noise_(0.0, noise_rms) {}
+  // `demand_damping` [N s/m]: the mock demand asks for that coefficient times the motion's
+  // velocity, a dissipative demand for force mode (a number, not physics: hal knows none).
+  MockMotion(double amplitude, double frequency, double noise_rms, std::uint32_t seed, double demand_damping = 0.0)
+      : amplitude_(amplitude), frequency_(frequency), demand_damping_(demand_damping), rng_(seed),
+        noise_(0.0, noise_rms) {}
 
-  // Before each cycle: the mock clock to `now`, the LVDT to the motion at `now`.
+  // Before each cycle: the mock clock to `now`, the LVDT to the motion at `now`, the demand to
+  // c v at `now`.
   void advance(MockHal& hal, Timestamp now) {
     if (!start_) start_ = now;
     hal.clock.set(now);
     const double t = std::chrono::duration<double>(now - *start_).count();
     const double noise = noise_.stddev() > 0.0 ? noise_(rng_) : 0.0;
-    hal.lvdt.set_truth(amplitude_ * std::sin(2.0 * std::numbers::pi * frequency_ * t) + noise);
+    const double w = 2.0 * std::numbers::pi * frequency_;
+    hal.lvdt.set_truth(amplitude_ * std::sin(w * t) + noise);
+    hal.demand.set_demand(demand_damping_ * amplitude_ * w * std::cos(w * t));
   }
 
  private:
   double amplitude_;  // [m]
   double frequency_;  // [Hz]
+  double demand_damping_;  // [N s/m]
   std::optional<Timestamp> start_;
   std::mt19937_64 rng_;
   std::normal_distribution<double> noise_;

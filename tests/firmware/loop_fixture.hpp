@@ -13,24 +13,30 @@
 namespace mrd::test {
 
 // A ControlLoop on the MockHal, one cycle per call, time driven by hand. The LVDT follows a
-// 0.5 Hz, +-30 mm sine, so the schedule, observer and compensator all work every cycle.
+// 0.5 Hz, +-30 mm sine, so the schedule, observer and compensator all work every cycle; the
+// force demand (force mode) is kDemandDamping times the sine's velocity.
 class LoopRig {
  public:
   static constexpr hal::Timestamp kPeriod = std::chrono::milliseconds{1};
+  static constexpr double kDemandDamping = 250e3;  // [N s/m]
 
   explicit LoopRig(hal::mock::FaultScript script = {}, control::SupervisorConfig safety = {},
                    runtime::TelemetryQueue* telemetry = nullptr, const control::ControlLawConfig& law = {})
       : hal_(std::make_unique<hal::mock::MockHal>(std::move(script))),
         loop_(std::make_unique<firmware::ControlLoop>(
             law, safety,
-            firmware::HalDevices{hal_->lvdt, hal_->driver, hal_->lines}, telemetry)) {}
+            firmware::HalDevices{hal_->lvdt, hal_->driver, hal_->lines, &hal_->demand}, telemetry)) {}
 
   // Runs cycle number `cycle_` at its release time; `skip` periods are lost before it.
   control::SupervisorState step(std::int64_t skip = 0) {
     cycle_ += skip;
     const hal::Timestamp now = hal::mock::cycle_time(cycle_, kPeriod);
     hal_->clock.set(now);
-    hal_->lvdt.set_truth(0.030 * std::sin(2.0 * std::numbers::pi * 0.5 * std::chrono::duration<double>(now).count()));
+    const double w = 2.0 * std::numbers::pi * 0.5;
+    const double t = std::chrono::duration<double>(now).count();
+    hal_->lvdt.set_truth(0.030 * std::sin(w * t));
+    // Force mode's demand: a dissipative c v on the same motion (read in force mode only).
+    hal_->demand.set_demand(demand_damping_ * 0.030 * w * std::cos(w * t));
     loop_->step(now);
     ++cycle_;
     return loop_->state();
@@ -46,6 +52,8 @@ class LoopRig {
     while (cycle_ < cycle) step();
   }
 
+  // The demand's coefficient from the next cycle on; negative asks the damper to push.
+  void set_demand_damping(double c) { demand_damping_ = c; }
   [[nodiscard]] std::int64_t cycle() const { return cycle_; }  // the next cycle to run
   hal::mock::MockHal& hal() { return *hal_; }
   firmware::ControlLoop& loop() { return *loop_; }
@@ -54,11 +62,19 @@ class LoopRig {
   std::unique_ptr<hal::mock::MockHal> hal_;
   std::unique_ptr<firmware::ControlLoop> loop_;
   std::int64_t cycle_ = 0;
+  double demand_damping_ = kDemandDamping;
 };
 
 // A fault scripted over cycles kFaultStart..kFaultEnd and the loop's reaction to it, in
 // control periods (the "reaction" column of docs/FIRMWARE.md's transition table).
 inline const control::SupervisorConfig kLimits{};  // the documented defaults
+
+// The default law in force mode.
+inline control::ControlLawConfig force_law() {
+  control::ControlLawConfig law;
+  law.mode = control::ControlMode::kForce;
+  return law;
+}
 constexpr std::int64_t kFaultStart = 1000;
 constexpr std::int64_t kFaultEnd = 1050;
 

@@ -113,3 +113,37 @@ TEST(RealTime, ANonFiniteCommandsVetoDoesNotAllocate) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(RealTime, ForceModeCycleDoesNotAllocateOnAnyDemandFaultPath) {
+  // The force-mode law every period in RUN, and each demand fault through DEGRADED, SAFE and
+  // recovery, with telemetry into the ring.
+  FaultScript script;
+  std::int64_t at = 1000;
+  for (auto [kind, parameter] : {std::pair{FaultKind::kDemandMissing, 0.0}, std::pair{FaultKind::kDemandStale, 0.0},
+                                 std::pair{FaultKind::kDemandNotFinite, 0.0},
+                                 std::pair{FaultKind::kDemandOutOfRange, 1e6}}) {
+    script.add({kind, cycle_time(at, LoopRig::kPeriod), cycle_time(at + 400, LoopRig::kPeriod), parameter});
+    at += 1000;
+  }
+  mrd::runtime::TelemetryQueue telemetry(1024);
+  LoopRig rig(script, {}, &telemetry, mrd::test::force_law());
+  for (int i = 0; i < 10; ++i) rig.step();
+  std::uint64_t drained = 0;
+  mrd::test::start_counting_allocations();
+  for (int i = 10; i < 6000; ++i) {
+    rig.step();
+    if (i % 512 == 0) drained += telemetry.drain([](const mrd::runtime::TelemetryRecord&) {});
+  }
+  EXPECT_EQ(mrd::test::stop_counting_allocations(), 0u);
+  const auto& t = rig.loop().supervisor().transitions();
+  using mrd::control::Trigger;
+  EXPECT_EQ(t.get(SupervisorState::kDegraded, SupervisorState::kSafe, Trigger::kDemandStale), 2u);
+  EXPECT_EQ(t.get(SupervisorState::kDegraded, SupervisorState::kSafe, Trigger::kDemandNotFinite), 1u);
+  EXPECT_EQ(t.get(SupervisorState::kDegraded, SupervisorState::kSafe, Trigger::kDemandOutOfRange), 1u);
+  EXPECT_EQ(t.into(SupervisorState::kRun), 5u) << "start-up and after each fault";
+  EXPECT_GT(drained, 5000u);
+}
+
+}  // namespace

@@ -162,3 +162,27 @@ TEST_F(TelemetryFiles, WithoutPerRunThePathItselfIsWritten) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(TelemetryForceColumns, ForceModeAppendsItsColumnsAndTable4LinesAreUnchanged) {
+  mrd::runtime::TelemetryRecord r{};
+  r.demand = 12345.0;
+  r.yield_force = 9876.5;
+  r.demand_check = static_cast<std::uint8_t>(mrd::control::SampleCheck::kStale);
+  r.clipped = true;
+  r.reached = false;
+  char table4[512];
+  char force[512];
+  const int n4 = mrd::runtime::CsvTelemetryWriter::format(r, {}, table4, sizeof table4);
+  const int nf = mrd::runtime::CsvTelemetryWriter::format(r, {}, force, sizeof force, true);
+  ASSERT_GT(n4, 0);
+  const std::string base(table4, static_cast<std::size_t>(n4));
+  const std::string line(force, static_cast<std::size_t>(nf));
+  EXPECT_EQ(line, base.substr(0, base.size() - 1) + ",12345,9876.5,stale,1,0\n");
+  const std::string header = mrd::runtime::CsvTelemetryWriter::header();
+  EXPECT_EQ(std::string(mrd::runtime::CsvTelemetryWriter::force_header()),
+            header.substr(0, header.size() - 1) + ",demand_N,yield_force_N,demand,clipped,reached\n");
+}
+
+}  // namespace

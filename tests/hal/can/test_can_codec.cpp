@@ -66,6 +66,45 @@ TEST(CanCodec, CurrentFramesRoundTripInAmps) {
   EXPECT_TRUE(df.value.driver_fault);
 }
 
+TEST(CanCodec, ForceDemandFrameRoundTripsInNewtons) {
+  const auto e = encode_demand(kDefaultDemandId, {-31415.93, false, 7});
+  ASSERT_EQ(e.status, EncodeStatus::kOk);
+  const auto d = decode_demand(e.frame.id, payload(e.frame), kDefaultDemandId, nullptr);
+  ASSERT_EQ(d.status, DecodeStatus::kOk);
+  EXPECT_NEAR(d.value.demand, -31415.9, 1e-9);  // rounded to 0.1 N
+  EXPECT_FALSE(d.value.invalid);
+  EXPECT_EQ(d.value.counter, 7);
+  // Little-endian 0.1 N on the wire: -314159 = 0xFFFB34D1.
+  EXPECT_EQ(e.frame.data[0], 0xD1);
+  EXPECT_EQ(e.frame.data[1], 0x34);
+  EXPECT_EQ(e.frame.data[2], 0xFB);
+  EXPECT_EQ(e.frame.data[3], 0xFF);
+  EXPECT_EQ(encode_demand(kDefaultDemandId, {1.0, true, 0}).frame.data[4], 1) << "the invalid flag";
+  EXPECT_EQ(encode_demand(kDefaultDemandId, {std::nan(""), false, 0}).status, EncodeStatus::kNotFinite);
+  EXPECT_EQ(encode_demand(kDefaultDemandId, {3e8, false, 0}).status, EncodeStatus::kOutOfRange);
+}
+
+TEST(CanCodec, ABadDemandFrameIsNeverUsed) {
+  RollingCounterCheck counter;
+  const auto first = encode_demand(kDefaultDemandId, {1000.0, false, 3}).frame;
+  ASSERT_EQ(decode_demand(kDefaultDemandId, payload(first), kDefaultDemandId, &counter).status, DecodeStatus::kOk);
+  EXPECT_EQ(decode_demand(kDefaultDemandId, payload(first), kDefaultDemandId, &counter).status,
+            DecodeStatus::kRepeatedCounter)
+      << "the same frame again is a stale demand";
+  const auto next = encode_demand(kDefaultDemandId, {1100.0, false, 4}).frame;
+  EXPECT_EQ(decode_demand(kDefaultDemandId, payload(next).first(6), kDefaultDemandId, &counter).status,
+            DecodeStatus::kWrongDlc);
+  Frame flipped = next;
+  flipped.data[2] ^= 0x10;
+  EXPECT_EQ(decode_demand(kDefaultDemandId, payload(flipped), kDefaultDemandId, &counter).status,
+            DecodeStatus::kBadChecksum);
+  EXPECT_EQ(decode_demand(kDefaultLvdtId, payload(next), kDefaultDemandId, &counter).status, DecodeStatus::kWrongId);
+  const auto skipped = encode_demand(kDefaultDemandId, {1200.0, false, 6}).frame;
+  EXPECT_EQ(decode_demand(kDefaultDemandId, payload(skipped), kDefaultDemandId, &counter).status,
+            DecodeStatus::kOutOfSequence)
+      << "frame 4 never got through: counter 6 after 3 is a gap (its value is still good)";
+}
+
 TEST(CanCodec, EncodeRefusesWhatTheSignalCannotCarry) {
   EXPECT_EQ(encode_command(kDefaultCommandId, {40.0, false, 0}).status, EncodeStatus::kOutOfRange);
   EXPECT_EQ(encode_command(kDefaultCommandId, {std::nan(""), false, 0}).status,
@@ -127,6 +166,8 @@ TEST(CanCodec, EveryWrongChecksumIsRejectedForEveryMessage) {
         decode_command, kDefaultCommandId);
   check("feedback", [](std::uint32_t id, std::uint8_t n) { return encode_feedback(id, {-0.75, true, n}); },
         decode_feedback, kDefaultFeedbackId);
+  check("demand", [](std::uint32_t id, std::uint8_t n) { return encode_demand(id, {-12345.6, true, n}); },
+        decode_demand, kDefaultDemandId);
 }
 
 // What a CRC-8 adds over a weaker checksum (an XOR or a sum of the bytes catches every single-bit

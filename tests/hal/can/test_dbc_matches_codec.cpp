@@ -61,7 +61,7 @@ class DbcMatchesCodec : public ::testing::Test {
  protected:
   void SetUp() override {
     dbc = load_dbc();
-    ASSERT_EQ(dbc.size(), 3u) << "hal/can/mrd.dbc not found or not parsed";
+    ASSERT_EQ(dbc.size(), 4u) << "hal/can/mrd.dbc not found or not parsed";
     for (const auto& [id, message] : dbc) {
       EXPECT_EQ(message.dlc, static_cast<int>(kFrameLength));
       for (const auto& [name, s] : message.signals) EXPECT_TRUE(s.little_endian) << name;
@@ -78,6 +78,15 @@ TEST_F(DbcMatchesCodec, LvdtFrame) {
   EXPECT_NEAR(physical(f, sig.at("Displacement")), -12.345, 1e-9);  // mm
   EXPECT_EQ(physical(f, sig.at("SensorFault")), 1.0);
   EXPECT_EQ(physical(f, sig.at("RollingCounter")), 9.0);
+  EXPECT_EQ(physical(f, sig.at("Checksum")), f.data[7]);
+}
+
+TEST_F(DbcMatchesCodec, ForceDemandFrame) {
+  const Frame f = encode_demand(kDefaultDemandId, {-31415.9, true, 14}).frame;
+  const auto& sig = dbc.at(kDefaultDemandId).signals;
+  EXPECT_NEAR(physical(f, sig.at("Demand")), -31415.9, 1e-6);  // N
+  EXPECT_EQ(physical(f, sig.at("DemandInvalid")), 1.0);
+  EXPECT_EQ(physical(f, sig.at("RollingCounter")), 14.0);
   EXPECT_EQ(physical(f, sig.at("Checksum")), f.data[7]);
 }
 

@@ -1,0 +1,45 @@
+// The whole force-mode law of one control cycle (issue 18's goal: under 2 us): the demand's
+// check, the observer (ControlLaw::observe, with the Table 4 schedule it runs in every mode) and
+// ControlLaw::command, the inverse and the slew limit. The loop's I/O and supervisor are not in
+// it. docs/PERFORMANCE.md has the figures.
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+#include "control/control_law.hpp"
+#include "control/demand_check.hpp"
+
+namespace {
+
+constexpr double kPeriod = 1e-3;
+constexpr double kAmplitude = 0.040;                    // [m], Table 4's motion
+constexpr double kOmega = 2.0 * std::numbers::pi * 0.5;  // [rad/s]
+
+void run_control_law(benchmark::State& state, mrd::control::ControlMode mode) {
+  mrd::control::ControlLawConfig config;
+  config.mode = mode;
+  config.limits.min_current = -config.limits.max_current;  // bipolar, as in docs/FORCE-CONTROL.md
+  mrd::control::ControlLaw law(config);
+  mrd::control::DemandChecker demands({.range = 60e3, .max_age = std::chrono::milliseconds{5}});
+  double coil = 0.0;
+  std::uint32_t i = 0;
+  for (auto _ : state) {
+    const double t = i * kPeriod;
+    const auto now = std::chrono::duration_cast<mrd::hal::Timestamp>(std::chrono::duration<double>(t));
+    const mrd::hal::DemandSample demand{250e3 * kAmplitude * kOmega * std::cos(kOmega * t), now, ++i,
+                                        mrd::hal::kSampleValid};
+    benchmark::DoNotOptimize(demands.check(demand, now));
+    law.observe({.displacement = kAmplitude * std::sin(kOmega * t),
+                 .timing = mrd::model::SampleTiming{true, kPeriod, 0.0},
+                 .coil_current = coil});
+    coil = law.command(demands.held_value()).current;
+    benchmark::DoNotOptimize(coil);
+  }
+}
+
+void BM_ForceModeLawCycle(benchmark::State& state) { run_control_law(state, mrd::control::ControlMode::kForce); }
+BENCHMARK(BM_ForceModeLawCycle);
+
+}  // namespace
