@@ -147,6 +147,7 @@ TEST(Identification, SameSeedSameResult) {
   EXPECT_EQ(a.search.evaluations, b.search.evaluations);
 }
 
+#ifdef MRD_HAVE_PAGMO
 TEST(Identification, PagmoPeersRunOnTheSameBudget) {
   const BHCurve curve = synthetic_loop(kSteel, 5000.0, 200);
   const BHObjective objective(curve);
@@ -160,6 +161,7 @@ TEST(Identification, PagmoPeersRunOnTheSameBudget) {
     EXPECT_LT(r.fit.rmse, objective.rms_B()) << algorithm_name(algorithm);
   }
 }
+#endif
 
 TEST(Identification, FitOfMeasuredFerriteBeatsTheAuthorsPublishedFit) {
   const BHCurve curve =
