@@ -59,7 +59,6 @@ set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "${CMAKE_PROJECT_NAME} built using CMake")
 set(CPACK_PACKAGE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/packages)
 set(CPACK_PACKAGING_INSTALL_PREFIX ${CMAKE_INSTALL_PREFIX})
 set(CPACK_SET_DESTDIR ON)  # the config and the unit install to absolute paths
-set(CPACK_STRIP_FILES ON)
 set(CPACK_DEB_COMPONENT_INSTALL ON)
 set(CPACK_COMPONENTS_ALL ${mrd_components})
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
@@ -71,10 +70,17 @@ set(CPACK_DEBIAN_PACKAGE_SECTION misc)
 set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION TRUE)
-# A -dbgsym package beside each (the detached debug information, by build id) where the tree is
-# compiled with -g: the arm64 preset, the box's build. The release tree is not (compile time).
+# A -dbgsym package (.ddeb) beside each, with the debug information detached by build id, where
+# the tree is compiled with -g: the arm64 preset, the box's build (the release tree is not, for its
+# compile time). CPack then strips the programs itself; CPACK_STRIP_FILES would strip them before
+# the debug information is taken out, so it is set only without -g.
 if(CMAKE_CXX_FLAGS MATCHES "(^| )-g[0-9]?( |$)")
   set(CPACK_DEBIAN_DEBUGINFO_PACKAGE ON)
+  # The target's binutils: the host's objcopy cannot read an arm64 ELF file.
+  set(CPACK_OBJCOPY_EXECUTABLE ${CMAKE_OBJCOPY})
+  set(CPACK_READELF_EXECUTABLE ${CMAKE_READELF})
+else()
+  set(CPACK_STRIP_FILES ON)
 endif()
 
 set(CPACK_DEBIAN_CONTROLLER_PACKAGE_NAME mrd-controller)
