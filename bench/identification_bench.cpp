@@ -30,10 +30,12 @@ void run_identification(benchmark::State& state, Algorithm algorithm) {
 
 void BM_IdentifyImprovedPso(benchmark::State& s) { run_identification(s, Algorithm::kImprovedPso); }
 void BM_IdentifyPso(benchmark::State& s) { run_identification(s, Algorithm::kPso); }
+#ifdef MRD_HAVE_PAGMO  // the reference peers, where pagmo2 was found
 void BM_IdentifyPagmoPso(benchmark::State& s) { run_identification(s, Algorithm::kPagmoPso); }
 void BM_IdentifyPagmoDe(benchmark::State& s) { run_identification(s, Algorithm::kPagmoDe); }
 void BM_IdentifyPagmoSade(benchmark::State& s) { run_identification(s, Algorithm::kPagmoSade); }
 void BM_IdentifyPagmoCmaes(benchmark::State& s) { run_identification(s, Algorithm::kPagmoCmaes); }
+#endif
 
 // One evaluation of Eq. 15 at the true parameters: 1,000 points plus the pre-cycle.
 void BM_BHObjectiveEvaluation(benchmark::State& state) {
@@ -47,9 +49,11 @@ void BM_BHObjectiveEvaluation(benchmark::State& state) {
 BENCHMARK(BM_BHObjectiveEvaluation);
 BENCHMARK(BM_IdentifyImprovedPso)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_IdentifyPso)->Unit(benchmark::kMillisecond)->UseRealTime();
+#ifdef MRD_HAVE_PAGMO
 BENCHMARK(BM_IdentifyPagmoPso)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_IdentifyPagmoDe)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_IdentifyPagmoSade)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_IdentifyPagmoCmaes)->Unit(benchmark::kMillisecond)->UseRealTime();
+#endif
 
 }  // namespace

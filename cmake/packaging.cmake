@@ -30,6 +30,11 @@ foreach(component package IN ZIP_LISTS mrd_components mrd_packages)
   install(FILES ${mrd_deb_dir}/copyright ${mrd_changelog_gz}
           DESTINATION ${CMAKE_INSTALL_DATAROOTDIR}/doc/${package} COMPONENT ${component})
 endforeach()
+# The documentation (README.md, docs/ with its figures) goes with the tools.
+install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DATAROOTDIR}/doc/mrd-tools
+        COMPONENT tools)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DATAROOTDIR}/doc/mrd-tools/docs
+        COMPONENT tools)
 
 # dpkg marks the config a conffile: an upgrade keeps local edits (and asks if both changed).
 file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/packaging/conffiles "${CMAKE_INSTALL_FULL_SYSCONFDIR}/mrd/mrd.toml\n")
@@ -54,7 +59,6 @@ set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "${CMAKE_PROJECT_NAME} built using CMake")
 set(CPACK_PACKAGE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/packages)
 set(CPACK_PACKAGING_INSTALL_PREFIX ${CMAKE_INSTALL_PREFIX})
 set(CPACK_SET_DESTDIR ON)  # the config and the unit install to absolute paths
-set(CPACK_STRIP_FILES ON)
 set(CPACK_DEB_COMPONENT_INSTALL ON)
 set(CPACK_COMPONENTS_ALL ${mrd_components})
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
@@ -66,6 +70,18 @@ set(CPACK_DEBIAN_PACKAGE_SECTION misc)
 set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION TRUE)
+# A -dbgsym package (.ddeb) beside each, with the debug information detached by build id, where
+# the tree is compiled with -g: the arm64 preset, the box's build (the release tree is not, for its
+# compile time). CPack then strips the programs itself; CPACK_STRIP_FILES would strip them before
+# the debug information is taken out, so it is set only without -g.
+if(CMAKE_CXX_FLAGS MATCHES "(^| )-g[0-9]?( |$)")
+  set(CPACK_DEBIAN_DEBUGINFO_PACKAGE ON)
+  # The target's binutils: the host's objcopy cannot read an arm64 ELF file.
+  set(CPACK_OBJCOPY_EXECUTABLE ${CMAKE_OBJCOPY})
+  set(CPACK_READELF_EXECUTABLE ${CMAKE_READELF})
+else()
+  set(CPACK_STRIP_FILES ON)
+endif()
 
 set(CPACK_DEBIAN_CONTROLLER_PACKAGE_NAME mrd-controller)
 set(CPACK_DEBIAN_CONTROLLER_PACKAGE_DEPENDS adduser)  # postinst; dpkg-shlibdeps adds the libraries
@@ -85,11 +101,16 @@ set(CPACK_DEBIAN_TOOLS_PACKAGE_NAME mrd-tools)
 set(CPACK_DEBIAN_TOOLS_PACKAGE_RECOMMENDS gnuplot-nox)  # the tools' --plot options
 set(CPACK_COMPONENT_TOOLS_DESCRIPTION
     "host tools for the mrd magnetorheological damper controller
-Programs that check and tune the controller away from the box:
-mrd-table4-run, mrd-ja-scan, mrd-identify (Jiles-Atherton parameters
-from measured B-H loops, where built), mrd-replay (recorded runs through
-the controller's observer and control law), mrd-simulate-run (runs
-from the simulated damper) and mrd-force-run (force-control strategies
-compared on the simulated damper, where built).")
+Programs that check and tune the controller away from the box, each
+with its manual page: mrd-table4-run (the paper's Table 4 test on the
+simulated damper), mrd-ja-scan (where a Jiles-Atherton parameter set is
+physical), mrd-identify (Jiles-Atherton parameters from measured B-H
+loops), mrd-replay (recorded runs through the controller's observer and
+control law), mrd-residual (the damper model fitted to recorded runs,
+the residual traced to missing effects), mrd-simulate-run (runs from
+the simulated damper), mrd-force-run (force-control strategies compared
+on the simulated damper), mrd-plant (the simulated rig on the controller's
+buses) and mrd-hil-report (a hardware-in-the-loop run in one page).
+The project's documentation is in /usr/share/doc/mrd-tools.")
 
 include(CPack)

@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "common/cli/exit_code.hpp"
 #include "firmware/control_loop.hpp"
 #include "firmware/hal_set.hpp"
 #include "firmware/mock_drive.hpp"
@@ -74,7 +75,7 @@ int run_controller(const config::ControllerConfig& config, const RunOptions& opt
     std::string error = "cannot start the back ends:\n" + started.error;
     while (error.ends_with('\n')) error.pop_back();
     journal.write(runtime::Priority::kErr, error);
-    return 1;
+    return cli::kIo;
   }
   const std::vector<hal::IoThread*> io_threads = hal.io_threads();
 
@@ -86,7 +87,7 @@ int run_controller(const config::ControllerConfig& config, const RunOptions& opt
                                                            config.law.mode == control::ControlMode::kForce);
     if (const auto started = writer->start(config.telemetry); !started.ok) {
       journal.write(runtime::Priority::kErr, started.error);
-      return 1;
+      return cli::kIo;
     }
   }
 

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <string>
 
+#include "common/cli/command_line.hpp"
 #include "config/config_loader.hpp"
 #include "firmware/controller.hpp"
 #include "firmware/probe.hpp"
@@ -19,9 +20,9 @@ int print_report(const mrd::config::LoadedConfig& loaded, const std::string& nam
   std::fputs(loaded.report().c_str(), loaded.ok() ? stdout : stderr);
   if (!loaded.ok()) {
     std::fprintf(stderr, "%s: %zu error(s)\n", name.c_str(), loaded.errors.size());
-    return 1;
+    return mrd::cli::kUsage;
   }
-  return 0;
+  return mrd::cli::kOk;
 }
 
 // Modbus TCP to another host needs the network up before the service starts; the unit does not
@@ -42,6 +43,7 @@ void note_network(const mrd::config::ControllerConfig& config) {
 
 int main(int argc, char** argv) {
   CLI::App app{"mrd-controller: real-time MR damper controller (default: the mock HAL)"};
+  mrd::cli::set_up(app, "mrd-controller");
   std::string config_path;
   std::string check_path;
   std::string telemetry_path;
@@ -62,14 +64,14 @@ int main(int argc, char** argv) {
   app.add_flag("--print-default-config", print_default, "print the embedded default config and exit");
   app.add_flag("--probe", probe,
                "commissioning: open the configured buses with the driver held off (enable low, no setpoint "
-               "written), print decoded LVDT and current readings for 1 s, exit 0 (ok), 1 (a bus cannot "
-               "start) or 2 (readings wrong, each problem printed)");
-  CLI11_PARSE(app, argc, argv);
+               "written), print decoded LVDT and current readings for 1 s, exit 0 (ok), 2 (readings "
+               "wrong, each problem printed) or 3 (a bus cannot start)");
+  if (const auto status = mrd::cli::parse(app, argc, argv)) return *status;
 
   if (print_default) {
     std::fwrite(mrd::config::default_config_text().data(), 1,
                 mrd::config::default_config_text().size(), stdout);
-    return 0;
+    return mrd::cli::kOk;
   }
   if (!check_path.empty()) {
     const auto loaded = mrd::config::load_config_file(check_path);
@@ -83,7 +85,7 @@ int main(int argc, char** argv) {
 
   auto loaded = config_path.empty() ? mrd::config::load_default_config()
                                     : mrd::config::load_config_file(config_path);
-  if (print_report(loaded, config_path.empty() ? "embedded config" : config_path) != 0) return 1;
+  if (print_report(loaded, config_path.empty() ? "embedded config" : config_path) != 0) return mrd::cli::kUsage;
 
   auto config = loaded.config;
   if (rate > 0.0) config.rate = rate;
@@ -100,7 +102,7 @@ int main(int argc, char** argv) {
     config.telemetry.path.clear();
   }
   const auto checked = mrd::config::revalidate(config, "command line");
-  if (print_report(checked, "command line") != 0) return 1;
+  if (print_report(checked, "command line") != 0) return mrd::cli::kUsage;
   if (probe) return mrd::firmware::run_probe(checked.config, {}, stdout);
 
   // The loop, bus and telemetry threads inherit a mask without the signals, so only the main

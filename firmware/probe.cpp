@@ -7,6 +7,7 @@
 #include <cinttypes>
 #include <cmath>
 
+#include "common/cli/exit_code.hpp"
 #include "firmware/hal_set.hpp"
 #include "firmware/mock_drive.hpp"
 
@@ -151,7 +152,7 @@ int run_probe(const config::ControllerConfig& config, const ProbeOptions& option
   HalSet hal(config, clock);
   if (const auto started = hal.start(); !started.ok) {
     std::fprintf(out, "%sprobe: FAIL: the back ends could not start (above)\n", started.error.c_str());
-    return 1;
+    return cli::kIo;
   }
   Probe probe(hal.devices(), ProbeExpectations::from(config));
   MockDrive mock(config, hal.mock());
@@ -173,13 +174,13 @@ int run_probe(const config::ControllerConfig& config, const ProbeOptions& option
   const std::string problems = probe.problems();
   if (problems.empty()) {
     std::fputs("probe: OK\n", out);
-    return 0;
+    return cli::kOk;
   }
   std::size_t from = 0;
   for (std::size_t end; (end = problems.find('\n', from)) != std::string::npos; from = end + 1) {
     std::fprintf(out, "probe: FAIL: %s\n", problems.substr(from, end - from).c_str());
   }
-  return 2;
+  return cli::kBadInput;  // the readings are wrong
 }
 
 }  // namespace mrd::firmware

@@ -18,6 +18,7 @@ packages=(
   qemu-system-x86 linux-headers-amd64 can-utils gpiod
   clang-14 libclang-rt-14-dev  # libFuzzer targets (the fuzz preset, scripts/fuzz.sh)
   lintian
+  help2man  # the man pages, written at build time from each program's --help
   time  # /usr/bin/time for tools/residual/time-long-run.sh
 )
 # The arm64 cross-build's packages: scripts/setup-cross-arm64.sh (scripts/test.sh runs it).

@@ -7,7 +7,7 @@
 #    the Table 4 sine at 0.5 Hz for 6 s. It prints the controller's loop statistics and
 #    supervisor transitions, then mrd-hil-report joins the controller's telemetry with the
 #    plant's log: the observer's force error against the plant's true force, and
-#    out/hil_force_displacement.png (the paper's Fig. 14). docs/HIL.md explains it all.
+#    out/hil/force_displacement.png (the paper's Fig. 14). docs/HIL.md explains it all.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
@@ -37,4 +37,4 @@ echo
 t0() { sed -n 's/.*time_s 0 is CLOCK_MONOTONIC \([0-9.]*\) s.*/\1/p' "$1"; }
 ./$B/tools/hil/mrd-hil-report --telemetry out/hil_telemetry.csv --plant out/hil_plant.csv \
   --controller-t0 "$(t0 out/hil_controller.out)" --plant-t0 "$(t0 out/hil_plant.out)" \
-  --plot out/hil_force_displacement.png
+  --plot out/hil

@@ -6,7 +6,7 @@
 # Header-only libraries without an architecture (Eigen, CLI11) come from install-deps.sh. toml++
 # ships a library and a .pc file per architecture, so it needs its :arm64 package too.
 # libpagmo-dev has no Multi-Arch field: its :arm64 package would replace the host's, so the arm64
-# build leaves the identification out (MRD_BUILD_IDENTIFICATION=OFF in the arm64 preset).
+# build has mrd-identify and mrd-residual without the pagmo-* reference peers (tools/CMakeLists.txt).
 set -euo pipefail
 export DEBIAN_FRONTEND=noninteractive
 

@@ -57,6 +57,16 @@ check "unit in /lib/systemd/system" bash -c "dpkg-deb -c '$controller_deb' | gre
 check "udev rule for /dev/cpu_dma_latency" bash -c "dpkg-deb -c '$controller_deb' | grep -q ' ./lib/udev/rules.d/60-mrd-cpu-dma-latency.rules$'"
 check "networkd file for can0" bash -c "dpkg-deb -c '$controller_deb' | grep -q ' ./lib/systemd/network/80-mrd-can0.network$'"
 check "example configs" bash -c "dpkg-deb -c '$controller_deb' | grep -q ' ./usr/share/doc/mrd-controller/examples/can-box.toml$'"
+# Every program of a package has its man page beside it (help2man, at build time).
+for deb in "$controller_deb" "$tools_deb"; do
+  for program in $(dpkg-deb -c "$deb" | sed -n 's|.* \./usr/bin/\(mrd-[a-z0-9-]*\)$|\1|p'); do
+    check "man page of $program" bash -c "dpkg-deb -c '$deb' | grep -q ' ./usr/share/man/man1/$program.1.gz$'"
+  done
+done
+for program in mrd-plant mrd-hil-report mrd-identify mrd-residual; do
+  check "mrd-tools ships $program" bash -c "dpkg-deb -c '$tools_deb' | grep -q ' ./usr/bin/$program$'"
+done
+check "mrd-tools ships the docs" bash -c "dpkg-deb -c '$tools_deb' | grep -q ' ./usr/share/doc/mrd-tools/docs/DEPLOY.md$'"
 
 if [[ $(id -u) -ne 0 ]]; then
   echo "test-package: the install checks need root; only the package files were checked"
@@ -74,6 +84,9 @@ check "service user mrd, no login" bash -c "getent passwd mrd | grep -q ':/nonex
 check "installed mrd-controller accepts the installed config" /usr/bin/mrd-controller --check-config "$config"
 check "mrd-controller runs the simulated rig for 0.2 s" /usr/bin/mrd-controller --duration 0.2
 check "mrd-replay starts" /usr/bin/mrd-replay --help
+check "every installed program answers --version" bash -c \
+  "for p in \$(dpkg -L mrd-controller mrd-tools | grep '^/usr/bin/mrd-'); do \$p --version | grep -q \"^\${p##*/} \" || exit 1; done"
+check "man mrd-replay reads" bash -c "man -P cat mrd-replay 2>/dev/null | grep -q 'Exit status' || zcat /usr/share/man/man1/mrd-replay.1.gz | grep -q 'Exit status'"
 check "the installed example configs are accepted" bash -c \
   "for f in /usr/share/doc/mrd-controller/examples/*.toml; do /usr/bin/mrd-controller --check-config \$f || exit 1; done"
 check "unit is Type=notify with a watchdog" bash -c \

@@ -13,6 +13,8 @@
 #include <string_view>
 #include <vector>
 
+#include "common/cli/command_line.hpp"
+#include "common/cli/exit_code.hpp"
 #include "tools/force_run/controller_identification.hpp"
 #include "tools/force_run/force_run.hpp"
 #include "tools/gnuplot.hpp"
@@ -22,7 +24,6 @@ namespace {
 using mrd::tools::DemandProfile;
 using mrd::tools::ForceRunResult;
 
-constexpr int kExitOk = 0, kExitUsage = 1, kExitIo = 3;
 
 struct CaseRun {
   std::string name;
@@ -128,12 +129,9 @@ int main(int argc, char** argv) {
   app.add_option("--json", json_path, "write the figures as JSON to FILE");
   app.add_option("--out", out_dir, "folder for the CSV trace and the PNG plots (none without it)");
   app.add_flag("--no-plot", no_plot, "with --out, skip the PNGs");
-  app.footer("Exit codes: 0 ok, 1 usage or config, 2 bad input, 3 I/O.");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? kExitOk : kExitUsage;
-  }
+  mrd::cli::set_up(app, "mrd-force-run");
+  if (const auto status = mrd::cli::parse(app, argc, argv)) return *status;
+  if (!mrd::cli::prepare_output_directory("mrd-force-run", out_dir)) return mrd::cli::kIo;
 
   const double dt = 1e-3;
   const mrd::model::DamperModel plant = mrd::tools::with_coil_lag({}, coil_lag_ms * 1e-3);
@@ -141,7 +139,7 @@ int main(int argc, char** argv) {
   limits.min_current = -limits.max_current;  // bipolar: a unipolar driver cannot clear remanence
   if (const auto report = mrd::model::validate(plant); !report.ok()) {
     std::fprintf(stderr, "mrd-force-run: invalid plant\n%s", report.to_string().c_str());
-    return kExitUsage;
+    return mrd::cli::kUsage;
   }
 
   const mrd::tools::ProfileKind profile_kind =
@@ -212,7 +210,7 @@ int main(int argc, char** argv) {
     out << j.dump(2) << '\n';
     if (!out) {
       std::fprintf(stderr, "mrd-force-run: cannot write %s\n", json_path.c_str());
-      return kExitIo;
+      return mrd::cli::kIo;
     }
     std::printf("\nwrote %s\n", json_path.c_str());
   }
@@ -221,13 +219,13 @@ int main(int argc, char** argv) {
     std::filesystem::create_directories(out_dir, ec);
     if (ec) {
       std::fprintf(stderr, "mrd-force-run: cannot create %s: %s\n", out_dir.c_str(), ec.message().c_str());
-      return kExitIo;
+      return mrd::cli::kIo;
     }
     for (const auto& run : runs) {
       const std::string stem = out_dir + "/force_run_" + std::string(mrd::tools::profile_name(profile_kind)) + "_" + run.name;
       if (!write_trace(stem + ".csv", profile, run.result)) {
         std::fprintf(stderr, "mrd-force-run: cannot write %s.csv\n", stem.c_str());
-        return kExitIo;
+        return mrd::cli::kIo;
       }
       std::printf("wrote %s.csv\n", stem.c_str());
       if (no_plot) continue;
@@ -246,5 +244,5 @@ int main(int argc, char** argv) {
       }
     }
   }
-  return kExitOk;
+  return mrd::cli::kOk;
 }

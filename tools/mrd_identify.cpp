@@ -2,14 +2,17 @@
 // loops, by minimising the RMSE of B (Eq. 15). See docs/IDENTIFICATION.md.
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include "common/cli/command_line.hpp"
 #include "record/csv.hpp"
 #include "tools/identification/identification_study.hpp"
 #include "tools/identification/identify_report.hpp"
 #include "tools/identification/start_point.hpp"
 #include "tools/identification/synthetic_curve.hpp"
+#include "tools/terminal_progress.hpp"
 
 namespace {
 
@@ -59,20 +62,23 @@ void apply_bound(Bounds& bounds, const std::string& text) {
 bool write_file(const std::string& path, const std::string& text) {
   std::ofstream out(path);
   out << text;
+  out.close();
+  if (!out) std::fprintf(stderr, "mrd-identify: cannot write %s\n", path.c_str());
   return static_cast<bool>(out);
+}
+
+// A study's table into the --out folder, as NAME.md.
+bool write_table(const std::string& out_dir, const char* name, const std::string& table) {
+  return out_dir.empty() || write_file((std::filesystem::path(out_dir) / name).string() + ".md", table);
 }
 
 std::vector<Algorithm> parse_algorithms(const std::vector<std::string>& names) {
   std::vector<Algorithm> out;
-  for (const auto& n : names) {
-    const auto a = parse_algorithm(n);
-    if (!a) throw CLI::ValidationError("--algos", "unknown algorithm '" + n + "'");
-    out.push_back(*a);
-  }
+  for (const auto& n : names) out.push_back(*parse_algorithm(n));  // checked by IsMember
   return out;
 }
 
-int reproduce_paper(const StudyOptions& study, double table1_H_max, const std::string& out_path) {
+int reproduce_paper(const StudyOptions& study, double table1_H_max, const std::string& out_dir) {
   struct Case {
     const char* name;
     mrd::model::JilesAthertonParams truth;
@@ -100,11 +106,7 @@ int reproduce_paper(const StudyOptions& study, double table1_H_max, const std::s
            << sensitivity_markdown(sensitivity) << "\n";
   }
   std::fputs(report.str().c_str(), stdout);
-  if (!out_path.empty() && !write_file(out_path, report.str())) {
-    std::fprintf(stderr, "mrd-identify: cannot write %s\n", out_path.c_str());
-    return 1;
-  }
-  return 0;
+  return write_table(out_dir, "reproduce-paper", report.str()) ? mrd::cli::kOk : mrd::cli::kIo;
 }
 
 // Options every search shares: the budget, the seed, the threads and the improved PSO's constants.
@@ -169,12 +171,14 @@ struct CurveArguments {
 struct StudyArguments {
   int seeds = 20;
   std::vector<std::string> algo_names;
-  std::string out_path;
+  std::string out_dir;
 
-  void add_to(CLI::App& cmd) {
+  void add_to(CLI::App& cmd, const char* table_name) {
     cmd.add_option("--seeds", seeds, "seeds per algorithm")->check(CLI::Range(1, 1000))->capture_default_str();
-    cmd.add_option("--algos", algo_names, "algorithms to run (default: all)");
-    cmd.add_option("--out", out_path, "also write the table here (Markdown)");
+    cmd.add_option("--algos", algo_names, "algorithms to run, comma-separated (default: all)")
+        ->delimiter(',')
+        ->check(CLI::IsMember(algorithm_names()));
+    cmd.add_option("--out", out_dir, std::string("folder of results: the table as ") + table_name + ".md");
   }
   StudyOptions study(const IdentifyOptions& options) const {
     StudyOptions s;
@@ -193,12 +197,12 @@ struct FitArguments {
   std::string algo = "improved-pso", start_text, json_path, plot_dir;
   std::vector<std::string> bound_texts;
   bool polish = false;
+  bool quiet = false;
 };
 
 int run_fit(const FitArguments& args) {
   IdentifyOptions options = args.options;
   const auto algorithm = parse_algorithm(args.algo);
-  if (!algorithm) throw CLI::ValidationError("--algo", "unknown algorithm '" + args.algo + "'");
   options.algorithm = *algorithm;
   options.polish = args.polish;
   const BHCurve curve = args.curve.read();
@@ -212,12 +216,12 @@ int run_fit(const FitArguments& args) {
     for (const auto& b : args.bound_texts) apply_bound(bounds, b);
     options.bounds = bounds;
   }
+  auto progress = TerminalProgress::on_stderr(args.quiet);
+  options.progress = progress.get();
   const IdentifyResult result = identify(objective, curve, options);
+  progress.reset();  // ends the status line before the result
   std::fputs(identify_text(result, objective).c_str(), stdout);
-  if (!args.json_path.empty() && !write_file(args.json_path, identify_json(result))) {
-    std::fprintf(stderr, "mrd-identify: cannot write %s\n", args.json_path.c_str());
-    return 1;
-  }
+  if (!args.json_path.empty() && !write_file(args.json_path, identify_json(result))) return mrd::cli::kIo;
   if (!args.plot_dir.empty()) {
     const std::string why = plot_identification(result, objective, curve, args.plot_dir);
     if (!why.empty()) std::fprintf(stderr, "mrd-identify: plot skipped: %s\n", why.c_str());
@@ -236,7 +240,7 @@ int run_evaluate(const CurveArguments& curve_args, const std::string& parameter_
   return 0;
 }
 
-int run_compare(const CurveArguments& curve_args, const StudyOptions& study, const std::string& out_path) {
+int run_compare(const CurveArguments& curve_args, const StudyOptions& study, const std::string& out_dir) {
   const BHCurve curve = curve_args.read();
   const BHObjective objective(curve, curve_args.settings());
   const auto rows = measured_fit_study(curve, study);
@@ -245,8 +249,7 @@ int run_compare(const CurveArguments& curve_args, const StudyOptions& study, con
                 curve.loops.size(), objective.points(), objective.rms_B(), study.seeds);
   const std::string table = summary + fit_table_markdown(rows, objective.rms_B());
   std::fputs(table.c_str(), stdout);
-  if (!out_path.empty() && !write_file(out_path, table)) return 1;
-  return 0;
+  return write_table(out_dir, "compare", table) ? mrd::cli::kOk : mrd::cli::kIo;
 }
 
 struct SyntheticArguments {
@@ -264,28 +267,29 @@ int run_synthetic(const SyntheticArguments& args) {
   for (std::size_t i = 0; i < curve.loops[0].H.size(); ++i) {
     csv << curve.loops[0].H[i] << ',' << curve.loops[0].B[i] << '\n';
   }
-  if (write_file(args.path, csv.str())) return 0;
-  std::fprintf(stderr, "mrd-identify: cannot write %s\n", args.path.c_str());
-  return 1;
+  return write_file(args.path, csv.str()) ? mrd::cli::kOk : mrd::cli::kIo;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"Identify Jiles-Atherton parameters from measured B-H loops (Eq. 15)"};
+  mrd::cli::set_up(app, "mrd-identify");
   app.require_subcommand(1);
 
   FitArguments fit;
   auto* fit_cmd = app.add_subcommand("fit", "fit Ms, a, alpha, k, c to the loops of a file");
   fit.curve.add_to(*fit_cmd);
   add_search_options(*fit_cmd, fit.options);
-  fit_cmd->add_option("--algo", fit.algo, "pso | improved-pso | pagmo-pso | pagmo-de | pagmo-sade | pagmo-cmaes")
+  fit_cmd->add_option("--algo", fit.algo, "the search")
+      ->check(CLI::IsMember(algorithm_names()))
       ->capture_default_str();
   fit_cmd->add_option("--start", fit.start_text, "start point Ms,a,alpha,k,c (default: estimated from the loops)");
   fit_cmd->add_option("--bounds", fit.bound_texts, "name=lo:hi, repeatable (default: +-100% of the start)");
   fit_cmd->add_flag("--polish", fit.polish, "refine with Levenberg-Marquardt after the global search");
+  fit_cmd->add_flag("--quiet,-q", fit.quiet, "no progress line on stderr (it shows only when stderr is a terminal)");
   fit_cmd->add_option("--json", fit.json_path, "write the result as JSON");
-  fit_cmd->add_option("--plot", fit.plot_dir, "write the B-H overlay and convergence PNGs here");
+  fit_cmd->add_option("--plot", fit.plot_dir, "folder for the B-H overlay and convergence PNGs");
 
   CurveArguments evaluate_curve;
   std::string evaluate_text;
@@ -299,14 +303,14 @@ int main(int argc, char** argv) {
   auto* compare_cmd = app.add_subcommand("compare", "run every algorithm over several seeds on a file");
   compare_curve.add_to(*compare_cmd);
   add_search_options(*compare_cmd, compare_options);
-  compare_study.add_to(*compare_cmd);
+  compare_study.add_to(*compare_cmd, "compare");
 
   IdentifyOptions paper_options;
   StudyArguments paper_study;
   double table1_H_max = 60.0;
   auto* paper_cmd = app.add_subcommand("reproduce-paper", "Section 4.1 protocol on two known sets, all algorithms");
   add_search_options(*paper_cmd, paper_options);
-  paper_study.add_to(*paper_cmd);
+  paper_study.add_to(*paper_cmd, "reproduce-paper");
   paper_cmd->add_option("--table1-amplitude", table1_H_max,
                         "loop amplitude for the Table 1 set [A/m]; physical up to ~81")
       ->check(CLI::Range(1.0, 1e6))->capture_default_str();
@@ -319,17 +323,22 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   synthetic_cmd->add_option("--points", synthetic.points, "points on the loop")->capture_default_str();
 
-  CLI11_PARSE(app, argc, argv);
+  if (const auto status = mrd::cli::parse(app, argc, argv)) return *status;
+  // Every folder of results exists and is writable before the work starts.
+  for (const std::string* dir : {&fit.plot_dir, &compare_study.out_dir, &paper_study.out_dir}) {
+    if (!dir->empty() && !mrd::cli::prepare_output_directory("mrd-identify", *dir)) return mrd::cli::kIo;
+  }
   try {
     if (*fit_cmd) return run_fit(fit);
     if (*evaluate_cmd) return run_evaluate(evaluate_curve, evaluate_text);
-    if (*compare_cmd) return run_compare(compare_curve, compare_study.study(compare_options), compare_study.out_path);
-    if (*paper_cmd) return reproduce_paper(paper_study.study(paper_options), table1_H_max, paper_study.out_path);
+    if (*compare_cmd) return run_compare(compare_curve, compare_study.study(compare_options), compare_study.out_dir);
+    if (*paper_cmd) return reproduce_paper(paper_study.study(paper_options), table1_H_max, paper_study.out_dir);
     return run_synthetic(synthetic);
-  } catch (const CLI::Error& e) {
-    return app.exit(e);
+  } catch (const CLI::Error& e) {  // a value checked after parsing (--start, --bounds, ...)
+    app.exit(e);
+    return mrd::cli::kUsage;
   } catch (const mrd::record::InputError& e) {
     std::fprintf(stderr, "mrd-identify: %s\n", e.what());
-    return 2;
+    return mrd::cli::kBadInput;
   }
 }

@@ -5,10 +5,12 @@
 #include <cmath>
 #include <cstdio>
 
+#include "common/cli/command_line.hpp"
 #include "tools/loop_scan.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"Scan J-A major loops over field amplitude"};
+  mrd::cli::set_up(app, "mrd-ja-scan");
   mrd::model::JilesAthertonParams p;
   double H_from = 1.0, H_to = 1e5;
   int points = 41;
@@ -28,13 +30,13 @@ int main(int argc, char** argv) {
   app.add_flag("--integrator-error", integrator,
                "print RK4 and Heun error against a 100x finer RK4 reference with the exact "
                "Langevin function, and what the tabulated Langevin function changes, then exit");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto status = mrd::cli::parse(app, argc, argv)) return *status;
   if (table1) p = {1.3e6, 25.3, 8.43e-5, 66.6, 0.2};
   const auto report = mrd::model::validate(p);
   std::fputs(report.to_string().c_str(), stderr);
   if (!report.ok() || !(H_from > 0.0) || !(H_to > H_from)) {
     std::fprintf(stderr, "mrd-ja-scan: invalid parameters or range\n");
-    return 2;
+    return mrd::cli::kUsage;
   }
 
   if (integrator) {

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <ctime>
 
+#include "common/cli/command_line.hpp"
 #include "config/config_loader.hpp"
 #include "record/csv.hpp"
 #include "record/candump_log.hpp"
@@ -29,6 +30,7 @@ double thread_cpu_seconds() {
 
 int main(int argc, char** argv) {
   CLI::App app{"Replay a recorded damper run through the controller's observer and compensator"};
+  mrd::cli::set_up(app, "mrd-replay");
   std::string run_path, plot_dir, csv_path, json_path, candump_path;
   ReplayOptions replay_options;
   app.add_option(
@@ -46,16 +48,17 @@ int main(int argc, char** argv) {
       "offline: the velocity from a zero-phase filter of the displacement at this cutoff [Hz] "
       "(0: from the motion's spectrum), as mrd-residual uses, instead of the controller's causal filter");
   app.add_option("--plot", plot_dir,
-                 "write the force-displacement, residual and current PNGs here");
+                 "folder for the force-displacement, residual and current PNGs");
   app.add_option("--csv", csv_path, "write the per-sample replay as CSV");
   app.add_option("--json", json_path, "write the figures as JSON");
   app.add_option("--write-candump", candump_path,
                  "also write the run as a candump -l log (LVDT and current feedback frames; "
                  "canplayer can send it onto a bus)");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto status = mrd::cli::parse(app, argc, argv)) return *status;
 
   const auto config = run_options.load_config();
-  if (!config) return 1;
+  if (!config) return mrd::cli::kUsage;
+  if (!plot_dir.empty() && !mrd::cli::prepare_output_directory("mrd-replay", plot_dir)) return mrd::cli::kIo;
   replay_options.law = config->config.law;
   try {
     const mrd::record::RunReadOptions read = run_options.read_options(*config);
@@ -66,7 +69,7 @@ int main(int argc, char** argv) {
     if (!candump_path.empty() &&
         !mrd::record::write_text_file(candump_path, mrd::record::format_candump(run, replay_options.amps_per_volt, read.can))) {
       std::fprintf(stderr, "mrd-replay: cannot write %s\n", candump_path.c_str());
-      return 1;
+      return mrd::cli::kIo;
     }
     const auto start = std::chrono::steady_clock::now();
     const double cpu_start = thread_cpu_seconds();
@@ -79,12 +82,12 @@ int main(int argc, char** argv) {
     int status = 0;
     if (!json_path.empty() && !mrd::record::write_text_file(json_path, replay_json(context))) {
       std::fprintf(stderr, "mrd-replay: cannot write %s\n", json_path.c_str());
-      status = 1;
+      status = mrd::cli::kIo;
     }
     if (!csv_path.empty()) {
       if (const auto why = write_replay_csv(context, csv_path); !why.empty()) {
         std::fprintf(stderr, "mrd-replay: %s\n", why.c_str());
-        status = 1;
+        status = mrd::cli::kIo;
       }
     }
     if (!plot_dir.empty()) {
@@ -95,6 +98,6 @@ int main(int argc, char** argv) {
     return status;
   } catch (const mrd::record::InputError& e) {
     std::fprintf(stderr, "mrd-replay: %s\n", e.what());
-    return 2;
+    return mrd::cli::kBadInput;
   }
 }

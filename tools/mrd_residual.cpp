@@ -4,8 +4,8 @@
 // See docs/CLOSING-THE-LOOP.md, "mrd-residual".
 #include <CLI/CLI.hpp>
 #include <cstdio>
-#include <sstream>
 
+#include "common/cli/command_line.hpp"
 #include "config/config_loader.hpp"
 #include "record/csv.hpp"
 #include "tools/replay/run_options_cli.hpp"
@@ -13,16 +13,17 @@
 #include "tools/residual/residual_report.hpp"
 #include "tools/residual/residual_search.hpp"
 #include "tools/residual/spencer_reference.hpp"
+#include "tools/terminal_progress.hpp"
 
 namespace {
 
 using namespace mrd::tools;
 
-std::vector<std::string> split_names(const std::string& text) {
+// The effects --candidates accepts, listed in --help.
+std::vector<std::string> candidate_names() {
   std::vector<std::string> names;
-  std::stringstream in(text);
-  for (std::string name; std::getline(in, name, ',');)
-    if (!name.empty()) names.push_back(name);
+  for (const mrd::model::EffectInfo& e : mrd::model::effect_infos())
+    if (e.named_candidate) names.emplace_back(e.name);
   return names;
 }
 
@@ -30,8 +31,9 @@ std::vector<std::string> split_names(const std::string& text) {
 
 int main(int argc, char** argv) {
   CLI::App app{"Fit the damper model to a recorded run, trace the residual to missing effects, add them"};
+  mrd::cli::set_up(app, "mrd-residual");
   std::vector<std::string> run_paths;
-  std::string json_path, plot_dir, config_out, candidates_text;
+  std::string json_path, plot_dir, config_out;
   FitSeriesOptions series_options;
   ResidualOptions options;
   app.add_option("runs", run_paths,
@@ -41,12 +43,14 @@ int main(int argc, char** argv) {
   run_options.add_to(app);
   app.add_option("--json", json_path, "write the result as JSON");
   app.add_option("--write-config", config_out, "write the updated config (the fitted damper, accepted effects on)");
-  app.add_option("--plot", plot_dir, "write force-displacement, residual-time and residual-phase PNGs here");
+  app.add_option("--plot", plot_dir, "folder for the force-displacement, residual-time and residual-phase PNGs");
   bool spencer = false;
   app.add_flag("--reference-spencer-dyke", spencer,
                "also report Spencer 1997's modified Bouc-Wen model with its published parameters for "
                "Dyke's prototype damper (runs that logged the command voltage)");
-  app.add_option("--candidates", candidates_text, "comma-separated candidate effects (default: all)");
+  app.add_option("--candidates", options.candidates, "candidate effects, comma-separated (default: all)")
+      ->delimiter(',')
+      ->check(CLI::IsMember(candidate_names()));
   bool no_screening = false;
   app.add_flag("--no-screening", no_screening,
                "fit every sample, even those screening finds no damper produced (clipped, stuck, spikes, gaps)");
@@ -63,32 +67,33 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--threads", options.threads, "worker threads (0: every core)")->capture_default_str();
   app.add_option("--seed", options.seed, "seed of the swarms")->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  bool quiet = false;
+  app.add_flag("--quiet,-q", quiet, "no progress line on stderr (it shows only when stderr is a terminal)");
+  if (const auto status = mrd::cli::parse(app, argc, argv)) return *status;
   options.discover = !no_discovery;
   series_options.screen = !no_screening;
 
   const auto config = run_options.load_config();
-  if (!config) return 1;
-  options.start = config->config.law.damper;
-  options.candidates = split_names(candidates_text);
-  for (const auto& name : options.candidates) {
-    const mrd::model::EffectInfo* effect = mrd::model::find_effect(name);
-    if (effect == nullptr || !effect->named_candidate) {
-      std::fprintf(stderr, "mrd-residual: --candidates: unknown effect '%s'\n", name.c_str());
-      return 1;
-    }
+  if (!config) return mrd::cli::kUsage;
+  if (spencer && run_paths.size() != 1) {
+    std::fprintf(stderr, "mrd-residual: --reference-spencer-dyke takes one run\n");
+    return mrd::cli::kUsage;
   }
+  if (!plot_dir.empty() && !mrd::cli::prepare_output_directory("mrd-residual", plot_dir)) return mrd::cli::kIo;
+  options.start = config->config.law.damper;
   try {
     const mrd::record::RunReadOptions read = run_options.read_options(*config);
     series_options.amps_per_volt = run_options.amps_per_volt();
     std::vector<mrd::record::RecordedRun> runs;
     for (const auto& path : run_paths) runs.push_back(mrd::record::read_recorded_run(path, read));
     const FitSeries series = make_fit_series(runs, series_options);
+    auto progress = TerminalProgress::on_stderr(quiet);
+    options.progress = progress.get();
     const ResidualResult result = find_missing_effects(series, options);
+    progress.reset();  // ends the status line before the summary
 
     std::fputs(residual_summary(runs, result).c_str(), stdout);
     if (spencer) {
-      if (runs.size() != 1) throw mrd::record::InputError("--reference-spencer-dyke takes one run");
       const ForceError s = spencer_dyke_reference(runs.front(), series);
       const ForceError ours = force_error(series.force, result.predicted_after);
       std::printf("reference, Spencer 1997 (published parameters): RMS %.4g N, max %.4g N, NRMSE %.4g; "
@@ -98,7 +103,7 @@ int main(int argc, char** argv) {
     int status = 0;
     if (!json_path.empty() && !mrd::record::write_text_file(json_path, residual_json(result))) {
       std::fprintf(stderr, "mrd-residual: cannot write %s\n", json_path.c_str());
-      status = 1;
+      status = mrd::cli::kIo;
     }
     if (!config_out.empty()) {
       const std::string text = run_options.config_path().empty()
@@ -106,7 +111,7 @@ int main(int argc, char** argv) {
                                    : mrd::record::read_text_file(run_options.config_path());
       if (!mrd::record::write_text_file(config_out, updated_config(text, result))) {
         std::fprintf(stderr, "mrd-residual: cannot write %s\n", config_out.c_str());
-        status = 1;
+        status = mrd::cli::kIo;
       }
     }
     if (!plot_dir.empty()) {
@@ -117,6 +122,6 @@ int main(int argc, char** argv) {
     return status;
   } catch (const mrd::record::InputError& e) {
     std::fprintf(stderr, "mrd-residual: %s\n", e.what());
-    return 2;
+    return mrd::cli::kBadInput;
   }
 }

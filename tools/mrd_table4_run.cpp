@@ -3,10 +3,10 @@
 // force-displacement plot like the paper's Figure 14.
 #include <CLI/CLI.hpp>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "common/cli/command_line.hpp"
 #include "tools/gnuplot.hpp"
 #include "tools/table4_run.hpp"
 
@@ -14,7 +14,7 @@ namespace {
 
 using mrd::tools::Table4RunResult;
 
-void write_trace(const std::string& path, const Table4RunResult& off, const Table4RunResult& on) {
+bool write_trace(const std::string& path, const Table4RunResult& off, const Table4RunResult& on) {
   std::ofstream out(path);
   out << "time_s,displacement_mm,scheduled_current_A,command_current_A,target_B_T,B_T,force_kN,"
          "intended_force_kN,observer_force_kN,compensated_command_A,compensated_B_T,"
@@ -27,6 +27,8 @@ void write_trace(const std::string& path, const Table4RunResult& off, const Tabl
         << a.intended_force * 1e-3 << ',' << b.observer_force * 1e-3 << ',' << b.command_current
         << ',' << b.B << ',' << b.force * 1e-3 << '\n';
   }
+  out.close();
+  return static_cast<bool>(out);
 }
 
 std::string plot_script(const std::string& csv, const std::string& png, double first_cycle_s) {
@@ -52,6 +54,7 @@ std::string plot_script(const std::string& csv, const std::string& png, double f
 
 int main(int argc, char** argv) {
   CLI::App app{"Simulated Table 4 run through the observer and the hysteresis compensator"};
+  mrd::cli::set_up(app, "mrd-table4-run");
   mrd::tools::Table4RunOptions options;
   double amplitude_mm = 40.0;
   double rate_hz = 1000.0;
@@ -68,11 +71,11 @@ int main(int argc, char** argv) {
   double lvdt_noise_um = 5.0;
   app.add_option("--lvdt-noise-um", lvdt_noise_um, "LVDT noise RMS [um]")
       ->check(CLI::Range(0.0, 1000.0))->capture_default_str();
-  app.add_option("--out", out_dir, "output folder for the CSV and the plot")->capture_default_str();
-  app.add_flag("--no-plot", no_plot, "skip the PNG");
+  app.add_option("--out", out_dir, "folder of results: table4_run.csv and the plot")->capture_default_str();
+  app.add_flag("--no-plot", no_plot, "skip the PNG (it goes into --out)");
   bool bipolar = false;
   app.add_flag("--bipolar", bipolar, "a driver that can also push negative current (-Imax..Imax)");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto status = mrd::cli::parse(app, argc, argv)) return *status;
   options.lvdt_noise_rms = lvdt_noise_um * 1e-6;
 
   options.profile.amplitude = amplitude_mm * 1e-3;
@@ -81,8 +84,9 @@ int main(int argc, char** argv) {
   const auto report = mrd::control::validate(options.controller);
   if (!report.ok()) {
     std::fprintf(stderr, "mrd-table4-run: invalid configuration\n%s", report.to_string().c_str());
-    return 2;
+    return mrd::cli::kUsage;
   }
+  if (!mrd::cli::prepare_output_directory("mrd-table4-run", out_dir)) return mrd::cli::kIo;
 
   options.controller.compensate_hysteresis = false;
   const Table4RunResult off = mrd::tools::run_table4(options);
@@ -105,14 +109,11 @@ int main(int argc, char** argv) {
                 r->observer_force.max * 1e-3);
   }
 
-  std::error_code ec;
-  std::filesystem::create_directories(out_dir, ec);
-  if (ec) {
-    std::fprintf(stderr, "mrd-table4-run: cannot create %s: %s\n", out_dir.c_str(), ec.message().c_str());
-    return 1;
-  }
   const std::string csv = out_dir + "/table4_run.csv";
-  write_trace(csv, off, on);
+  if (!write_trace(csv, off, on)) {
+    std::fprintf(stderr, "mrd-table4-run: cannot write %s\n", csv.c_str());
+    return mrd::cli::kIo;
+  }
   std::printf("\nwrote %s\n", csv.c_str());
   if (!no_plot) {
     const std::string png = out_dir + "/table4_force_displacement.png";

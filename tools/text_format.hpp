@@ -1,18 +1,11 @@
 #pragma once
 
-#include <algorithm>
-#include <cstdio>
 #include <string>
 
 namespace mrd::tools {
 
-// printf into a std::string, for the fixed-format lines of the host tools' reports.
-template <typename... Args>
-std::string format(const char* pattern, Args... args) {
-  const int n = std::snprintf(nullptr, 0, pattern, args...);
-  std::string out(static_cast<std::size_t>(std::max(n, 0)), '\0');
-  std::snprintf(out.data(), out.size() + 1, pattern, args...);
-  return out;
-}
+// printf into a std::string, for the fixed-format lines of the host tools' reports. A real
+// variadic function so the compiler checks each pattern against its arguments (-Wformat).
+[[gnu::format(printf, 1, 2)]] std::string format(const char* pattern, ...);
 
 }  // namespace mrd::tools

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "common/cli/command_line.hpp"
 #include "runtime/loop_report.hpp"
 #include "runtime/rt_main.hpp"
 #include "sim/plant/can_node.hpp"
@@ -160,11 +161,11 @@ int run_plant(const mrd::plant::PlantConfig& config, mrd::plant::Rig& rig) {
   if (!config.log.empty()) {
     if (const auto opened = log.open(config.log); !opened.ok) {
       std::fprintf(stderr, "mrd-plant: %s\n", opened.error.c_str());
-      return 1;
+      return mrd::cli::kIo;
     }
   }
   PlantBuses buses;
-  if (!start_buses(config, buses)) return 1;
+  if (!start_buses(config, buses)) return mrd::cli::kIo;
   print_banner(config, buses);
   const std::vector<mrd::hal::IoThread*> io_threads = buses.io_threads();
 
@@ -219,6 +220,7 @@ int run_plant(const mrd::plant::PlantConfig& config, mrd::plant::Rig& rig) {
 
 int main(int argc, char** argv) {
   CLI::App app{"mrd-plant: the simulated damper rig, serving the controller over Modbus and CAN"};
+  mrd::cli::set_up(app, "mrd-plant");
   std::string config_path;
   std::string check_path;
   Overrides overrides;
@@ -231,16 +233,16 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 65535));
   app.add_option("--log", overrides.log_path, "recorded-run CSV (overrides plant.log)");
   app.add_flag("--no-log", overrides.no_log, "write no log");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto status = mrd::cli::parse(app, argc, argv)) return *status;
 
   if (!check_path.empty()) {
     const auto loaded = mrd::plant::load_plant_config_file(check_path);
     std::fputs(loaded.report().c_str(), loaded.ok() ? stdout : stderr);
     if (loaded.ok()) std::printf("%s: ok\n", check_path.c_str());
-    return loaded.ok() ? 0 : 1;
+    return loaded.ok() ? mrd::cli::kOk : mrd::cli::kUsage;
   }
   auto config = load_config(config_path, overrides);
-  if (!config) return 1;
+  if (!config) return mrd::cli::kUsage;
   std::unique_ptr<mrd::plant::Rig> rig;
   try {
     auto motion = mrd::plant::make_motion(*config);
@@ -248,7 +250,7 @@ int main(int argc, char** argv) {
     rig = std::make_unique<mrd::plant::Rig>(*config, std::move(motion));
   } catch (const mrd::record::InputError& e) {
     std::fprintf(stderr, "mrd-plant: profile.file: %s\n", e.what());
-    return 1;
+    return mrd::cli::kBadInput;
   }
   return run_plant(*config, *rig);
 }

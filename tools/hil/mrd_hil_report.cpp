@@ -7,6 +7,7 @@
 #include <fstream>
 #include <string>
 
+#include "common/cli/command_line.hpp"
 #include "record/csv.hpp"
 #include "tools/gnuplot.hpp"
 #include "tools/hil/force_join.hpp"
@@ -30,6 +31,7 @@ std::string plot_script(const std::string& data, const std::string& png) {
 
 int main(int argc, char** argv) {
   CLI::App app{"mrd-hil-report: the controller's telemetry against the plant's log"};
+  mrd::cli::set_up(app, "mrd-hil-report");
   std::string telemetry_path;
   std::string plant_path;
   double controller_t0 = 0.0;
@@ -41,8 +43,9 @@ int main(int argc, char** argv) {
                  "CLOCK_MONOTONIC [s] of the telemetry's time 0 (mrd-controller prints it)")->required();
   app.add_option("--plant-t0", plant_t0, "CLOCK_MONOTONIC [s] of the plant log's time 0 (mrd-plant prints it)")
       ->required();
-  app.add_option("--plot", plot, "write the force-displacement plot to this PNG");
-  CLI11_PARSE(app, argc, argv);
+  app.add_option("--plot", plot, "folder for the force-displacement plot (force_displacement.png, its data .csv)");
+  if (const auto status = mrd::cli::parse(app, argc, argv)) return *status;
+  if (!plot.empty() && !mrd::cli::prepare_output_directory("mrd-hil-report", plot)) return mrd::cli::kIo;
 
   try {
     const auto telemetry = mrd::tools::read_telemetry_csv(telemetry_path);
@@ -60,7 +63,8 @@ int main(int argc, char** argv) {
                 "peak force %.2f kN, NRMSE %.2f %%\n",
                 j.rms_error * 1e-3, j.max_error * 1e-3, j.peak_force * 1e-3, 100.0 * j.nrmse());
     if (!plot.empty()) {
-      const std::string data = plot + ".csv";
+      const std::string data = plot + "/force_displacement.csv";
+      const std::string png = plot + "/force_displacement.png";
       std::ofstream out(data);
       out << "displacement_mm,true_force_kN,observer_force_kN\n";
       for (std::size_t i = 0; i < j.rows; ++i) {
@@ -68,16 +72,20 @@ int main(int argc, char** argv) {
             << j.observer_force[i] * 1e-3 << '\n';
       }
       out.close();
-      const std::string error = mrd::tools::run_gnuplot(plot_script(data, plot));
+      if (!out) {
+        std::fprintf(stderr, "mrd-hil-report: cannot write %s\n", data.c_str());
+        return mrd::cli::kIo;
+      }
+      const std::string error = mrd::tools::run_gnuplot(plot_script(data, png));
       if (error.empty()) {
-        std::printf("plot: %s (data %s)\n", plot.c_str(), data.c_str());
+        std::printf("plot: %s (data %s)\n", png.c_str(), data.c_str());
       } else {
         std::fprintf(stderr, "mrd-hil-report: no plot: %s\n", error.c_str());
       }
     }
   } catch (const mrd::record::InputError& e) {
     std::fprintf(stderr, "mrd-hil-report: %s\n", e.what());
-    return 1;
+    return mrd::cli::kBadInput;
   }
-  return 0;
+  return mrd::cli::kOk;
 }

@@ -2,8 +2,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 
+#ifdef MRD_HAVE_PAGMO
 #include "tools/identification/pagmo_peers.hpp"
+#endif
+#include <stdexcept>
 #include "tools/identification/start_point.hpp"
 
 namespace mrd::tools {
@@ -32,25 +36,64 @@ std::string_view algorithm_name(Algorithm algorithm) {
 }
 
 std::optional<Algorithm> parse_algorithm(std::string_view name) {
-  for (const auto& n : kNames) {
-    if (n.name == name) return n.algorithm;
+  for (const Algorithm a : kAllAlgorithms) {
+    if (algorithm_name(a) == name) return a;
   }
   return std::nullopt;
 }
 
+std::vector<std::string> algorithm_names() {
+  std::vector<std::string> names;
+  for (const Algorithm a : kAllAlgorithms) names.emplace_back(algorithm_name(a));
+  return names;
+}
+
 namespace {
 
+// Passes each batch to the objective and tells the progress sink the evaluations spent and the
+// best fitness (RMSE of B) seen in this round.
+class ReportingObjective final : public BatchObjective {
+ public:
+  ReportingObjective(BatchObjective& inner, ProgressSink& sink, const IdentifyOptions& options, int round)
+      : inner_(inner), sink_(sink), options_(options), round_(round) {}
+  void evaluate(const std::vector<Point>& points, std::vector<double>& fitness,
+                const std::vector<double>* cutoffs) override {
+    inner_.evaluate(points, fitness, cutoffs);
+    evaluations_ += static_cast<std::int64_t>(points.size());
+    for (const double f : fitness) best_ = std::min(best_, f);
+    sink_.report({.stage = "round", .round = round_, .candidate = algorithm_name(options_.algorithm),
+                  .done = evaluations_, .total = options_.budget.evaluations, .best_error = best_,
+                  .unit = "T RMSE"});
+  }
+
+ private:
+  BatchObjective& inner_;
+  ProgressSink& sink_;
+  const IdentifyOptions& options_;
+  int round_;
+  std::int64_t evaluations_ = 0;
+  double best_ = std::numeric_limits<double>::infinity();
+};
+
 OptimisationResult run_search(const BHObjective& objective, const Bounds& bounds,
-                              const IdentifyOptions& options, std::uint64_t seed) {
+                              const IdentifyOptions& options, std::uint64_t seed, int round) {
+  if (options.progress != nullptr) {
+    options.progress->report({.stage = "round", .round = round, .candidate = algorithm_name(options.algorithm),
+                              .total = options.budget.evaluations});
+  }
   switch (options.algorithm) {
     case Algorithm::kPso:
     case Algorithm::kImprovedPso: {
       WorkerPool pool(options.threads);
       ParallelBHObjective parallel(objective, pool);
+      std::optional<ReportingObjective> reporting;
+      if (options.progress != nullptr) reporting.emplace(parallel, *options.progress, options, round);
+      BatchObjective& batch = reporting ? static_cast<BatchObjective&>(*reporting) : parallel;
       return options.algorithm == Algorithm::kPso
-                 ? run_classical_pso(parallel, bounds, options.budget, options.classical, seed)
-                 : run_improved_pso(parallel, bounds, options.budget, options.improved, seed);
+                 ? run_classical_pso(batch, bounds, options.budget, options.classical, seed)
+                 : run_improved_pso(batch, bounds, options.budget, options.improved, seed);
     }
+#ifdef MRD_HAVE_PAGMO
     case Algorithm::kPagmoPso:
       return run_pagmo(PagmoAlgorithm::kPso, objective, bounds, options.budget, seed);
     case Algorithm::kPagmoDe:
@@ -59,6 +102,13 @@ OptimisationResult run_search(const BHObjective& objective, const Bounds& bounds
       return run_pagmo(PagmoAlgorithm::kSade, objective, bounds, options.budget, seed);
     case Algorithm::kPagmoCmaes:
       return run_pagmo(PagmoAlgorithm::kCmaes, objective, bounds, options.budget, seed);
+#else
+    case Algorithm::kPagmoPso:
+    case Algorithm::kPagmoDe:
+    case Algorithm::kPagmoSade:
+    case Algorithm::kPagmoCmaes:
+      throw std::invalid_argument("this build has no pagmo2: " + std::string(algorithm_name(options.algorithm)));
+#endif
   }
   return {};
 }
@@ -77,7 +127,7 @@ IdentifyResult identify(const BHObjective& objective, const BHCurve& curve,
   Bounds bounds = result.bounds;
   Point centre = result.start;
   for (int round = 0;; ++round) {
-    OptimisationResult search = run_search(objective, bounds, options, options.seed + 7919u * round);
+    OptimisationResult search = run_search(objective, bounds, options, options.seed + 7919u * round, round + 1);
     if (round == 0 || search.fitness < result.search.fitness) {
       const auto spent = result.search.evaluations;
       auto trace = std::move(result.search.convergence);

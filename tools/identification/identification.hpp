@@ -8,17 +8,24 @@
 #include "tools/identification/bh_objective.hpp"
 #include "tools/identification/particle_swarm.hpp"
 #include "tools/identification/polish.hpp"
+#include "tools/progress.hpp"
 
 namespace mrd::tools {
 
 enum class Algorithm { kPso, kImprovedPso, kPagmoPso, kPagmoDe, kPagmoSade, kPagmoCmaes };
 
+// The algorithms this build has: the pagmo-* reference peers only where pagmo2 was found
+// (MRD_HAVE_PAGMO; not in the arm64 build).
 inline constexpr Algorithm kAllAlgorithms[] = {
-    Algorithm::kPso,     Algorithm::kImprovedPso, Algorithm::kPagmoPso,
-    Algorithm::kPagmoDe, Algorithm::kPagmoSade,   Algorithm::kPagmoCmaes};
+    Algorithm::kPso, Algorithm::kImprovedPso,
+#ifdef MRD_HAVE_PAGMO
+    Algorithm::kPagmoPso, Algorithm::kPagmoDe, Algorithm::kPagmoSade, Algorithm::kPagmoCmaes,
+#endif
+};
 
 std::string_view algorithm_name(Algorithm algorithm);  // the --algo spelling
-std::optional<Algorithm> parse_algorithm(std::string_view name);
+std::optional<Algorithm> parse_algorithm(std::string_view name);  // only those of kAllAlgorithms
+std::vector<std::string> algorithm_names();                       // of kAllAlgorithms, for --help
 
 struct IdentifyOptions {
   Algorithm algorithm = Algorithm::kImprovedPso;
@@ -35,6 +42,7 @@ struct IdentifyOptions {
   int polish_evaluations = 3000;
   ClassicalPsoSettings classical;
   ImprovedPsoSettings improved;
+  ProgressSink* progress = nullptr;  // round, evaluations and best RMSE as the search goes
 };
 
 struct IdentifyResult {

@@ -17,7 +17,7 @@ echo "|---|---|---|---|---:|---:|---:|---:|"
 effects=(coil_lag preyield_hysteresis gas_spring thermal_drift sensor_delay stroke_end_air)
 study() {  # CLASS PROFILE NAME CARRIED...   (CARRIED: NAME:SIZE; none for a clean run)
   local class=$1 profile=$2 name=$3; shift 3
-  local args=(--damper "$class" --profile "$profile" --seed "$seed" --out "$out/$name.csv")
+  local args=(--damper "$class" --profile "$profile" --seed "$seed" --csv "$out/$name.csv")
   for carried in "$@"; do args+=(--effect "$carried"); done
   "$simulate" "${args[@]}" > /dev/null
   local start end

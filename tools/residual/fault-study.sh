@@ -8,7 +8,7 @@ set -euo pipefail
 build=${1:-build/release}
 out=${2:-out/fault-study}
 mkdir -p "$out"
-"$build/tools/simulation/mrd-simulate-run" --damper 1kN --profile table4 --duration 10 --out "$out/sim-1kN-table4.csv" > /dev/null
+"$build/tools/simulation/mrd-simulate-run" --damper 1kN --profile table4 --duration 10 --csv "$out/sim-1kN-table4.csv" > /dev/null
 # The independent generator's run (its own forms, numpy) with a field lag to find through the faults.
 "${MRD_PYTHON:-/usr/bin/python3}" tests/generator/damper_truth.py --profile telegraph --duration 6 --effect coil_lag:2 \
   --out "$out/indep-coil_lag.csv"

@@ -8,9 +8,9 @@ build=${1:-build/release}
 out=${2:-out/non-candidate}
 mkdir -p "$out"
 simulate="$build/tools/simulation/mrd-simulate-run"
-"$simulate" --damper 1kN --profile telegraph --out "$out/1kN-telegraph.csv" > /dev/null
-"$simulate" --damper 50kN --profile table4 --out "$out/50kN-table4.csv" > /dev/null
-"$simulate" --damper 1kN --profile table4 --out "$out/1kN-table4.csv" > /dev/null
+"$simulate" --damper 1kN --profile telegraph --csv "$out/1kN-telegraph.csv" > /dev/null
+"$simulate" --damper 50kN --profile table4 --csv "$out/50kN-table4.csv" > /dev/null
+"$simulate" --damper 1kN --profile table4 --csv "$out/1kN-table4.csv" > /dev/null
 python3 - "$out" <<'PY'
 import csv, math, sys
 out = sys.argv[1]

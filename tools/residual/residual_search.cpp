@@ -155,6 +155,7 @@ struct Search {
 // Step 2: the base model, a swarm on the windows and Nelder-Mead on the whole fitting series.
 FittedModel fit_base_model(Search& s, ParameterSpace& space) {
   const model::DamperModel& start = s.options.start;
+  if (s.options.progress != nullptr) s.options.progress->report({.stage = "base fit"});
   space = base_space(start, start, s.scales);
   const FittedModel swarm =
       fit_space(space, s.swarm_series, &s.pool, s.seed++, 2 * s.options.evaluations_per_parameter);
@@ -206,6 +207,13 @@ Round try_candidates(Search& s, const model::DamperModel& current, double curren
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::ranges::stable_partition(
       order, [&](std::size_t k) { return k < candidates.size() && candidates[k]->changes_induction; });
+  std::atomic<std::int64_t> finished{0};
+  const auto report = [&](std::string_view candidate) {
+    if (s.options.progress == nullptr) return;
+    s.options.progress->report({.stage = "round", .round = round_number, .candidate = candidate,
+                                .done = ++finished, .total = static_cast<std::int64_t>(order.size()),
+                                .best_error = current_validation, .unit = "N RMS (validation)"});
+  };
   s.pool.run(order.size(), [&](std::size_t slot, unsigned /*worker*/) {
     const std::size_t k = order[slot];
     std::vector<double> force;
@@ -215,6 +223,7 @@ Round try_candidates(Search& s, const model::DamperModel& current, double curren
       s.evaluations += spent;
       predict_force(refined.model, s.fit_series, force);
       round.null_validation = residual_rms(s.fit_series, force).validation;
+      report("no effect");
       return;
     }
     const model::EffectInfo& effect = *candidates[k];
@@ -243,6 +252,7 @@ Round try_candidates(Search& s, const model::DamperModel& current, double curren
     trial.parameters = effect.report(fit.model.effects);
     if (const auto why = effect.implausible(fit.model.effects, s.scales)) trial.verdict = "not physical: " + *why;
     round.fits[k] = std::move(fit);
+    report(effect.name);
   });
   return round;
 }

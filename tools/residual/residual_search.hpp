@@ -11,6 +11,7 @@
 #include "tools/residual/model_fit.hpp"
 #include "tools/residual/residual_structure.hpp"
 #include "tools/residual/term_discovery.hpp"
+#include "tools/progress.hpp"
 
 namespace mrd::tools {
 
@@ -36,6 +37,7 @@ struct ResidualOptions {
   unsigned threads = 0;  // 0: every core
   std::uint64_t seed = 1;
   bool discover = true;  // step 7: regress what the named effects left on the library of terms
+  ProgressSink* progress = nullptr;  // the base fit, then each round's candidates as they finish
 };
 
 struct CandidateTrial {

@@ -9,7 +9,7 @@ out=${2:-out/long-run}
 mkdir -p "$out"
 [[ -f "$out/long.csv" ]] ||
   "$build/tools/simulation/mrd-simulate-run" --profile telegraph --damper 1kN --duration 600 \
-    --effect thermal_drift --out "$out/long.csv" > /dev/null
+    --effect thermal_drift --csv "$out/long.csv" > /dev/null
 /usr/bin/time -f "wall %e s, CPU %U s user + %S s system, %M KB resident" \
   "$build/tools/mrd-residual" "$out/long.csv" --threads 2 > "$out/summary.txt" 2> "$out/time.txt"
 tail -n 4 "$out/summary.txt"

@@ -2,10 +2,12 @@
 // run does not declare (the test material of the residual analysis, docs/CLOSING-THE-LOOP.md).
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
 
+#include "common/cli/command_line.hpp"
 #include "model/effects/effect_set.hpp"
 #include "tools/simulation/run_csv.hpp"
 #include "tools/simulation/run_generator.hpp"
@@ -27,8 +29,9 @@ void list_effects() {
 
 int main(int argc, char** argv) {
   CLI::App app{"Write a recorded-run CSV from the simulated damper, with effects it does not declare"};
+  mrd::cli::set_up(app, "mrd-simulate-run");
   mrd::tools::RunOptions options;
-  std::string out;
+  std::string out_dir, csv_path;
   std::string profile = "table4";
   std::string damper = "50kN";
   std::vector<std::string> effects;
@@ -39,13 +42,16 @@ int main(int argc, char** argv) {
   bool no_velocity = false;
   bool show_effects = false;
   bool report_residual = false;
-  app.add_option("--out", out, "the CSV to write");
+  auto* out_option = app.add_option("--out", out_dir, "folder of results: run.csv and manifest.json");
+  auto* csv_option = app.add_option("--csv", csv_path, "write the run's CSV to exactly this file instead");
+  out_option->excludes(csv_option);
   app.add_option("--profile", profile,
                  "table4 (sine, Table 4 currents), paper-sines (0.05-1 Hz, Table 4 currents), sine "
                  "(constant current), random (band-limited motion, constant current), telegraph "
                  "(band-limited motion, random telegraph current)")
+      ->check(CLI::IsMember({"table4", "paper-sines", "sine", "random", "telegraph"}))
       ->capture_default_str();
-  app.add_option("--damper", damper, "damper class: 50kN or 1kN")->capture_default_str();
+  app.add_option("--damper", damper, "damper class")->check(CLI::IsMember({"50kN", "1kN"}))->capture_default_str();
   app.add_option("--rate", options.rate, "sample rate [Hz]")->capture_default_str();
   app.add_option("--duration", options.duration,
                  "seconds; default 5 cycles (sines), 30 s (random, telegraph), the whole sequence");
@@ -63,22 +69,22 @@ int main(int argc, char** argv) {
   app.add_flag("--with-B", columns.B, "add the B_T column");
   app.add_flag("--with-temperature", columns.temperature, "add the temperature_C column");
   app.add_flag("--no-velocity", no_velocity, "leave out the velocity_mm_s column");
-  app.add_option("--manifest", manifest, "also write what the run carries, as JSON");
+  app.add_option("--manifest", manifest, "also write what the run carries, as JSON, to this file");
   app.add_flag("--residual", report_residual,
                "also print the RMS error of the class's base model replayed on the written run, and of "
                "the model with the effects the run carries (the best a residual analysis can reach)");
   app.add_flag("--list-effects", show_effects, "print the effects' sizes per damper class and exit");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto status = mrd::cli::parse(app, argc, argv)) return *status;
 
   if (show_effects) {
     list_effects();
-    return 0;
+    return mrd::cli::kOk;
   }
-  const auto fail = [](const std::string& message) {
+  const auto fail = [](const std::string& message, int status = mrd::cli::kUsage) {
     std::fprintf(stderr, "mrd-simulate-run: %s\n", message.c_str());
-    return 2;
+    return status;
   };
-  if (out.empty()) return fail("--out FILE is required");
+  if (out_dir.empty() && csv_path.empty()) return fail("--out DIR or --csv FILE is required");
   const auto parsed_profile = mrd::tools::parse_run_profile(profile);
   if (!parsed_profile) return fail("unknown profile '" + profile + "'");
   options.profile = *parsed_profile;
@@ -98,14 +104,22 @@ int main(int argc, char** argv) {
     return fail(problems);
   }
 
+  if (!out_dir.empty()) {
+    if (!mrd::cli::prepare_output_directory("mrd-simulate-run", out_dir)) return mrd::cli::kIo;
+    csv_path = (std::filesystem::path(out_dir) / "run.csv").string();
+    if (manifest.empty()) manifest = (std::filesystem::path(out_dir) / "manifest.json").string();
+  }
+
   const mrd::tools::SimulatedRun run = mrd::tools::simulate_run(options);
-  std::ofstream file(out);
-  if (!file) return fail("cannot write " + out);
+  std::ofstream file(csv_path);
   mrd::tools::write_run_csv(file, run, columns);
+  file.close();
+  if (!file) return fail("cannot write " + csv_path, mrd::cli::kIo);
   if (!manifest.empty()) {
     std::ofstream json(manifest);
-    if (!json) return fail("cannot write " + manifest);
     json << mrd::tools::run_manifest_json(run);
+    json.close();
+    if (!json) return fail("cannot write " + manifest, mrd::cli::kIo);
   }
   std::string carried;
   for (const auto& e : run.options.effects) {
@@ -122,6 +136,6 @@ int main(int argc, char** argv) {
                 mrd::tools::model_residual(run), mrd::tools::model_residual(run, run.effects),
                 run.options.force_noise);
   }
-  std::printf("wrote %s\n", out.c_str());
-  return 0;
+  std::printf("wrote %s%s%s\n", csv_path.c_str(), manifest.empty() ? "" : " and ", manifest.c_str());
+  return mrd::cli::kOk;
 }

@@ -147,6 +147,7 @@ TEST(Identification, SameSeedSameResult) {
   EXPECT_EQ(a.search.evaluations, b.search.evaluations);
 }
 
+#ifdef MRD_HAVE_PAGMO
 TEST(Identification, PagmoPeersRunOnTheSameBudget) {
   const BHCurve curve = synthetic_loop(kSteel, 5000.0, 200);
   const BHObjective objective(curve);
@@ -159,6 +160,43 @@ TEST(Identification, PagmoPeersRunOnTheSameBudget) {
     EXPECT_GE(r.search.evaluations, 300) << algorithm_name(algorithm);
     EXPECT_LT(r.fit.rmse, objective.rms_B()) << algorithm_name(algorithm);
   }
+}
+#endif
+
+// The progress sink hears each batch: evaluations rising to the budget, the best RMSE never
+// rising, and it is the RMSE the search ends with.
+class RecordingProgressSink final : public ProgressSink {
+ public:
+  void report(const ProgressReport& r) override {
+    if (r.done > 0) reports.push_back({r.done, r.total, r.best_error, r.round});
+  }
+  struct Seen {
+    std::int64_t done, total;
+    double best;
+    int round;
+  };
+  std::vector<Seen> reports;
+};
+
+TEST(Identification, ProgressReportsEvaluationsAndABestThatNeverRises) {
+  const BHCurve curve = synthetic_loop(kSteel, 5000.0, 200);
+  const BHObjective objective(curve);
+  IdentifyOptions options;
+  options.budget.evaluations = 600;
+  options.recentre_rounds = 0;
+  options.threads = 2;
+  RecordingProgressSink sink;
+  options.progress = &sink;
+  const auto r = identify(objective, curve, options);
+  ASSERT_GE(sink.reports.size(), 5u);
+  for (std::size_t i = 1; i < sink.reports.size(); ++i) {
+    EXPECT_GT(sink.reports[i].done, sink.reports[i - 1].done);
+    EXPECT_LE(sink.reports[i].best, sink.reports[i - 1].best);
+  }
+  EXPECT_EQ(sink.reports.back().round, 1);
+  EXPECT_EQ(sink.reports.back().total, 600);
+  EXPECT_EQ(sink.reports.back().done, r.search.evaluations);
+  EXPECT_DOUBLE_EQ(sink.reports.back().best, r.search.fitness);
 }
 
 TEST(Identification, FitOfMeasuredFerriteBeatsTheAuthorsPublishedFit) {

@@ -4,6 +4,8 @@
 // docs/CLOSING-THE-LOOP.md is tools/residual/detection-study.sh.
 #include <gtest/gtest.h>
 
+#include <mutex>
+
 #include <algorithm>
 #include <string>
 #include <tuple>
@@ -63,8 +65,34 @@ TEST(MissingEffects, CoilLagOfAConstantCurrentRunFromItsSwitchOn) {
 
 }  // namespace
 
+namespace {
+
+// What the search tells its progress sink, from the worker threads.
+class ResidualProgressRecorder final : public mrd::tools::ProgressSink {
+ public:
+  void report(const mrd::tools::ProgressReport& r) override {
+    const std::lock_guard lock(mutex_);
+    seen.push_back({std::string(r.stage), r.round, std::string(r.candidate), r.done, r.total, r.best_error});
+  }
+  struct Seen {
+    std::string stage;
+    int round;
+    std::string candidate;
+    std::int64_t done, total;
+    double best;
+  };
+  std::vector<Seen> seen;
+
+ private:
+  std::mutex mutex_;
+};
+
+}  // namespace
+
 // The threshold guards acceptance: the same small gas spring is accepted under a threshold below
 // what it gains and rejected under one above it, with the verdict saying by how much it fell.
+// The lenient run's progress: the base fit, then round 1's candidate and null refinement, each
+// once, with the round model's validation error.
 TEST(MissingEffects, ACandidateBelowTheThresholdIsRejected) {
   const mrd::record::RecordedRun run =
       residual_testing::simulated_recorded_run(RunProfile::kTelegraph, "1kN", {{"gas_spring", 0.3}}, 4.0);
@@ -72,9 +100,24 @@ TEST(MissingEffects, ACandidateBelowTheThresholdIsRejected) {
   options.threads = 2;
   options.candidates = {"gas_spring"};
   const FitSeries series = make_fit_series({run}, {});
+  ResidualProgressRecorder progress;
+  options.progress = &progress;
   const ResidualResult lenient = find_missing_effects(series, options);
+  options.progress = nullptr;
   ASSERT_EQ(lenient.accepted, std::vector<std::string>{"gas_spring"}) << residual_summary({run}, lenient);
   const CandidateTrial& trial = lenient.trials.front();
+  ASSERT_GE(progress.seen.size(), 3u);
+  EXPECT_EQ(progress.seen.front().stage, "base fit");
+  std::vector<std::string> round_one;
+  for (const auto& s : progress.seen) {
+    if (s.stage != "round" || s.round != 1) continue;
+    round_one.push_back(s.candidate);
+    EXPECT_EQ(s.total, 2);
+    EXPECT_EQ(s.done, static_cast<std::int64_t>(round_one.size()));
+    EXPECT_GE(s.best, trial.validation_before);  // the round model's error, before the null refinement
+  }
+  std::ranges::sort(round_one);
+  EXPECT_EQ(round_one, (std::vector<std::string>{"gas_spring", "no effect"}));
   const double gain = 1.0 - trial.validation_rms / trial.validation_before;
   ASSERT_GT(gain, 0.15);
   options.minimum_reduction = gain + 0.05;
