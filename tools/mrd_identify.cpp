@@ -190,7 +190,8 @@ struct StudyArguments {
 struct FitArguments {
   CurveArguments curve;
   IdentifyOptions options;
-  std::string algo = "improved-pso", start_text, json_path, plot_dir;
+  std::string algo = "improved-pso", start_text, json_path, plot_dir, report_dir;
+  std::vector<std::string> argv;  // the command line, for the report's provenance
   std::vector<std::string> bound_texts;
   bool polish = false;
 };
@@ -214,13 +215,25 @@ int run_fit(const FitArguments& args) {
   }
   const IdentifyResult result = identify(objective, curve, options);
   std::fputs(identify_text(result, objective).c_str(), stdout);
-  if (!args.json_path.empty() && !write_file(args.json_path, identify_json(result))) {
+  const IdentifyStatistics statistics = identify_statistics(result, objective, curve);
+  if (!args.json_path.empty() && !write_file(args.json_path, identify_json(result, &statistics))) {
     std::fprintf(stderr, "mrd-identify: cannot write %s\n", args.json_path.c_str());
     return 1;
   }
   if (!args.plot_dir.empty()) {
     const std::string why = plot_identification(result, objective, curve, args.plot_dir);
     if (!why.empty()) std::fprintf(stderr, "mrd-identify: plot skipped: %s\n", why.c_str());
+  }
+  if (!args.report_dir.empty()) {
+    std::vector<const char*> words;
+    for (const auto& w : args.argv) words.push_back(w.c_str());
+    const Provenance provenance = provenance_of("mrd-identify", static_cast<int>(words.size()), words.data(),
+                                                {args.curve.file}, std::to_string(options.seed));
+    if (const auto why = write_identify_report(result, statistics, objective, curve, provenance, args.report_dir);
+        !why.empty()) {
+      std::fprintf(stderr, "mrd-identify: report: %s\n", why.c_str());
+      return 3;
+    }
   }
   return 0;
 }
@@ -276,6 +289,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   FitArguments fit;
+  fit.argv.assign(argv, argv + argc);
   auto* fit_cmd = app.add_subcommand("fit", "fit Ms, a, alpha, k, c to the loops of a file");
   fit.curve.add_to(*fit_cmd);
   add_search_options(*fit_cmd, fit.options);
@@ -286,6 +300,9 @@ int main(int argc, char** argv) {
   fit_cmd->add_flag("--polish", fit.polish, "refine with Levenberg-Marquardt after the global search");
   fit_cmd->add_option("--json", fit.json_path, "write the result as JSON");
   fit_cmd->add_option("--plot", fit.plot_dir, "write the B-H overlay and convergence PNGs here");
+  fit_cmd->add_option("--report", fit.report_dir,
+                      "write report.html here: B-H measured and fitted, residual, parameters with standard "
+                      "deviations, provenance (docs/IDENTIFICATION.md)");
 
   CurveArguments evaluate_curve;
   std::string evaluate_text;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "record/recorded_run.hpp"
+#include "tools/report/html_report.hpp"
 #include "tools/residual/fit_series.hpp"
 #include "tools/residual/residual_search.hpp"
 
@@ -30,5 +31,12 @@ std::string updated_config(std::string_view config_text, const ResidualResult& r
 // residual against displacement and velocity). Returns "" or why not.
 std::string plot_residual(const FitSeries& series, const ResidualResult& r, const std::string& name,
                           const std::string& directory);
+
+// --report DIR: report.html with the fit (measured against the base and the final model over
+// time, displacement and velocity), the residual's structure, the parameters with their
+// standard deviations, every candidate with its validation figures, the screening's spans and
+// the provenance; the plots' .dat and .gp beside it. Returns "" or why not.
+std::string write_residual_report(const std::vector<record::RecordedRun>& runs, const FitSeries& series,
+                                  const ResidualResult& r, const Provenance& provenance, const std::string& directory);
 
 }  // namespace mrd::tools
