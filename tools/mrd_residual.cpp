@@ -99,7 +99,8 @@ int main(int argc, char** argv) {
                   s.rms, s.max, s.nrmse, result.before.all / ours.measured_range, ours.nrmse);
     }
     int status = 0;
-    if (!json_path.empty() && !mrd::record::write_text_file(json_path, residual_json(result))) {
+    const ForceFitFigures fit = force_fit_figures(residual_traces(runs, series, result));
+    if (!json_path.empty() && !mrd::record::write_text_file(json_path, residual_json(result, &fit))) {
       std::fprintf(stderr, "mrd-residual: cannot write %s\n", json_path.c_str());
       status = 1;
     }

@@ -67,6 +67,7 @@ std::string identify_json(const IdentifyResult& r, const IdentifyStatistics* sta
   }
   if (statistics) {
     out["fit_percent"] = statistics->fit_percent;
+    out["sigma_T"] = statistics->uncertainty.sigma;
     Json sd = Json::object();
     for (int j = 0; j < kParameterCount; ++j) {
       sd[std::string(kParameterNames[static_cast<std::size_t>(j)])] =
@@ -159,8 +160,9 @@ std::string write_identify_report(const IdentifyResult& r, const IdentifyStatist
   std::vector<HtmlReport::Parameter> rows;
   static constexpr std::array<const char*, kParameterCount> kUnits = {"A/m", "A/m", "-", "A/m", "-"};
   for (std::size_t j = 0; j < static_cast<std::size_t>(kParameterCount); ++j) {
-    rows.push_back({"params." + std::string(kParameterNames[j]), kUnits[j], best[static_cast<Eigen::Index>(j)],
-                    statistics.uncertainty.standard_deviation[j]});
+    const std::string name(kParameterNames[j]);
+    rows.push_back({name, kUnits[j], best[static_cast<Eigen::Index>(j)], statistics.uncertainty.standard_deviation[j],
+                    (r.polish ? "polish.params." : "params.") + name, "params_sd." + name});
   }
   report.heading("Parameters");
   report.parameters(statistics.uncertainty.singular

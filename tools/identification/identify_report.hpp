@@ -21,7 +21,8 @@ IdentifyStatistics identify_statistics(const IdentifyResult& result, const BHObj
 
 // The --json document: {"algo", "params": {Ms, a, alpha, k, c}, "rmse_T", "evaluations",
 // "wall_s"}, plus the start point, the bounds and, with --polish, a separate "polish" object;
-// with statistics, "fit_percent" and "params_sd" {Ms, a, alpha, k, c} of the final set.
+// with statistics, "fit_percent", "sigma_T" (residual standard error) and "params_sd" {Ms, a,
+// alpha, k, c} of the final set.
 std::string identify_json(const IdentifyResult& result, const IdentifyStatistics* statistics = nullptr);
 
 // --report DIR: report.html with B against H measured and fitted, the residual and its

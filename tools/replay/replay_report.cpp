@@ -55,6 +55,20 @@ double replay_fit_percent(const ReplayContext& c) {
   return nrmse_fit_percent(c.run.force, c.result.trace.predicted_force);
 }
 
+// The run and its replay as the force-fit section reads them (the run must have force).
+ForceFitTraces replay_traces(const ReplayContext& c) {
+  ForceFitTraces traces;
+  traces.name = std::filesystem::path(c.run.name).filename().string();
+  traces.time.resize(c.run.size());
+  for (std::size_t i = 0; i < c.run.size(); ++i) traces.time[i] = c.run.time[i] - c.run.time[0];
+  traces.displacement = c.run.displacement;
+  traces.velocity = c.result.trace.velocity;
+  traces.measured = c.run.force;
+  traces.predicted = c.result.trace.predicted_force;
+  traces.predicted_label = "predicted (observer)";
+  return traces;
+}
+
 }  // namespace
 
 std::string replay_summary(const ReplayContext& c) {
@@ -93,6 +107,7 @@ std::string replay_json(const ReplayContext& c) {
   }
   const Range predicted = range_of(c.result.trace.predicted_force);
   const Range command = range_of(c.result.trace.command_current);
+  const Json fit = run.has_force() ? force_fit_json(force_fit_figures(replay_traces(c))) : Json(nullptr);
   return json_text({{"run", run.name},
                     {"samples", run.size()},
                     {"duration_s", run.duration()},
@@ -103,6 +118,7 @@ std::string replay_json(const ReplayContext& c) {
                     {"amps_per_volt", c.options.amps_per_volt ? Json(*c.options.amps_per_volt) : Json(nullptr)},
                     {"velocity", c.options.use_recorded_velocity ? "recorded" : "filter"},
                     {"force", force},
+                    {"fit", fit},
                     {"predicted_force_N", {{"min", predicted.min}, {"max", predicted.max}}},
                     {"command_current_A", {{"min", command.min}, {"max", command.max}, {"mean", command.mean}}},
                     {"notes", run.notes},
@@ -214,15 +230,7 @@ std::string write_replay_report(const ReplayContext& c, const Provenance& proven
   std::vector<double> time(run.size());
   for (std::size_t i = 0; i < run.size(); ++i) time[i] = run.time[i] - run.time[0];
   if (run.has_force()) {
-    ForceFitTraces traces;
-    traces.name = std::filesystem::path(run.name).filename().string();
-    traces.time = time;
-    traces.displacement = run.displacement;
-    traces.velocity = t.velocity;
-    traces.measured = run.force;
-    traces.predicted = t.predicted_force;
-    traces.predicted_label = "predicted (observer)";
-    add_force_fit(report, traces);
+    add_force_fit(report, replay_traces(c));
   } else {
     report.paragraph("The run has no measured force: only the prediction and the current are shown.");
   }
@@ -235,13 +243,13 @@ std::string write_replay_report(const ReplayContext& c, const Provenance& proven
   report.heading("Damper parameters");
   const model::DamperModel& m = c.options.law.damper;
   report.parameters("From the config (a replay fits nothing, so no standard deviations)",
-                    {{"jiles_atherton.Ms", "A/m", m.jiles_atherton.Ms, NAN},
-                     {"jiles_atherton.a", "A/m", m.jiles_atherton.a, NAN},
-                     {"jiles_atherton.alpha", "-", m.jiles_atherton.alpha, NAN},
-                     {"jiles_atherton.k", "A/m", m.jiles_atherton.k, NAN},
-                     {"jiles_atherton.c", "-", m.jiles_atherton.c, NAN},
-                     {"fluid.viscosity", "Pa s", m.fluid.viscosity, NAN},
-                     {"geometry.pole_length", "m", m.geometry.pole_length, NAN}});
+                    {{"jiles_atherton.Ms", "A/m", m.jiles_atherton.Ms, NAN, "", ""},
+                     {"jiles_atherton.a", "A/m", m.jiles_atherton.a, NAN, "", ""},
+                     {"jiles_atherton.alpha", "-", m.jiles_atherton.alpha, NAN, "", ""},
+                     {"jiles_atherton.k", "A/m", m.jiles_atherton.k, NAN, "", ""},
+                     {"jiles_atherton.c", "-", m.jiles_atherton.c, NAN, "", ""},
+                     {"fluid.viscosity", "Pa s", m.fluid.viscosity, NAN, "", ""},
+                     {"geometry.pole_length", "m", m.geometry.pole_length, NAN, "", ""}});
   report.provenance(provenance);
   return report.write();
 }

@@ -79,24 +79,35 @@ ParameterUncertainty parameter_uncertainty(const ResidualFunction& residuals, co
   for (const double v : r0) ssr += v * v;
   const double variance = ssr / static_cast<double>(n - p);
   out.sigma = std::sqrt(variance);
+  // A parameter the residual does not depend on at all (its column is zero: it acts on nothing
+  // the data saw) has no standard deviation; the others are estimated without it.
+  std::vector<Eigen::Index> used;
+  for (Eigen::Index j = 0; j < J.cols(); ++j)
+    if (J.col(j).norm() > 0.0) used.push_back(j);
+  out.singular = used.size() < p;
+  if (used.empty()) return out;
   // Scale the columns first: J-A parameters span ten orders of magnitude.
-  Eigen::VectorXd scale = J.colwise().norm().transpose();
-  for (Eigen::Index j = 0; j < scale.size(); ++j)
-    if (scale(j) == 0.0) scale(j) = 1.0;
-  const Eigen::MatrixXd Js = J * scale.cwiseInverse().asDiagonal();
-  const Eigen::MatrixXd normal = Js.transpose() * Js;
-  const Eigen::FullPivLU<Eigen::MatrixXd> lu(normal);
-  if (!lu.isInvertible() || J.colwise().norm().minCoeff() == 0.0) {
+  Eigen::MatrixXd Js(J.rows(), static_cast<Eigen::Index>(used.size()));
+  Eigen::VectorXd scale(static_cast<Eigen::Index>(used.size()));
+  for (std::size_t u = 0; u < used.size(); ++u) {
+    const auto iu = static_cast<Eigen::Index>(u);
+    scale(iu) = J.col(used[u]).norm();
+    Js.col(iu) = J.col(used[u]) / scale(iu);
+  }
+  const Eigen::FullPivLU<Eigen::MatrixXd> lu(Js.transpose() * Js);
+  if (!lu.isInvertible()) {
     out.singular = true;
     return out;
   }
   const Eigen::MatrixXd scaled_cov = lu.inverse();
-  for (std::size_t a = 0; a < p; ++a) {
+  for (std::size_t a = 0; a < used.size(); ++a) {
     const auto ia = static_cast<Eigen::Index>(a);
-    out.standard_deviation[a] = out.sigma * std::sqrt(scaled_cov(ia, ia)) / scale(ia);
-    for (std::size_t b = 0; b < p; ++b) {
+    const auto pa = static_cast<std::size_t>(used[a]);
+    out.standard_deviation[pa] = out.sigma * std::sqrt(scaled_cov(ia, ia)) / scale(ia);
+    for (std::size_t b = 0; b < used.size(); ++b) {
       const auto ib = static_cast<Eigen::Index>(b);
-      out.correlation[a][b] = scaled_cov(ia, ib) / std::sqrt(scaled_cov(ia, ia) * scaled_cov(ib, ib));
+      out.correlation[pa][static_cast<std::size_t>(used[b])] =
+          scaled_cov(ia, ib) / std::sqrt(scaled_cov(ia, ia) * scaled_cov(ib, ib));
     }
   }
   return out;

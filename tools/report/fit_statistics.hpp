@@ -28,7 +28,9 @@ struct ParameterUncertainty {
   std::vector<std::vector<double>> correlation;
   double sigma = 0.0;  // residual standard error, sqrt(|r|^2 / (N - p))
   std::size_t samples = 0;
-  bool singular = false;  // J^T J not invertible: some parameters the data cannot determine
+  // Some parameter the data cannot determine: one the residual does not depend on (NaN, the
+  // others estimated without it), or J^T J singular over the rest (all NaN).
+  bool singular = false;
 };
 using ResidualFunction = std::function<std::vector<double>(const std::vector<double>&)>;
 [[nodiscard]] ParameterUncertainty parameter_uncertainty(const ResidualFunction& residuals,

@@ -42,15 +42,22 @@ ForceFitFigures force_fit_figures(const ForceFitTraces& t, std::size_t lags) {
   return f;
 }
 
+Json force_fit_json(const ForceFitFigures& f) {
+  return {{"fit_percent", f.fit_percent},   {"rms_N", f.rms_N},
+          {"max_N", f.max_N},               {"baseline_fit_percent", f.baseline_fit_percent},
+          {"acf_lags", f.lags},             {"acf_lag_step_s", f.lag_step_s},
+          {"acf_bound", f.acf_bound},       {"acf_outside_fraction", f.acf_outside}};
+}
+
 ForceFitFigures add_force_fit(HtmlReport& report, const ForceFitTraces& t) {
   const ForceFitFigures f = force_fit_figures(t);
   report.heading("Measured and predicted force");
   std::vector<ReportFigure> rows = {
-      {"fit, 100 (1 - |y - yhat| / |y - mean(y)|)", "fit_percent", f.fit_percent, "%"},
-      {"RMS of measured - predicted", "fit_rms_N", f.rms_N, "N"},
-      {"max |measured - predicted|", "fit_max_N", f.max_N, "N"},
+      {"fit, 100 (1 - |y - yhat| / |y - mean(y)|)", "fit.fit_percent", f.fit_percent, "%"},
+      {"RMS of measured - predicted", "fit.rms_N", f.rms_N, "N"},
+      {"max |measured - predicted|", "fit.max_N", f.max_N, "N"},
   };
-  if (!t.baseline.empty()) rows.push_back({"fit of the " + t.baseline_label, "baseline_fit_percent", f.baseline_fit_percent, "%"});
+  if (!t.baseline.empty()) rows.push_back({"fit of the " + t.baseline_label, "fit.baseline_fit_percent", f.baseline_fit_percent, "%"});
   report.figures("Fit (as MATLAB's compare: NRMSE fit)", rows);
 
   const std::size_t n = t.measured.size();
@@ -83,10 +90,10 @@ ForceFitFigures add_force_fit(HtmlReport& report, const ForceFitTraces& t) {
 
   report.heading("Residual");
   report.figures("Residual whiteness (as MATLAB's resid)",
-                 {{"autocorrelation lags tested", "acf_lags", static_cast<double>(f.lags), ""},
-                  {"lag step", "acf_lag_step_s", f.lag_step_s, "s"},
-                  {"95 % bound, 1.96/sqrt(N)", "acf_bound", f.acf_bound, ""},
-                  {"share of lags outside the bound", "acf_outside_fraction", f.acf_outside, "(0 to 1)"}});
+                 {{"autocorrelation lags tested", "fit.acf_lags", static_cast<double>(f.lags), ""},
+                  {"lag step", "fit.acf_lag_step_s", f.lag_step_s, "s"},
+                  {"95 % bound, 1.96/sqrt(N)", "fit.acf_bound", f.acf_bound, ""},
+                  {"share of lags outside the bound", "fit.acf_outside_fraction", f.acf_outside, "(0 to 1)"}});
   report.plot("residual_time", t.name + ": residual, measured - predicted, against time",
               "set xlabel 'time [s]'\nset ylabel 'residual [N]'\nplot " + q +
                   " using 1:6 with lines lw 1 lc rgb '#1f77b4' title 'measured - predicted'\n");

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "tools/json.hpp"
 #include "tools/report/html_report.hpp"
 
 // The force-fit part of a report, shared by mrd-replay and mrd-residual: measured against
@@ -33,6 +34,10 @@ struct ForceFitFigures {
   double acf_outside = 0.0;  // fraction of lags 1..lags with |r| above it
 };
 [[nodiscard]] ForceFitFigures force_fit_figures(const ForceFitTraces& t, std::size_t lags = 100);
+
+// The figures as the tools' JSON "fit" object: fit_percent, rms_N, max_N, baseline_fit_percent,
+// acf_lags, acf_lag_step_s, acf_bound, acf_outside_fraction. The report's cells name them "fit.*".
+[[nodiscard]] Json force_fit_json(const ForceFitFigures& f);
 
 // Writes the section (figures table and six plots) into the report.
 ForceFitFigures add_force_fit(HtmlReport& report, const ForceFitTraces& t);

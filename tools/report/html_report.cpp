@@ -52,8 +52,10 @@ std::string svg_element(const std::string& path) {
 
 // A number with its JSON key: the full value in data-value, six digits shown.
 std::string number_cell(const std::string& key, double value) {
-  return "<td class=\"num\" data-key=\"" + html_escape(key) + "\" data-value=\"" +
-         (std::isfinite(value) ? format("%.17g", value) : std::string("nan")) + "\">" +
+  const std::string keyed = key.empty() ? std::string()
+                                         : " data-key=\"" + html_escape(key) + "\" data-value=\"" +
+                                               (std::isfinite(value) ? format("%.17g", value) : std::string("nan")) + "\"";
+  return "<td class=\"num\"" + keyed + ">" +
          (std::isfinite(value) ? format("%.6g", value) : std::string("&ndash;")) + "</td>";
 }
 
@@ -111,8 +113,8 @@ void HtmlReport::parameters(const std::string& caption, const std::vector<Parame
                     "<th>unit</th></tr>\n";
   for (const Parameter& p : rows) {
     const double relative = p.value != 0.0 ? 100.0 * p.standard_deviation / std::abs(p.value) : NAN;
-    out += "<tr><th>" + html_escape(p.key) + "</th>" + number_cell(p.key, p.value) +
-           number_cell(p.key + ".sd", p.standard_deviation) + "<td class=\"num\">" +
+    out += "<tr><th>" + html_escape(p.label) + "</th>" + number_cell(p.key, p.value) +
+           number_cell(p.sd_key, p.standard_deviation) + "<td class=\"num\">" +
            (std::isfinite(relative) ? format("%.3g %%", relative) : std::string("&ndash;")) + "</td><td>" +
            html_escape(p.unit) + "</td></tr>\n";
   }
@@ -186,7 +188,7 @@ std::string HtmlReport::write() {
     std::ofstream out(gp);
     out << "# " << p.caption << "\n# redraw: gnuplot " << p.name << ".gp (in this directory)\n"
         << "set terminal svg size 860,440 font 'Helvetica,12' background '#ffffff'\n"
-        << "set output '" << p.name << ".svg'\nset grid\nset key top left noenhanced\n"
+        << "set output '" << p.name << ".svg'\nset grid\nset key below horizontal noenhanced\n"
         << p.body << (p.body.empty() || p.body.back() == '\n' ? "" : "\n") << "unset output\n";
     if (!out) return "cannot write " + gp.string();
     load += "reset\nload '" + p.name + ".gp'\n";

@@ -8,8 +8,8 @@
 // beside the HTML: `cd DIR && gnuplot NAME.gp` redraws NAME.svg after restyling.
 namespace mrd::tools {
 
-// One figure of a table, with the JSON key it stands for: the cell carries data-key and the
-// full-precision data-value, the text shows `digits` significant digits.
+// One figure of a table, with the JSON path it stands for (dot-separated; "" for none): the cell
+// carries data-key and the full-precision data-value, the text shows six significant digits.
 struct ReportFigure {
   std::string label;
   std::string key;
@@ -35,10 +35,12 @@ class HtmlReport {
   void heading(const std::string& text);
   void paragraph(const std::string& text);
   void figures(const std::string& caption, const std::vector<ReportFigure>& rows);
-  // Fitted parameters with their standard deviations: cells keyed "<key>" and "<key>.sd".
+  // Fitted parameters with their standard deviations; the cells carry the JSON paths `key` and
+  // `sd_key` (dot-separated, array indices as numbers; "" for a figure the JSON lacks).
   struct Parameter {
-    std::string key, unit;
+    std::string label, unit;
     double value = 0.0, standard_deviation = 0.0;
+    std::string key, sd_key;
   };
   void parameters(const std::string& caption, const std::vector<Parameter>& rows);
   // Cells are text (escaped here).

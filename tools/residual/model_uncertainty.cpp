@@ -15,26 +15,28 @@ struct ModelParameter {
   double& (*field)(model::DamperModel&);
 };
 
-constexpr std::array<ModelParameter, 7> kParameters = {{
-    {"jiles_atherton.Ms", "A/m", [](model::DamperModel& m) -> double& { return m.jiles_atherton.Ms; }},
-    {"jiles_atherton.a", "A/m", [](model::DamperModel& m) -> double& { return m.jiles_atherton.a; }},
-    {"jiles_atherton.alpha", "-", [](model::DamperModel& m) -> double& { return m.jiles_atherton.alpha; }},
-    {"jiles_atherton.k", "A/m", [](model::DamperModel& m) -> double& { return m.jiles_atherton.k; }},
-    {"jiles_atherton.c", "-", [](model::DamperModel& m) -> double& { return m.jiles_atherton.c; }},
-    {"fluid.viscosity", "Pa s", [](model::DamperModel& m) -> double& { return m.fluid.viscosity; }},
+// What the base fit identifies (residual_search.cpp, describe_base): the force scale as the pole
+// length, the viscous coefficient as the viscosity, the sign velocity and, last, the field gain
+// as the coil's turns.
+constexpr std::array<ModelParameter, 4> kParameters = {{
     {"geometry.pole_length", "m", [](model::DamperModel& m) -> double& { return m.geometry.pole_length; }},
+    {"fluid.viscosity", "Pa s", [](model::DamperModel& m) -> double& { return m.fluid.viscosity; }},
+    {"geometry.sign_velocity_scale", "m/s", [](model::DamperModel& m) -> double& { return m.geometry.sign_velocity_scale; }},
+    {"circuit.turns", "-", [](model::DamperModel& m) -> double& { return m.circuit.turns; }},
 }};
 
 }  // namespace
 
-std::vector<ParameterEstimate> model_uncertainty(const model::DamperModel& fitted, const FitSeries& series) {
+std::vector<ParameterEstimate> model_uncertainty(const model::DamperModel& fitted, const FitSeries& series,
+                                                 bool field_gain) {
+  const std::size_t count = field_gain ? kParameters.size() : kParameters.size() - 1;
   std::vector<double> x;
   model::DamperModel probe = fitted;
-  for (const ModelParameter& p : kParameters) x.push_back(p.field(probe));
+  for (std::size_t j = 0; j < count; ++j) x.push_back(kParameters[j].field(probe));
   std::vector<double> force;
   const auto residuals = [&](const std::vector<double>& at) {
     model::DamperModel m = fitted;
-    for (std::size_t j = 0; j < kParameters.size(); ++j) kParameters[j].field(m) = at[j];
+    for (std::size_t j = 0; j < count; ++j) kParameters[j].field(m) = at[j];
     predict_force(m, series, force);
     std::vector<double> r;
     r.reserve(series.size());
@@ -44,7 +46,7 @@ std::vector<ParameterEstimate> model_uncertainty(const model::DamperModel& fitte
   };
   const ParameterUncertainty u = parameter_uncertainty(residuals, x);
   std::vector<ParameterEstimate> out;
-  for (std::size_t j = 0; j < kParameters.size(); ++j)
+  for (std::size_t j = 0; j < count; ++j)
     out.push_back({kParameters[j].name, kParameters[j].unit, x[j], u.standard_deviation[j]});
   return out;
 }

@@ -16,9 +16,12 @@ struct ParameterEstimate {
   double standard_deviation = 0.0;  // NaN where the run cannot determine it
 };
 
-// The standard deviations of the damper's core parameters (J-A Eq. 1-10, the fluid's viscosity
-// and the pole length that scale the Bingham force, Eq. 11-13) at the fitted model:
+// The standard deviations of the parameters the base fit identifies, at the final model: the
+// pole length (the yield force's scale, Eq. 12), the viscosity (the viscous force), the sign
+// velocity and, with `field_gain` (the current varies), the coil's turns (H = N I / Le, Eq. 9):
 // sigma^2 (J^T J)^-1 over the series' kept samples (parameter_uncertainty, central differences).
-std::vector<ParameterEstimate> model_uncertainty(const model::DamperModel& fitted, const FitSeries& series);
+// The J-A parameters are mrd-identify's (fitted to B-H loops), not this fit's.
+std::vector<ParameterEstimate> model_uncertainty(const model::DamperModel& fitted, const FitSeries& series,
+                                                 bool field_gain);
 
 }  // namespace mrd::tools

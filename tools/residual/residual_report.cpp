@@ -123,7 +123,7 @@ std::string residual_summary(const std::vector<record::RecordedRun>& runs, const
   return out;
 }
 
-std::string residual_json(const ResidualResult& r) {
+std::string residual_json(const ResidualResult& r, const ForceFitFigures* fit) {
   Json effect_params = Json::object();
   for (const auto& e : r.accepted) {
     Json params = Json::object();
@@ -160,7 +160,7 @@ std::string residual_json(const ResidualResult& r) {
   Json parameters = Json::array();
   for (const ParameterEstimate& p : r.parameters)
     parameters.push_back({{"name", p.name}, {"value", p.value}, {"sd", p.standard_deviation}, {"unit", p.unit}});
-  return json_text({{"samples", r.samples},
+  Json out = {{"samples", r.samples},
                     {"rms_before_N", r.before.all},
                     {"fit_before_percent", r.fit_before_percent},
                     {"fit_after_percent", r.fit_after_percent},
@@ -177,7 +177,9 @@ std::string residual_json(const ResidualResult& r) {
                     {"discovered", discovered},
                     {"screening", {{"excluded_samples", excluded}, {"spans", spans}}},
                     {"set_revisions", r.revisions},
-                    {"unexplained", r.unexplained}});
+                    {"unexplained", r.unexplained}};
+  if (fit != nullptr) out["fit"] = force_fit_json(*fit);
+  return json_text(out);
 }
 
 std::string updated_config(std::string_view config_text, const ResidualResult& r) {
@@ -275,6 +277,28 @@ std::string plot_residual(const FitSeries& s, const ResidualResult& r, const std
   return run_gnuplot(gp.str());
 }
 
+ForceFitTraces residual_traces(const std::vector<record::RecordedRun>& runs, const FitSeries& s,
+                               const ResidualResult& r) {
+  std::string effects;
+  for (const auto& e : r.accepted) effects += (effects.empty() ? "" : ", ") + e;
+  ForceFitTraces traces;
+  traces.name = runs.size() == 1 ? runs.front().name : std::to_string(runs.size()) + " runs";
+  traces.time.resize(s.size());
+  for (std::size_t i = 0; i < s.size(); ++i) traces.time[i] = static_cast<double>(i) * s.sample_period;
+  traces.displacement = s.displacement;
+  traces.velocity = s.velocity;
+  traces.measured = s.force;
+  traces.predicted = r.predicted_after;
+  traces.predicted_label = effects.empty() ? "final model (= base)" : "final model (+ " + effects + ")";
+  traces.baseline = r.predicted_before;
+  traces.baseline_label = "base model";
+  if (r.screened) {
+    traces.keep.resize(s.size());
+    for (std::size_t i = 0; i < s.size(); ++i) traces.keep[i] = s.validation[i] != FitSeries::kExcluded;
+  }
+  return traces;
+}
+
 std::string write_residual_report(const std::vector<record::RecordedRun>& runs, const FitSeries& s,
                                   const ResidualResult& r, const Provenance& provenance, const std::string& directory) {
   const std::string name = runs.size() == 1 ? runs.front().name : std::to_string(runs.size()) + " runs";
@@ -294,26 +318,15 @@ std::string write_residual_report(const std::vector<record::RecordedRun>& runs, 
                   {"RMS error, final model", "rms_after_N", r.after.all, "N"},
                   {"max error, final model", "max_after_N", r.after.max, "N"},
                   {"fit, final model", "fit_after_percent", r.fit_after_percent, "%"}});
-  ForceFitTraces traces;
-  traces.name = name;
-  traces.time.resize(s.size());
-  for (std::size_t i = 0; i < s.size(); ++i) traces.time[i] = static_cast<double>(i) * s.sample_period;
-  traces.displacement = s.displacement;
-  traces.velocity = s.velocity;
-  traces.measured = s.force;
-  traces.predicted = r.predicted_after;
-  traces.predicted_label = r.accepted.empty() ? "final model (= base)" : "final model (+ " + effects + ")";
-  traces.baseline = r.predicted_before;
-  traces.baseline_label = "base model";
-  if (r.screened) {
-    traces.keep.resize(s.size());
-    for (std::size_t i = 0; i < s.size(); ++i) traces.keep[i] = s.validation[i] != FitSeries::kExcluded;
-  }
-  add_force_fit(report, traces);
+  add_force_fit(report, residual_traces(runs, s, r));
 
   report.heading("Parameters");
   std::vector<HtmlReport::Parameter> rows;
-  for (const ParameterEstimate& p : r.parameters) rows.push_back({p.name, p.unit, p.value, p.standard_deviation});
+  for (std::size_t i = 0; i < r.parameters.size(); ++i) {
+    const ParameterEstimate& p = r.parameters[i];
+    const std::string key = "parameters." + std::to_string(i);
+    rows.push_back({p.name, p.unit, p.value, p.standard_deviation, key + ".value", key + ".sd"});
+  }
   report.parameters("Final model: standard deviations from sigma^2 (J^T J)^-1 at the fit (central differences over "
                     "the fitting series)", rows);
   std::vector<std::vector<std::string>> effect_rows;

@@ -672,7 +672,7 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   for (std::size_t i = 0; i < full.size(); ++i) kept[i] = full.validation[i] != FitSeries::kExcluded;
   result.fit_before_percent = nrmse_fit_percent(full.force, result.predicted_before, kept);
   result.fit_after_percent = nrmse_fit_percent(full.force, result.predicted_after, kept);
-  result.parameters = model_uncertainty(result.final_model, s.fit_series);
+  result.parameters = model_uncertainty(result.final_model, s.fit_series, base_fit_space.bounds.dimension() == 2);
   result.unexplained = describe(result.structure_after);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return result;
