@@ -2,10 +2,13 @@
 // loops, by minimising the RMSE of B (Eq. 15). See docs/IDENTIFICATION.md.
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include "config/config_loader.hpp"
 #include "record/csv.hpp"
+#include "tools/toml_patch.hpp"
 #include "tools/identification/identification_study.hpp"
 #include "tools/identification/identify_report.hpp"
 #include "tools/identification/start_point.hpp"
@@ -190,7 +193,7 @@ struct StudyArguments {
 struct FitArguments {
   CurveArguments curve;
   IdentifyOptions options;
-  std::string algo = "improved-pso", start_text, json_path, plot_dir, report_dir;
+  std::string algo = "improved-pso", start_text, json_path, plot_dir, report_dir, config_path;
   std::vector<std::string> argv;  // the command line, for the report's provenance
   std::vector<std::string> bound_texts;
   bool polish = false;
@@ -223,6 +226,36 @@ int run_fit(const FitArguments& args) {
   if (!args.plot_dir.empty()) {
     const std::string why = plot_identification(result, objective, curve, args.plot_dir);
     if (!why.empty()) std::fprintf(stderr, "mrd-identify: plot skipped: %s\n", why.c_str());
+  }
+  if (!args.config_path.empty()) {
+    // The identified set into [damper.jiles_atherton] of the file (patched in place: its order
+    // and comments stay), or of the compiled-in default when the file does not exist yet.
+    std::error_code ec;
+    const bool existing = std::filesystem::exists(args.config_path, ec);
+    std::string text;
+    try {
+      text = existing ? mrd::record::read_text_file(args.config_path) : std::string(mrd::config::default_config_text());
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "mrd-identify: --write-config: %s\n", e.what());
+      return 3;
+    }
+    const Point best = result.polish ? result.polish->best : result.search.best;
+    toml::table ja;
+    for (int j = 0; j < kParameterCount; ++j) ja.insert(std::string(kParameterNames[static_cast<std::size_t>(j)]), best[j]);
+    toml::table damper;
+    damper.insert("jiles_atherton", std::move(ja));
+    toml::table values;
+    values.insert("damper", std::move(damper));
+    try {
+      text = patch_toml(text, values);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "mrd-identify: --write-config %s: %s\n", args.config_path.c_str(), e.what());
+      return 1;
+    }
+    if (!write_file(args.config_path, text)) {
+      std::fprintf(stderr, "mrd-identify: cannot write %s\n", args.config_path.c_str());
+      return 3;
+    }
   }
   if (!args.report_dir.empty()) {
     std::vector<const char*> words;
@@ -300,6 +333,9 @@ int main(int argc, char** argv) {
   fit_cmd->add_flag("--polish", fit.polish, "refine with Levenberg-Marquardt after the global search");
   fit_cmd->add_option("--json", fit.json_path, "write the result as JSON");
   fit_cmd->add_option("--plot", fit.plot_dir, "write the B-H overlay and convergence PNGs here");
+  fit_cmd->add_option("--write-config", fit.config_path,
+                      "write the identified set into [damper.jiles_atherton] of this config (patched in place, "
+                      "comments kept; the default config when the file does not exist)");
   fit_cmd->add_option("--report", fit.report_dir,
                       "write report.html here: B-H measured and fitted, residual, parameters with standard "
                       "deviations, provenance (docs/IDENTIFICATION.md)");

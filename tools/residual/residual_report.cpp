@@ -15,6 +15,7 @@
 #include "tools/report/force_fit.hpp"
 #include "tools/residual/candidate_effects.hpp"
 #include "tools/text_format.hpp"
+#include "tools/toml_patch.hpp"
 
 namespace mrd::tools {
 
@@ -183,19 +184,16 @@ std::string residual_json(const ResidualResult& r, const ForceFitFigures* fit) {
 }
 
 std::string updated_config(std::string_view config_text, const ResidualResult& r) {
-  toml::table root;
   try {
-    root = toml::parse(config_text);
+    (void)toml::parse(config_text);
   } catch (const toml::parse_error& e) {
     throw std::runtime_error(std::string("the starting config does not parse: ") + std::string(e.description()));
   }
   const model::DamperModel& m = r.final_model;
-  auto* damper = root["damper"].as_table();
-  if (damper == nullptr) damper = root.insert_or_assign("damper", toml::table{}).first->second.as_table();
+  toml::table damper;
   const auto set = [&](const char* table, const char* key, double value) {
-    auto* t = (*damper)[table].as_table();
-    if (t == nullptr) t = damper->insert_or_assign(table, toml::table{}).first->second.as_table();
-    t->insert_or_assign(key, value);
+    if (!damper.contains(table)) damper.insert(table, toml::table{});
+    damper[table].as_table()->insert_or_assign(key, value);
   };
   set("jiles_atherton", "Ms", m.jiles_atherton.Ms);
   set("jiles_atherton", "a", m.jiles_atherton.a);
@@ -213,16 +211,20 @@ std::string updated_config(std::string_view config_text, const ResidualResult& r
   set("geometry", "gap", m.geometry.gap);
   set("geometry", "piston_diameter", m.geometry.piston_diameter);
   set("geometry", "sign_velocity_scale", m.geometry.sign_velocity_scale);
-  const toml::table effects = toml::parse(config::effects_toml(m.effects));
-  damper->insert_or_assign("effects", *effects["damper"]["effects"].as_table());
-  std::ostringstream out;
-  out << "# Written by mrd-residual: the damper fitted to the run";
+  toml::table effects = toml::parse(config::effects_toml(m.effects));
+  damper.insert_or_assign("effects", *effects["damper"]["effects"].as_table());
+  toml::table values;
+  values.insert("damper", std::move(damper));
+  // Values patched in place: the starting config's order and comments stay (tools/toml_patch).
+  std::string header = "# Written by mrd-residual: the damper fitted to the run";
   if (!r.accepted.empty()) {
-    out << ", with";
-    for (const auto& e : r.accepted) out << ' ' << e;
+    header += ", with";
+    for (const auto& e : r.accepted) header += ' ' + e;
   }
-  out << ". Every other key is the starting config's.\n" << root << '\n';
-  return out.str();
+  header += ". Every other key is the starting config's.\n";
+  std::string text = patch_toml(config_text, values);
+  if (text.rfind("# Written by mrd-residual:", 0) == 0) text.erase(0, text.find('\n') + 1);
+  return header + text;
 }
 
 std::string plot_residual(const FitSeries& s, const ResidualResult& r, const std::string& name,

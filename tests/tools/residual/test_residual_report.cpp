@@ -60,6 +60,12 @@ TEST(ResidualReport, UpdatedConfigLoadsWithTheEffectOnAndTheFittedDamper) {
   // The 1 kN class: 70 N preload and 500 N/m at size 1.
   EXPECT_NEAR(d.effects.get<mrd::model::GasSpringEffect>().preload, 70.0, 5.0);
   EXPECT_NEAR(d.effects.get<mrd::model::GasSpringEffect>().stiffness, 500.0, 100.0);
+  // Patched in place: the default's order (a sorted writer puts [backends] first) and comments stay.
+  EXPECT_LT(text.find("[loop]"), text.find("[backends]"));
+  EXPECT_NE(text.find("[damper.effects.gas_spring]   # accumulator: F0 + k x\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("[damper.circuit]              # Eq. 9: H = N I / Le\n"), std::string::npos) << text;
+  // Written again over its own output, only the values it changes change.
+  EXPECT_EQ(updated_config(text, r), text);
 }
 
 }  // namespace
