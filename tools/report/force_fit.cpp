@@ -73,12 +73,13 @@ ForceFitFigures add_force_fit(HtmlReport& report, const ForceFitTraces& t) {
       "force", {"time_s", "displacement_mm", "velocity_mm_s", "measured_N", "predicted_N", "residual_N", "baseline_N", "set_aside_N"},
       {&t.time, &x_mm, &v_mm, &t.measured, &t.predicted, &residual, &baseline, &aside});
   const std::string q = "'" + dat + "'";
+  // The baseline first, so that the measured and the final prediction are drawn over it.
   const auto overlay = [&](int x, const char* x_label, const char* style) {
-    std::string out = format("set xlabel '%s'\nset ylabel 'force [N]'\nplot %s using %d:4 with %s lc rgb '#555555' title 'measured', "
-                             "%s using %d:5 with %s lc rgb '#d62728' title '%s'",
-                             x_label, q.c_str(), x, style, q.c_str(), x, style, t.predicted_label.c_str());
+    std::string out = format("set xlabel '%s'\nset ylabel 'force [N]'\nplot ", x_label);
     if (!t.baseline.empty())
-      out += format(", %s using %d:7 with %s lc rgb '#1f77b4' title '%s'", q.c_str(), x, style, t.baseline_label.c_str());
+      out += format("%s using %d:7 with %s lc rgb '#9ecae1' title '%s', ", q.c_str(), x, style, t.baseline_label.c_str());
+    out += format("%s using %d:4 with %s lc rgb '#555555' title 'measured', %s using %d:5 with %s lc rgb '#d62728' title '%s'",
+                  q.c_str(), x, style, q.c_str(), x, style, t.predicted_label.c_str());
     if (!t.keep.empty())
       out += format(", %s using %d:8 with points pt 6 ps 0.5 lc rgb '#ff7f0e' title 'set aside by screening'", q.c_str(), x);
     return out + "\n";

@@ -204,7 +204,7 @@ std::string HtmlReport::write() {
     std::string svg = svg_element((fs::path(directory_) / (p.name + ".svg")).string());
     if (svg.empty()) svg = "<p>(plot not drawn: " + html_escape(why.empty() ? "no svg" : why) + ")</p>";
     pieces_[at] = "<figure id=\"" + html_escape(p.name) + "\">\n" + svg + "\n<figcaption>" + html_escape(p.caption) +
-                  " (data: " + html_escape(p.name) + ".gp)</figcaption></figure>\n";
+                  " (script: " + html_escape(p.name) + ".gp)</figcaption></figure>\n";
   }
   std::ofstream out(html_path());
   out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" << html_escape(title_)

@@ -311,7 +311,7 @@ std::string write_residual_report(const std::vector<record::RecordedRun>& runs, 
     for (const auto& e : r.accepted) effects += (effects.empty() ? "" : ", ") + e;
   }
   report.paragraph(format("%zu samples; the J-A + Bingham base model fitted, then candidate effects tried on half of "
-                          "the run and validated on the other half. Accepted: %s. Unexplained: %s.",
+                          "the run and validated on the other half. Accepted: %s. Unexplained: %s",
                           r.samples, effects.c_str(), r.unexplained.c_str()));
   report.figures("Before and after (as the JSON)",
                  {{"RMS error, base model", "rms_before_N", r.before.all, "N"},
