@@ -9,6 +9,7 @@
 #include "tools/gnuplot.hpp"
 #include "tools/json.hpp"
 #include "tools/report/fit_statistics.hpp"
+#include "tools/report/force_fit.hpp"
 #include "tools/text_format.hpp"
 
 namespace mrd::tools {
@@ -205,16 +206,9 @@ std::string write_identify_report(const IdentifyResult& r, const IdentifyStatist
   const std::size_t lags = std::min<std::size_t>(100, B.size() / 4);
   std::vector<double> point_residual(B.size());
   for (std::size_t k = 0; k < B.size(); ++k) point_residual[k] = B[k] - fitted[k];
-  const std::vector<double> r_acf = autocorrelation(point_residual, lags);
-  const double bound = autocorrelation_bound_95(point_residual.size());
-  std::vector<double> lag(r_acf.size()), upper(r_acf.size(), bound), lower(r_acf.size(), -bound);
-  for (std::size_t k = 0; k < lag.size(); ++k) lag[k] = static_cast<double>(k);
-  const std::string acf = report.data("autocorrelation", {"lag_points", "r", "upper_95", "lower_95"}, {&lag, &r_acf, &upper, &lower});
-  report.plot("residual_autocorrelation", format("autocorrelation of the B residual, 95 %% bounds +-%.3g", bound),
-              "set xlabel 'lag [points]'\nset ylabel 'autocorrelation [-]'\nset yrange [-1:1]\nplot '" + acf +
-                  "' using 1:2 with impulses lw 2 lc rgb '#1f77b4' title 'r(k)', '" + acf +
-                  "' using 1:3 with lines dt 2 lc rgb '#d62728' title '95 % bound', '" + acf +
-                  "' using 1:4 with lines dt 2 lc rgb '#d62728' notitle\n");
+  add_autocorrelation_plot(report, point_residual, lags, 1.0, "lag [points]",
+                           format("autocorrelation of the B residual, 95 %% bounds +-%.3g",
+                                  autocorrelation_bound_95(point_residual.size())));
   report.heading("Convergence");
   std::vector<double> evaluations, fitness;
   for (const auto& c : r.search.convergence) {

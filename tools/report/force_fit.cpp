@@ -49,6 +49,20 @@ Json force_fit_json(const ForceFitFigures& f) {
           {"acf_bound", f.acf_bound},       {"acf_outside_fraction", f.acf_outside}};
 }
 
+void add_autocorrelation_plot(HtmlReport& report, const std::vector<double>& residual, std::size_t lags,
+                              double lag_step, const std::string& lag_label, const std::string& caption) {
+  const std::vector<double> r = autocorrelation(residual, lags);
+  const double bound = autocorrelation_bound_95(residual.size());
+  std::vector<double> lag(r.size()), upper(r.size(), bound), lower(r.size(), -bound);
+  for (std::size_t k = 0; k < r.size(); ++k) lag[k] = static_cast<double>(k) * lag_step;
+  const std::string acf = report.data("autocorrelation", {"lag", "r", "upper_95", "lower_95"}, {&lag, &r, &upper, &lower});
+  report.plot("residual_autocorrelation", caption,
+              "set xlabel '" + lag_label + "'\nset ylabel 'autocorrelation [-]'\nset yrange [-1:1]\nplot '" + acf +
+                  "' using 1:2 with impulses lw 2 lc rgb '#1f77b4' title 'r(k)', '" + acf +
+                  "' using 1:3 with lines dt 2 lc rgb '#d62728' title '95 % bound', '" + acf +
+                  "' using 1:4 with lines dt 2 lc rgb '#d62728' notitle\n");
+}
+
 ForceFitFigures add_force_fit(HtmlReport& report, const ForceFitTraces& t) {
   const ForceFitFigures f = force_fit_figures(t);
   report.heading("Measured and predicted force");
@@ -98,22 +112,12 @@ ForceFitFigures add_force_fit(HtmlReport& report, const ForceFitTraces& t) {
   report.plot("residual_time", t.name + ": residual, measured - predicted, against time",
               "set xlabel 'time [s]'\nset ylabel 'residual [N]'\nplot " + q +
                   " using 1:6 with lines lw 1 lc rgb '#1f77b4' title 'measured - predicted'\n");
-  const std::vector<double> r = autocorrelation([&] {
-    std::vector<double> e;
-    for (std::size_t i = 0; i < n; ++i)
-      if (t.keep.empty() || t.keep[i]) e.push_back(residual[i]);
-    return e;
-  }(), f.lags);
-  std::vector<double> lag(r.size()), upper(r.size(), f.acf_bound), lower(r.size(), -f.acf_bound);
-  for (std::size_t k = 0; k < r.size(); ++k) lag[k] = static_cast<double>(k) * f.lag_step_s * 1e3;
-  const std::string acf = report.data("autocorrelation", {"lag_ms", "r", "upper_95", "lower_95"}, {&lag, &r, &upper, &lower});
-  report.plot("residual_autocorrelation",
-              format("%s: autocorrelation of the residual, 95 %% bounds +-%.3g (%.0f %% of lags outside)", t.name.c_str(),
-                     f.acf_bound, 100.0 * f.acf_outside),
-              "set xlabel 'lag [ms]'\nset ylabel 'autocorrelation [-]'\nset yrange [-1:1]\nplot '" + acf +
-                  "' using 1:2 with impulses lw 2 lc rgb '#1f77b4' title 'r(k)', '" + acf +
-                  "' using 1:3 with lines dt 2 lc rgb '#d62728' title '95 % bound', '" + acf +
-                  "' using 1:4 with lines dt 2 lc rgb '#d62728' notitle\n");
+  std::vector<double> kept;
+  for (std::size_t i = 0; i < n; ++i)
+    if (t.keep.empty() || t.keep[i]) kept.push_back(residual[i]);
+  add_autocorrelation_plot(report, kept, f.lags, 1e3 * f.lag_step_s, "lag [ms]",
+                           format("%s: autocorrelation of the residual, 95 %% bounds +-%.3g (%.0f %% of lags outside)",
+                                  t.name.c_str(), f.acf_bound, 100.0 * f.acf_outside));
   report.plot("residual_velocity", t.name + ": residual against velocity (structure left in the model)",
               "set xlabel 'velocity [mm/s]'\nset ylabel 'residual [N]'\nplot " + q +
                   " using 3:6 with points pt 7 ps 0.2 lc rgb '#1f77b4' title 'measured - predicted'\n");

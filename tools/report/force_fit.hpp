@@ -39,6 +39,11 @@ struct ForceFitFigures {
 // acf_lags, acf_lag_step_s, acf_bound, acf_outside_fraction. The report's cells name them "fit.*".
 [[nodiscard]] Json force_fit_json(const ForceFitFigures& f);
 
+// The plot "residual_autocorrelation": r(k) of `residual` for k = 0..lags as impulses, at lag
+// k * lag_step on an axis labelled `lag_label`, between the 95 % bounds +-1.96/sqrt(N).
+void add_autocorrelation_plot(HtmlReport& report, const std::vector<double>& residual, std::size_t lags,
+                              double lag_step, const std::string& lag_label, const std::string& caption);
+
 // Writes the section (figures table and six plots) into the report.
 ForceFitFigures add_force_fit(HtmlReport& report, const ForceFitTraces& t);
 
