@@ -103,12 +103,38 @@ class RunCsvParser {
       if (!ignored.empty()) run_.notes.push_back("columns not mapped, ignored: " + ignored);
       return;
     }
+    if (is_controller_telemetry(names)) {
+      read_telemetry_header(names);
+      return;
+    }
     for (std::size_t i = 0; i < names.size(); ++i) {
       if (names[i].empty()) throw fail(std::to_string(i + 1), "empty column name");
       const UnitLookup lookup = column_unit(names[i]);
       if (!lookup.unit) throw fail(names[i], lookup.error);
       use(std::string(names[i]), i, *lookup.unit);
     }
+  }
+
+  // The controller's own telemetry (runtime/csv_telemetry_writer.cpp) names columns that are
+  // no run quantity (cycle, sample, state, ...) and three currents: recognised by its first
+  // columns, it is read without --columns.
+  static bool is_controller_telemetry(const std::vector<std::string_view>& names) {
+    return names.size() >= 12 && names[0] == "cycle" && names[1] == "time_s" && names[2] == "displacement_mm" &&
+           names[3] == "sample" && names[4] == "measured_current_A";
+  }
+
+  void read_telemetry_header(const std::vector<std::string_view>& names) {
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      const std::string_view n = names[i];
+      // The coil current the observer integrates is the measured one (the loop's feedback).
+      const std::string_view as = n == "measured_current_A" ? std::string_view("current_A") : n;
+      if (n == "time_s" || n == "displacement_mm" || n == "velocity_mm_s" || n == "measured_current_A")
+        use(std::string(n), i, *column_unit(as).unit);
+    }
+    run_.notes.push_back(
+        "the controller's telemetry (recognised by its header): time_s, displacement_mm, velocity_mm_s and "
+        "measured_current_A as the coil current; its force_kN is the observer's own estimate, not a "
+        "measurement, so the run has no measured force");
   }
 
   std::string header_list() const {

@@ -6,7 +6,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   # libboost-dev: Boost.Lockfree for the rings; Boost.Odeint for the tests' J-A reference.
   libeigen3-dev libboost-dev libmodbus-dev libgpiod-dev libtomlplusplus-dev libcli11-dev
-  nlohmann-json3-dev  # the tools' JSON reports (mrd-force-run)
+  nlohmann-json3-dev  # the host tools' JSON (header-only, Multi-Arch foreign)
   libsystemd-dev  # sd_notify: the unit's Type=notify and watchdog
   rt-tests        # cyclictest, the reference of scripts/bench-loop.sh
   libpagmo-dev

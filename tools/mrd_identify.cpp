@@ -7,7 +7,9 @@
 #include <sstream>
 
 #include "common/cli/command_line.hpp"
+#include "config/config_loader.hpp"
 #include "record/csv.hpp"
+#include "tools/toml_patch.hpp"
 #include "tools/identification/identification_study.hpp"
 #include "tools/identification/identify_report.hpp"
 #include "tools/identification/start_point.hpp"
@@ -194,7 +196,8 @@ struct StudyArguments {
 struct FitArguments {
   CurveArguments curve;
   IdentifyOptions options;
-  std::string algo = "improved-pso", start_text, json_path, plot_dir;
+  std::string algo = "improved-pso", start_text, json_path, plot_dir, report_dir, config_path;
+  std::vector<std::string> argv;  // the command line, for the report's provenance
   std::vector<std::string> bound_texts;
   bool polish = false;
   bool quiet = false;
@@ -221,10 +224,52 @@ int run_fit(const FitArguments& args) {
   const IdentifyResult result = identify(objective, curve, options);
   progress.reset();  // ends the status line before the result
   std::fputs(identify_text(result, objective).c_str(), stdout);
-  if (!args.json_path.empty() && !write_file(args.json_path, identify_json(result))) return mrd::cli::kIo;
+  const IdentifyStatistics statistics = identify_statistics(result, objective, curve);
+  if (!args.json_path.empty() && !write_file(args.json_path, identify_json(result, &statistics))) return mrd::cli::kIo;
   if (!args.plot_dir.empty()) {
     const std::string why = plot_identification(result, objective, curve, args.plot_dir);
     if (!why.empty()) std::fprintf(stderr, "mrd-identify: plot skipped: %s\n", why.c_str());
+  }
+  if (!args.config_path.empty()) {
+    // The identified set into [damper.jiles_atherton] of the file (patched in place: its order
+    // and comments stay), or of the compiled-in default when the file does not exist yet.
+    std::error_code ec;
+    const bool existing = std::filesystem::exists(args.config_path, ec);
+    std::string text;
+    try {
+      text = existing ? mrd::record::read_text_file(args.config_path) : std::string(mrd::config::default_config_text());
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "mrd-identify: --write-config: %s\n", e.what());
+      return mrd::cli::kIo;
+    }
+    const Point best = result.polish ? result.polish->best : result.search.best;
+    toml::table ja;
+    for (int j = 0; j < kParameterCount; ++j) ja.insert(std::string(kParameterNames[static_cast<std::size_t>(j)]), best[j]);
+    toml::table damper;
+    damper.insert("jiles_atherton", std::move(ja));
+    toml::table values;
+    values.insert("damper", std::move(damper));
+    try {
+      text = patch_toml(text, values);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "mrd-identify: --write-config %s: %s\n", args.config_path.c_str(), e.what());
+      return mrd::cli::kUsage;
+    }
+    if (!write_file(args.config_path, text)) {
+      std::fprintf(stderr, "mrd-identify: cannot write %s\n", args.config_path.c_str());
+      return mrd::cli::kIo;
+    }
+  }
+  if (!args.report_dir.empty()) {
+    std::vector<const char*> words;
+    for (const auto& w : args.argv) words.push_back(w.c_str());
+    const Provenance provenance = provenance_of("mrd-identify", static_cast<int>(words.size()), words.data(),
+                                                {args.curve.file}, std::to_string(options.seed));
+    if (const auto why = write_identify_report(result, statistics, objective, curve, provenance, args.report_dir);
+        !why.empty()) {
+      std::fprintf(stderr, "mrd-identify: report: %s\n", why.c_str());
+      return mrd::cli::kIo;
+    }
   }
   return 0;
 }
@@ -278,6 +323,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   FitArguments fit;
+  fit.argv.assign(argv, argv + argc);
   auto* fit_cmd = app.add_subcommand("fit", "fit Ms, a, alpha, k, c to the loops of a file");
   fit.curve.add_to(*fit_cmd);
   add_search_options(*fit_cmd, fit.options);
@@ -290,6 +336,12 @@ int main(int argc, char** argv) {
   fit_cmd->add_flag("--quiet,-q", fit.quiet, "no progress line on stderr (it shows only when stderr is a terminal)");
   fit_cmd->add_option("--json", fit.json_path, "write the result as JSON");
   fit_cmd->add_option("--plot", fit.plot_dir, "folder for the B-H overlay and convergence PNGs");
+  fit_cmd->add_option("--write-config", fit.config_path,
+                      "write the identified set into [damper.jiles_atherton] of this config (patched in place, "
+                      "comments kept; the default config when the file does not exist)");
+  fit_cmd->add_option("--report", fit.report_dir,
+                      "write report.html here: B-H measured and fitted, residual, parameters with standard "
+                      "deviations, provenance (docs/IDENTIFICATION.md)");
 
   CurveArguments evaluate_curve;
   std::string evaluate_text;

@@ -31,7 +31,7 @@ double thread_cpu_seconds() {
 int main(int argc, char** argv) {
   CLI::App app{"Replay a recorded damper run through the controller's observer and compensator"};
   mrd::cli::set_up(app, "mrd-replay");
-  std::string run_path, plot_dir, csv_path, json_path, candump_path;
+  std::string run_path, plot_dir, csv_path, json_path, candump_path, report_dir;
   ReplayOptions replay_options;
   app.add_option(
          "run", run_path,
@@ -50,6 +50,9 @@ int main(int argc, char** argv) {
   app.add_option("--plot", plot_dir,
                  "folder for the force-displacement, residual and current PNGs");
   app.add_option("--csv", csv_path, "write the per-sample replay as CSV");
+  app.add_option("--report", report_dir,
+                 "write report.html here: the force fit, the residual's structure, the current, provenance "
+                 "(docs/CLOSING-THE-LOOP.md)");
   app.add_option("--json", json_path, "write the figures as JSON");
   app.add_option("--write-candump", candump_path,
                  "also write the run as a candump -l log (LVDT and current feedback frames; "
@@ -93,6 +96,15 @@ int main(int argc, char** argv) {
     if (!plot_dir.empty()) {
       if (const auto why = plot_replay(context, plot_dir); !why.empty()) {
         std::fprintf(stderr, "mrd-replay: plot skipped: %s\n", why.c_str());
+      }
+    }
+    if (!report_dir.empty()) {
+      std::vector<std::string> inputs = {run_path};
+      if (!run_options.config_path().empty()) inputs.push_back(run_options.config_path());
+      if (const auto why = write_replay_report(context, provenance_of("mrd-replay", argc, argv, inputs), report_dir);
+          !why.empty()) {
+        std::fprintf(stderr, "mrd-replay: report: %s\n", why.c_str());
+        status = 3;
       }
     }
     return status;

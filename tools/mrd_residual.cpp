@@ -33,7 +33,7 @@ int main(int argc, char** argv) {
   CLI::App app{"Fit the damper model to a recorded run, trace the residual to missing effects, add them"};
   mrd::cli::set_up(app, "mrd-residual");
   std::vector<std::string> run_paths;
-  std::string json_path, plot_dir, config_out;
+  std::string json_path, plot_dir, config_out, report_dir;
   FitSeriesOptions series_options;
   ResidualOptions options;
   app.add_option("runs", run_paths,
@@ -44,6 +44,9 @@ int main(int argc, char** argv) {
   app.add_option("--json", json_path, "write the result as JSON");
   app.add_option("--write-config", config_out, "write the updated config (the fitted damper, accepted effects on)");
   app.add_option("--plot", plot_dir, "folder for the force-displacement, residual-time and residual-phase PNGs");
+  app.add_option("--report", report_dir,
+                 "write report.html here: fit, residual structure, parameters with standard deviations, "
+                 "candidates, screening, provenance (docs/CLOSING-THE-LOOP.md)");
   bool spencer = false;
   app.add_flag("--reference-spencer-dyke", spencer,
                "also report Spencer 1997's modified Bouc-Wen model with its published parameters for "
@@ -101,7 +104,8 @@ int main(int argc, char** argv) {
                   s.rms, s.max, s.nrmse, result.before.all / ours.measured_range, ours.nrmse);
     }
     int status = 0;
-    if (!json_path.empty() && !mrd::record::write_text_file(json_path, residual_json(result))) {
+    const ForceFitFigures fit = force_fit_figures(residual_traces(runs, series, result));
+    if (!json_path.empty() && !mrd::record::write_text_file(json_path, residual_json(result, &fit))) {
       std::fprintf(stderr, "mrd-residual: cannot write %s\n", json_path.c_str());
       status = mrd::cli::kIo;
     }
@@ -118,6 +122,16 @@ int main(int argc, char** argv) {
       const std::string name = runs.size() == 1 ? runs.front().name : std::to_string(runs.size()) + " runs";
       if (const auto why = plot_residual(series, result, name, plot_dir); !why.empty())
         std::fprintf(stderr, "mrd-residual: plot skipped: %s\n", why.c_str());
+    }
+    if (!report_dir.empty()) {
+      std::vector<std::string> inputs = run_paths;
+      if (!run_options.config_path().empty()) inputs.push_back(run_options.config_path());
+      const Provenance provenance =
+          provenance_of("mrd-residual", argc, argv, inputs, std::to_string(options.seed));
+      if (const auto why = write_residual_report(runs, series, result, provenance, report_dir); !why.empty()) {
+        std::fprintf(stderr, "mrd-residual: report: %s\n", why.c_str());
+        status = 3;
+      }
     }
     return status;
   } catch (const mrd::record::InputError& e) {

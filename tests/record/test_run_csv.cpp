@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <limits>
 #include <string>
 
@@ -7,6 +8,8 @@
 #include "record/run_csv.hpp"
 #include "record/run_csv_writer.hpp"
 #include "record/run_reader.hpp"
+#include "runtime/csv_telemetry_writer.hpp"
+#include "runtime/telemetry_record.hpp"
 
 namespace {
 
@@ -285,4 +288,32 @@ TEST(RunCsvWriter, AWrittenRunReadsBackInSi) {
   EXPECT_DOUBLE_EQ(run.force[1], 1250.0);
   EXPECT_DOUBLE_EQ(run.displacement[0], 0.001);
   EXPECT_DOUBLE_EQ(run.B[1], 0.3);
+}
+
+// The controller's own telemetry file reads without --columns: its header is recognised.
+TEST(RunCsv, TheControllersTelemetryReadsWithoutAColumnMapping) {
+  std::string text = mrd::runtime::CsvTelemetryWriter::header();
+  const mrd::hal::Timestamp start{};
+  for (int i = 0; i < 3; ++i) {
+    mrd::runtime::TelemetryRecord r;
+    r.cycle = static_cast<std::uint64_t>(i);
+    r.time = start + std::chrono::milliseconds(i);
+    r.displacement = 0.001 * i;      // [m]
+    r.measured_current = 0.5 + i;    // [A]
+    r.scheduled_current = 9.0;       // a second current the reader must not take
+    r.velocity = 0.02;               // [m/s]
+    r.force = 1234.0;                // the observer's, not a measurement
+    char line[512];
+    mrd::runtime::CsvTelemetryWriter::format(r, start, line, sizeof line);
+    text += line;
+  }
+  const auto run = mrd::record::parse_run_csv(text, "telemetry.csv", {});
+  ASSERT_EQ(run.size(), 3u);
+  EXPECT_DOUBLE_EQ(run.time[2], 0.002);
+  EXPECT_NEAR(run.displacement[2], 0.002, 1e-9);
+  EXPECT_DOUBLE_EQ(run.coil[1], 1.5);
+  EXPECT_NEAR(run.velocity[0], 0.02, 1e-9);
+  EXPECT_FALSE(run.has_force());
+  ASSERT_FALSE(run.notes.empty());
+  EXPECT_NE(run.notes.front().find("controller's telemetry"), std::string::npos);
 }

@@ -1,5 +1,6 @@
 #include "tools/identification/identify_report.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -7,41 +8,75 @@
 
 #include "tools/gnuplot.hpp"
 #include "tools/json.hpp"
+#include "tools/report/fit_statistics.hpp"
+#include "tools/report/force_fit.hpp"
+#include "tools/text_format.hpp"
 
 namespace mrd::tools {
 
 namespace {
 
-std::string params_json(const Point& x) {
-  std::string out = "{";
-  for (int j = 0; j < kParameterCount; ++j) {
-    out += (j ? ", \"" : "\"") + std::string(kParameterNames[static_cast<std::size_t>(j)]) +
-           "\": " + json_number(x[j]);
-  }
-  return out + "}";
+Json params_json(const Point& x) {
+  Json out = Json::object();
+  for (int j = 0; j < kParameterCount; ++j) out[std::string(kParameterNames[static_cast<std::size_t>(j)])] = x[j];
+  return out;
+}
+
+Point final_point(const IdentifyResult& r) { return r.polish ? r.polish->best : r.search.best; }
+
+std::vector<double> measured_B(const BHCurve& curve) {
+  std::vector<double> B;
+  for (const auto& loop : curve.loops) B.insert(B.end(), loop.B.begin(), loop.B.end());
+  return B;
 }
 
 }  // namespace
 
-std::string identify_json(const IdentifyResult& r) {
-  std::ostringstream out;
-  out << "{\n  \"algo\": \"" << algorithm_name(r.algorithm) << "\",\n"
-      << "  \"params\": " << params_json(r.search.best) << ",\n"
-      << "  \"rmse_T\": " << json_number(r.fit.rmse) << ",\n"
-      << "  \"evaluations\": " << r.search.evaluations << ",\n"
-      << "  \"wall_s\": " << json_number(r.wall_s) << ",\n"
-      << "  \"rounds\": " << r.rounds << ",\n"
-      << "  \"start\": " << params_json(r.start) << ",\n"
-      << "  \"bounds\": {\"lower\": " << params_json(r.bounds.lower)
-      << ", \"upper\": " << params_json(r.bounds.upper) << "}";
+IdentifyStatistics identify_statistics(const IdentifyResult& r, const BHObjective& objective, const BHCurve& curve) {
+  const std::vector<double> B = measured_B(curve);
+  const Point best = final_point(r);
+  IdentifyStatistics out;
+  out.fit_percent = nrmse_fit_percent(B, objective.simulate(to_params(best)));
+  const std::vector<double> x(best.data(), best.data() + best.size());
+  out.uncertainty = parameter_uncertainty(
+      [&](const std::vector<double>& at) {
+        Point p(kParameterCount);
+        for (int j = 0; j < kParameterCount; ++j) p[j] = at[static_cast<std::size_t>(j)];
+        std::vector<double> e = objective.simulate(to_params(p));
+        for (std::size_t i = 0; i < e.size(); ++i) e[i] = B[i] - e[i];
+        return e;
+      },
+      x);
+  return out;
+}
+
+std::string identify_json(const IdentifyResult& r, const IdentifyStatistics* statistics) {
+  Json out = {{"algo", std::string(algorithm_name(r.algorithm))},
+              {"params", params_json(r.search.best)},
+              {"rmse_T", r.fit.rmse},
+              {"evaluations", r.search.evaluations},
+              {"wall_s", r.wall_s},
+              {"rounds", r.rounds},
+              {"start", params_json(r.start)},
+              {"bounds", {{"lower", params_json(r.bounds.lower)}, {"upper", params_json(r.bounds.upper)}}}};
   if (r.polish) {
-    out << ",\n  \"polish\": {\"method\": \"levenberg-marquardt\", \"params\": "
-        << params_json(r.polish->best) << ", \"rmse_T\": " << json_number(r.polish->rmse)
-        << ", \"evaluations\": " << r.polish->evaluations
-        << ", \"wall_s\": " << json_number(r.polish_wall_s) << "}";
+    out["polish"] = {{"method", "levenberg-marquardt"},
+                     {"params", params_json(r.polish->best)},
+                     {"rmse_T", r.polish->rmse},
+                     {"evaluations", r.polish->evaluations},
+                     {"wall_s", r.polish_wall_s}};
   }
-  out << "\n}\n";
-  return out.str();
+  if (statistics) {
+    out["fit_percent"] = statistics->fit_percent;
+    out["sigma_T"] = statistics->uncertainty.sigma;
+    Json sd = Json::object();
+    for (int j = 0; j < kParameterCount; ++j) {
+      sd[std::string(kParameterNames[static_cast<std::size_t>(j)])] =
+          statistics->uncertainty.standard_deviation[static_cast<std::size_t>(j)];
+    }
+    out["params_sd"] = sd;
+  }
+  return json_text(out);
 }
 
 std::string identify_text(const IdentifyResult& r, const BHObjective& objective) {
@@ -57,14 +92,13 @@ std::string identify_text(const IdentifyResult& r, const BHObjective& objective)
                   static_cast<long long>(evaluations), wall);
     out << line;
   };
-  out << objective.points() << " points; rms B " << json_number(rms) << " T\n";
+  out << objective.points() << " points; rms B " << format("%.9g", rms) << " T\n";
   if (r.rounds > 1) {
     out << "the best point reached a face of the estimated box; searched " << r.rounds
         << " boxes, each re-centred on the best so far\n";
   }
-  out << "start          Ms=" << json_number(r.start[0]) << " a=" << json_number(r.start[1])
-      << " alpha=" << json_number(r.start[2]) << " k=" << json_number(r.start[3])
-      << " c=" << json_number(r.start[4]) << "\n";
+  out << format("start          Ms=%.9g a=%.9g alpha=%.9g k=%.9g c=%.9g\n", r.start[0], r.start[1], r.start[2],
+                r.start[3], r.start[4]);
   row(std::string(algorithm_name(r.algorithm)).c_str(), r.search.best, r.fit.rmse,
       r.search.evaluations, r.wall_s);
   if (r.fit.penalised) out << "warning: the best point is penalised (non-physical)\n";
@@ -99,7 +133,7 @@ std::string plot_identification(const IdentifyResult& r, const BHObjective& obje
   gp << "set terminal pngcairo size 900,650\n"
      << "set output '" << (fs::path(directory) / "identify_bh.png").string() << "'\n"
      << "set title 'B-H loops: measured and fitted (" << label << ", RMSE "
-     << json_number(r.polish ? r.polish->rmse : r.fit.rmse) << " T)' noenhanced\n"
+     << format("%.9g", r.polish ? r.polish->rmse : r.fit.rmse) << " T)' noenhanced\n"
      << "set xlabel 'H [A/m]'\nset ylabel 'B [T]'\nset grid\nset key left top\n"
      << "plot '" << loops_file << "' using 1:2 with points pt 7 ps 0.4 title 'measured', '"
      << loops_file << "' using 1:3 with lines lw 2 title 'J-A fit'\n"
@@ -108,6 +142,85 @@ std::string plot_identification(const IdentifyResult& r, const BHObjective& obje
      << "set xlabel 'evaluations'\nset ylabel 'best fitness [T]'\nset logscale y\n"
      << "plot '" << convergence_file << "' using 1:2 with steps lw 2 title 'global best'\n";
   return run_gnuplot(gp.str());
+}
+
+std::string write_identify_report(const IdentifyResult& r, const IdentifyStatistics& statistics,
+                                  const BHObjective& objective, const BHCurve& curve, const Provenance& provenance,
+                                  const std::string& directory) {
+  const std::string label = std::string(algorithm_name(r.algorithm)) + (r.polish ? " + Levenberg-Marquardt" : "");
+  HtmlReport report("mrd-identify: " + curve.source, directory);
+  report.paragraph(format("J-A parameters (Eq. 1-10) identified from %zu B-H points in %zu loop(s) by %s "
+                          "(Eq. 14-22 for the improved PSO).",
+                          curve.points(), curve.loops.size(), label.c_str()));
+  const double rmse = r.polish ? r.polish->rmse : r.fit.rmse;
+  report.figures("Fit (as the JSON)", {{"fit, 100 (1 - |B - Bhat| / |B - mean(B)|)", "fit_percent", statistics.fit_percent, "%"},
+                                       {"RMSE, Eq. 15", r.polish ? "polish.rmse_T" : "rmse_T", rmse, "T"},
+                                       {"residual standard error", "sigma_T", statistics.uncertainty.sigma, "T"},
+                                       {"model evaluations", "evaluations", static_cast<double>(r.search.evaluations), ""}});
+  const Point best = final_point(r);
+  std::vector<HtmlReport::Parameter> rows;
+  static constexpr std::array<const char*, kParameterCount> kUnits = {"A/m", "A/m", "-", "A/m", "-"};
+  for (std::size_t j = 0; j < static_cast<std::size_t>(kParameterCount); ++j) {
+    const std::string name(kParameterNames[j]);
+    rows.push_back({name, kUnits[j], best[static_cast<Eigen::Index>(j)], statistics.uncertainty.standard_deviation[j],
+                    (r.polish ? "polish.params." : "params.") + name, "params_sd." + name});
+  }
+  report.heading("Parameters");
+  report.parameters(statistics.uncertainty.singular
+                        ? "Identified set (J^T J is singular: the loops do not determine every parameter)"
+                        : "Identified set: standard deviations from sigma^2 (J^T J)^-1 at the optimum (central differences)",
+                    rows);
+
+  const std::vector<double> B = measured_B(curve);
+  const std::vector<double> fitted = objective.simulate(to_params(best));
+  // Per point, with a NaN row after each loop so that gnuplot lifts the pen between loops.
+  std::vector<double> H, Bm, Bf, index, residual;
+  std::size_t i = 0;
+  for (const auto& loop : curve.loops) {
+    for (std::size_t j = 0; j < loop.H.size(); ++j, ++i) {
+      H.push_back(loop.H[j]);
+      Bm.push_back(B[i]);
+      Bf.push_back(fitted[i]);
+      index.push_back(static_cast<double>(i));
+      residual.push_back(B[i] - fitted[i]);
+    }
+    for (auto* column : {&H, &Bm, &Bf, &index, &residual}) column->push_back(NAN);
+  }
+  report.heading("Measured and fitted B-H loops");
+  const std::string dat = report.data("bh", {"point", "H_A_per_m", "B_T", "B_fitted_T", "residual_T"},
+                                      {&index, &H, &Bm, &Bf, &residual}, H.size());
+  report.plot("bh_loops", format("B against H, measured and fitted (%s), fit %.2f %%", label.c_str(), statistics.fit_percent),
+              "set xlabel 'H [A/m]'\nset ylabel 'B [T]'\nplot '" + dat +
+                  "' using 2:3 with points pt 7 ps 0.5 lc rgb '#888888' title 'measured', '" + dat +
+                  "' using 2:4 with lines lw 2 lc rgb '#d62728' title 'J-A fit'\n");
+  report.plot("bh_time", "B point by point along the loops, measured and fitted",
+              "set xlabel 'point'\nset ylabel 'B [T]'\nplot '" + dat + "' using 1:3 with lines lc rgb '#555555' title 'measured', '" +
+                  dat + "' using 1:4 with lines lc rgb '#d62728' title 'J-A fit'\n");
+  report.heading("Residual");
+  report.plot("bh_residual", "B residual, measured - fitted, point by point",
+              "set xlabel 'point'\nset ylabel 'residual [T]'\nplot '" + dat +
+                  "' using 1:5 with lines lc rgb '#1f77b4' title 'measured - fitted'\n");
+  report.plot("bh_residual_H", "B residual against H (structure the J-A set leaves)",
+              "set xlabel 'H [A/m]'\nset ylabel 'residual [T]'\nplot '" + dat +
+                  "' using 2:5 with points pt 7 ps 0.3 lc rgb '#1f77b4' title 'measured - fitted'\n");
+  const std::size_t lags = std::min<std::size_t>(100, B.size() / 4);
+  std::vector<double> point_residual(B.size());
+  for (std::size_t k = 0; k < B.size(); ++k) point_residual[k] = B[k] - fitted[k];
+  add_autocorrelation_plot(report, point_residual, lags, 1.0, "lag [points]",
+                           format("autocorrelation of the B residual, 95 %% bounds +-%.3g",
+                                  autocorrelation_bound_95(point_residual.size())));
+  report.heading("Convergence");
+  std::vector<double> evaluations, fitness;
+  for (const auto& c : r.search.convergence) {
+    evaluations.push_back(static_cast<double>(c.evaluations));
+    fitness.push_back(c.best_fitness);
+  }
+  const std::string conv = report.data("convergence", {"evaluations", "best_fitness_T"}, {&evaluations, &fitness});
+  report.plot("convergence", "best fitness of the global search against model evaluations",
+              "set xlabel 'evaluations'\nset ylabel 'best fitness [T]'\nset logscale y\nplot '" + conv +
+                  "' using 1:2 with steps lw 2 title 'global best'\n");
+  report.provenance(provenance);
+  return report.write();
 }
 
 }  // namespace mrd::tools

@@ -9,6 +9,8 @@
 
 #include "tools/gnuplot.hpp"
 #include "tools/json.hpp"
+#include "tools/report/fit_statistics.hpp"
+#include "tools/report/force_fit.hpp"
 #include "tools/text_format.hpp"
 
 namespace mrd::tools {
@@ -48,6 +50,25 @@ std::string coil_description(const ReplayContext& c) {
   return out;
 }
 
+// NRMSE fit [%] of the observer's force to the measured one.
+double replay_fit_percent(const ReplayContext& c) {
+  return nrmse_fit_percent(c.run.force, c.result.trace.predicted_force);
+}
+
+// The run and its replay as the force-fit section reads them (the run must have force).
+ForceFitTraces replay_traces(const ReplayContext& c) {
+  ForceFitTraces traces;
+  traces.name = std::filesystem::path(c.run.name).filename().string();
+  traces.time.resize(c.run.size());
+  for (std::size_t i = 0; i < c.run.size(); ++i) traces.time[i] = c.run.time[i] - c.run.time[0];
+  traces.displacement = c.run.displacement;
+  traces.velocity = c.result.trace.velocity;
+  traces.measured = c.run.force;
+  traces.predicted = c.result.trace.predicted_force;
+  traces.predicted_label = "predicted (observer)";
+  return traces;
+}
+
 }  // namespace
 
 std::string replay_summary(const ReplayContext& c) {
@@ -61,8 +82,8 @@ std::string replay_summary(const ReplayContext& c) {
   if (const auto& f = c.result.force) {
     out += format(
         "force error (measured - predicted): RMS %.4g N, max %.4g N, mean %.4g N; "
-        "NRMSE %.4g (RMS / measured range %.4g N)\n",
-        f->rms, f->max, f->mean, f->nrmse, f->measured_range);
+        "NRMSE %.4g (RMS / measured range %.4g N); fit %.2f %%\n",
+        f->rms, f->max, f->mean, f->nrmse, f->measured_range, replay_fit_percent(c));
   } else {
     out += "force error: the run has no measured force\n";
   }
@@ -79,43 +100,32 @@ std::string replay_summary(const ReplayContext& c) {
 std::string replay_json(const ReplayContext& c) {
   const auto& run = c.run;
   const auto& s = c.result.sampling;
-  std::ostringstream out;
-  out << "{\n  \"run\": " << json_string(run.name) << ",\n"
-      << "  \"samples\": " << run.size() << ",\n"
-      << "  \"duration_s\": " << json_number(run.duration()) << ",\n"
-      << "  \"sample_rate_Hz\": " << json_number(run.sample_rate) << ",\n"
-      << "  \"sampling\": {\"min_period_s\": " << json_number(s.min_period)
-      << ", \"max_period_s\": " << json_number(s.max_period) << ", \"gaps\": " << s.gaps << "},\n"
-      << "  \"coil_signal\": " << json_string(to_string(run.coil_signal)) << ",\n"
-      << "  \"coil_source\": " << json_string(run.coil_source) << ",\n"
-      << "  \"amps_per_volt\": "
-      << (c.options.amps_per_volt ? json_number(*c.options.amps_per_volt) : "null") << ",\n"
-      << "  \"velocity\": " << json_string(c.options.use_recorded_velocity ? "recorded" : "filter")
-      << ",\n"
-      << "  \"force\": ";
+  Json force = nullptr;
   if (const auto& f = c.result.force) {
-    out << "{\"rms_N\": " << json_number(f->rms) << ", \"max_N\": " << json_number(f->max)
-        << ", \"mean_N\": " << json_number(f->mean)
-        << ", \"measured_range_N\": " << json_number(f->measured_range)
-        << ", \"nrmse\": " << json_number(f->nrmse) << "}";
-  } else {
-    out << "null";
+    force = {{"rms_N", f->rms}, {"max_N", f->max}, {"mean_N", f->mean}, {"measured_range_N", f->measured_range},
+             {"nrmse", f->nrmse}, {"fit_percent", replay_fit_percent(c)}};
   }
   const Range predicted = range_of(c.result.trace.predicted_force);
   const Range command = range_of(c.result.trace.command_current);
-  out << ",\n  \"predicted_force_N\": {\"min\": " << json_number(predicted.min)
-      << ", \"max\": " << json_number(predicted.max) << "},\n"
-      << "  \"command_current_A\": {\"min\": " << json_number(command.min)
-      << ", \"max\": " << json_number(command.max) << ", \"mean\": " << json_number(command.mean)
-      << "},\n  \"notes\": [";
-  for (std::size_t i = 0; i < run.notes.size(); ++i)
-    out << (i ? ", " : "") << json_string(run.notes[i]);
-  out << "],\n  \"wall_s\": " << json_number(c.wall_seconds)
-      << ",\n  \"cpu_s\": " << json_number(c.cpu_seconds)
-      << ",\n  \"real_time_factor\": " << json_number(real_time_factor(c, c.wall_seconds))
-      << ",\n  \"real_time_factor_cpu\": " << json_number(real_time_factor(c, c.cpu_seconds))
-      << "\n}\n";
-  return out.str();
+  const Json fit = run.has_force() ? force_fit_json(force_fit_figures(replay_traces(c))) : Json(nullptr);
+  return json_text({{"run", run.name},
+                    {"samples", run.size()},
+                    {"duration_s", run.duration()},
+                    {"sample_rate_Hz", run.sample_rate},
+                    {"sampling", {{"min_period_s", s.min_period}, {"max_period_s", s.max_period}, {"gaps", s.gaps}}},
+                    {"coil_signal", std::string(to_string(run.coil_signal))},
+                    {"coil_source", run.coil_source},
+                    {"amps_per_volt", c.options.amps_per_volt ? Json(*c.options.amps_per_volt) : Json(nullptr)},
+                    {"velocity", c.options.use_recorded_velocity ? "recorded" : "filter"},
+                    {"force", force},
+                    {"fit", fit},
+                    {"predicted_force_N", {{"min", predicted.min}, {"max", predicted.max}}},
+                    {"command_current_A", {{"min", command.min}, {"max", command.max}, {"mean", command.mean}}},
+                    {"notes", run.notes},
+                    {"wall_s", c.wall_seconds},
+                    {"cpu_s", c.cpu_seconds},
+                    {"real_time_factor", real_time_factor(c, c.wall_seconds)},
+                    {"real_time_factor_cpu", real_time_factor(c, c.cpu_seconds)}});
 }
 
 std::string write_replay_csv(const ReplayContext& c, const std::string& path) {
@@ -198,6 +208,50 @@ std::string plot_replay(const ReplayContext& c, const std::string& directory) {
      << "plot '" << data << "' using 1:6 with lines lw 1 title 'run (drives the observer)', '"
      << data << "' using 1:7 with lines lw 1 title 'controller command'\n";
   return run_gnuplot(gp.str());
+}
+
+std::string write_replay_report(const ReplayContext& c, const Provenance& provenance, const std::string& directory) {
+  const auto& run = c.run;
+  const auto& t = c.result.trace;
+  HtmlReport report("mrd-replay: " + run.name, directory);
+  report.paragraph(format("The firmware's control law (schedule, J-A + Bingham observer, compensator) run over the "
+                          "recorded run sample by sample. Coil: %s; velocity: %s.",
+                          coil_description(c).c_str(), velocity_source(c).c_str()));
+  std::vector<ReportFigure> run_rows = {{"samples", "samples", static_cast<double>(run.size()), ""},
+                                        {"duration", "duration_s", run.duration(), "s"},
+                                        {"sample rate", "sample_rate_Hz", run.sample_rate, "Hz"}};
+  if (const auto& f = c.result.force) {
+    run_rows.push_back({"RMS error", "force.rms_N", f->rms, "N"});
+    run_rows.push_back({"max error", "force.max_N", f->max, "N"});
+    run_rows.push_back({"NRMSE (RMS / measured range)", "force.nrmse", f->nrmse, ""});
+  }
+  report.figures("The run and the force error (as the JSON)", run_rows);
+  for (const auto& note : run.notes) report.paragraph("note: " + note);
+  std::vector<double> time(run.size());
+  for (std::size_t i = 0; i < run.size(); ++i) time[i] = run.time[i] - run.time[0];
+  if (run.has_force()) {
+    add_force_fit(report, replay_traces(c));
+  } else {
+    report.paragraph("The run has no measured force: only the prediction and the current are shown.");
+  }
+  report.heading("Coil current");
+  const std::string dat = report.data("current", {"time_s", "coil_current_A", "command_current_A", "predicted_force_N"},
+                                      {&time, &t.coil_current, &t.command_current, &t.predicted_force});
+  report.plot("current", "the run's coil current (drives the observer) and the command the controller would give",
+              "set xlabel 'time [s]'\nset ylabel 'current [A]'\nplot '" + dat +
+                  "' using 1:2 with lines lw 1 title 'run', '" + dat + "' using 1:3 with lines lw 1 title 'controller command'\n");
+  report.heading("Damper parameters");
+  const model::DamperModel& m = c.options.law.damper;
+  report.parameters("From the config (a replay fits nothing, so no standard deviations)",
+                    {{"jiles_atherton.Ms", "A/m", m.jiles_atherton.Ms, NAN, "", ""},
+                     {"jiles_atherton.a", "A/m", m.jiles_atherton.a, NAN, "", ""},
+                     {"jiles_atherton.alpha", "-", m.jiles_atherton.alpha, NAN, "", ""},
+                     {"jiles_atherton.k", "A/m", m.jiles_atherton.k, NAN, "", ""},
+                     {"jiles_atherton.c", "-", m.jiles_atherton.c, NAN, "", ""},
+                     {"fluid.viscosity", "Pa s", m.fluid.viscosity, NAN, "", ""},
+                     {"geometry.pole_length", "m", m.geometry.pole_length, NAN, "", ""}});
+  report.provenance(provenance);
+  return report.write();
 }
 
 }  // namespace mrd::tools

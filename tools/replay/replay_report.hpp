@@ -3,6 +3,7 @@
 #include <string>
 
 #include "record/recorded_run.hpp"
+#include "tools/report/html_report.hpp"
 #include "tools/replay/replay.hpp"
 
 namespace mrd::tools {
@@ -36,5 +37,13 @@ struct ReplayContext {
 // replay_current.png (the run's current and the command) in `directory`. Returns "" or why
 // not (gnuplot missing: the caller reports it and carries on).
 [[nodiscard]] std::string plot_replay(const ReplayContext& c, const std::string& directory);
+
+// --report DIR: report.html with the force fit (measured and predicted against time,
+// displacement and velocity, the fit percentage), the residual's structure, the current, the
+// damper's parameters (the config's: a replay fits nothing) and the provenance; the plots' .dat
+// and .gp beside it. A run without force gets the prediction and the current only.
+// Returns "" or why not.
+[[nodiscard]] std::string write_replay_report(const ReplayContext& c, const Provenance& provenance,
+                                              const std::string& directory);
 
 }  // namespace mrd::tools

@@ -12,8 +12,10 @@
 #include "config/effects_config.hpp"
 #include "tools/gnuplot.hpp"
 #include "tools/json.hpp"
+#include "tools/report/force_fit.hpp"
 #include "tools/residual/candidate_effects.hpp"
 #include "tools/text_format.hpp"
+#include "tools/toml_patch.hpp"
 
 namespace mrd::tools {
 
@@ -122,80 +124,76 @@ std::string residual_summary(const std::vector<record::RecordedRun>& runs, const
   return out;
 }
 
-std::string residual_json(const ResidualResult& r) {
-  std::ostringstream j;
-  j << "{\n  \"samples\": " << r.samples << ",\n";
-  j << "  \"rms_before_N\": " << json_number(r.before.all) << ",\n";
-  j << "  \"max_before_N\": " << json_number(r.before.max) << ",\n";
-  j << "  \"effects\": [";
-  for (std::size_t i = 0; i < r.accepted.size(); ++i) j << (i ? ", " : "") << json_string(r.accepted[i]);
-  j << "],\n  \"effect\": " << json_string(r.accepted.empty() ? "none" : r.accepted.front()) << ",\n";
-  j << "  \"rms_after_N\": " << json_number(r.after.all) << ",\n";
-  j << "  \"max_after_N\": " << json_number(r.after.max) << ",\n";
-  j << "  \"effect_params\": {";
-  for (std::size_t i = 0; i < r.accepted.size(); ++i) {
-    j << (i ? ", " : "") << "\n    " << json_string(r.accepted[i]) << ": {";
-    const auto params = model::find_effect(r.accepted[i])->report(r.final_model.effects);
-    for (std::size_t k = 0; k < params.size(); ++k)
-      j << (k ? ", " : "") << json_string(params[k].first) << ": " << json_number(params[k].second);
-    j << "}";
+std::string residual_json(const ResidualResult& r, const ForceFitFigures* fit) {
+  Json effect_params = Json::object();
+  for (const auto& e : r.accepted) {
+    Json params = Json::object();
+    for (const auto& [key, value] : model::find_effect(e)->report(r.final_model.effects)) params[key] = value;
+    effect_params[e] = params;
   }
-  j << (r.accepted.empty() ? "" : "\n  ") << "},\n  \"candidates\": [";
-  const auto trials = final_trials(r);
-  for (std::size_t i = 0; i < trials.size(); ++i) {
-    const CandidateTrial& t = *trials[i];
-    j << (i ? "," : "") << "\n    {\"effect\": " << json_string(t.effect) << ", \"rms_after_N\": "
-      << json_number(t.rms_after) << ", \"validation_rms_N\": " << json_number(t.validation_rms)
-      << ", \"accepted\": " << (t.accepted ? "true" : "false") << "}";
+  Json candidates = Json::array();
+  for (const CandidateTrial* t : final_trials(r)) {
+    candidates.push_back({{"effect", t->effect},
+                          {"rms_after_N", t->rms_after},
+                          {"validation_rms_N", t->validation_rms},
+                          {"accepted", t->accepted}});
   }
-  j << (trials.empty() ? "" : "\n  ") << "],\n  \"ambiguous\": [";
-  for (std::size_t g = 0; g < r.ambiguous.size(); ++g) {
-    j << (g ? ", " : "") << "[";
-    for (std::size_t i = 0; i < r.ambiguous[g].size(); ++i) j << (i ? ", " : "") << json_string(r.ambiguous[g][i]);
-    j << "]";
+  Json discovered = Json::array();
+  for (const DiscoveredTerm& t : r.discovered) {
+    discovered.push_back({{"term", t.term},
+                          {"coefficient", t.coefficient},
+                          {"unit", t.unit},
+                          {"kind", t.interference ? "interference" : "damper"},
+                          {"validation_gain", t.validation_gain}});
   }
-  j << "],\n  \"ambiguity_tests\": [";
-  for (std::size_t g = 0; g < r.ambiguity_tests.size(); ++g) j << (g ? ", " : "") << json_string(r.ambiguity_tests[g]);
-  j << "],\n  \"discovered\": [";
-  for (std::size_t g = 0; g < r.discovered.size(); ++g) {
-    const DiscoveredTerm& t = r.discovered[g];
-    j << (g ? "," : "") << "\n    {\"term\": " << json_string(t.term) << ", \"coefficient\": " << json_number(t.coefficient)
-      << ", \"unit\": " << json_string(t.unit) << ", \"kind\": " << json_string(t.interference ? "interference" : "damper")
-      << ", \"validation_gain\": " << json_number(t.validation_gain) << "}";
-  }
-  j << (r.discovered.empty() ? "" : "\n  ") << "],\n  \"screening\": {\"excluded_samples\": ";
   std::size_t excluded = 0;
-  for (const auto& [run, s] : r.screenings) excluded += s.excluded_samples;
-  j << excluded << ", \"spans\": [";
-  bool first_span = true;
+  Json spans = Json::array();
   for (const auto& [run, s] : r.screenings) {
+    excluded += s.excluded_samples;
     for (const ScreenedSpan& span : s.spans) {
-      j << (first_span ? "" : ",") << "\n    {\"run\": " << json_string(run) << ", \"start_s\": " << json_number(span.start_s)
-        << ", \"end_s\": " << json_number(span.end_s) << ", \"channel\": " << json_string(span.channel)
-        << ", \"reason\": " << json_string(std::string(to_string(span.reason))) << "}";
-      first_span = false;
+      spans.push_back({{"run", run},
+                       {"start_s", span.start_s},
+                       {"end_s", span.end_s},
+                       {"channel", span.channel},
+                       {"reason", std::string(to_string(span.reason))}});
     }
   }
-  j << (first_span ? "" : "\n  ") << "]},\n  \"set_revisions\": [";
-  for (std::size_t g = 0; g < r.revisions.size(); ++g) j << (g ? ", " : "") << json_string(r.revisions[g]);
-  j << "],\n  \"unexplained\": " << json_string(r.unexplained) << "\n}\n";
-  return j.str();
+  Json parameters = Json::array();
+  for (const ParameterEstimate& p : r.parameters)
+    parameters.push_back({{"name", p.name}, {"value", p.value}, {"sd", p.standard_deviation}, {"unit", p.unit}});
+  Json out = {{"samples", r.samples},
+                    {"rms_before_N", r.before.all},
+                    {"fit_before_percent", r.fit_before_percent},
+                    {"fit_after_percent", r.fit_after_percent},
+                    {"parameters", parameters},
+                    {"max_before_N", r.before.max},
+                    {"effects", r.accepted},
+                    {"effect", r.accepted.empty() ? "none" : r.accepted.front()},
+                    {"rms_after_N", r.after.all},
+                    {"max_after_N", r.after.max},
+                    {"effect_params", effect_params},
+                    {"candidates", candidates},
+                    {"ambiguous", r.ambiguous},
+                    {"ambiguity_tests", r.ambiguity_tests},
+                    {"discovered", discovered},
+                    {"screening", {{"excluded_samples", excluded}, {"spans", spans}}},
+                    {"set_revisions", r.revisions},
+                    {"unexplained", r.unexplained}};
+  if (fit != nullptr) out["fit"] = force_fit_json(*fit);
+  return json_text(out);
 }
 
 std::string updated_config(std::string_view config_text, const ResidualResult& r) {
-  toml::table root;
   try {
-    root = toml::parse(config_text);
+    (void)toml::parse(config_text);
   } catch (const toml::parse_error& e) {
     throw std::runtime_error(std::string("the starting config does not parse: ") + std::string(e.description()));
   }
   const model::DamperModel& m = r.final_model;
-  auto* damper = root["damper"].as_table();
-  if (damper == nullptr) damper = root.insert_or_assign("damper", toml::table{}).first->second.as_table();
+  toml::table damper;
   const auto set = [&](const char* table, const char* key, double value) {
-    auto* t = (*damper)[table].as_table();
-    if (t == nullptr) t = damper->insert_or_assign(table, toml::table{}).first->second.as_table();
-    t->insert_or_assign(key, value);
+    if (!damper.contains(table)) damper.insert(table, toml::table{});
+    damper[table].as_table()->insert_or_assign(key, value);
   };
   set("jiles_atherton", "Ms", m.jiles_atherton.Ms);
   set("jiles_atherton", "a", m.jiles_atherton.a);
@@ -213,16 +211,20 @@ std::string updated_config(std::string_view config_text, const ResidualResult& r
   set("geometry", "gap", m.geometry.gap);
   set("geometry", "piston_diameter", m.geometry.piston_diameter);
   set("geometry", "sign_velocity_scale", m.geometry.sign_velocity_scale);
-  const toml::table effects = toml::parse(config::effects_toml(m.effects));
-  damper->insert_or_assign("effects", *effects["damper"]["effects"].as_table());
-  std::ostringstream out;
-  out << "# Written by mrd-residual: the damper fitted to the run";
+  toml::table effects = toml::parse(config::effects_toml(m.effects));
+  damper.insert_or_assign("effects", *effects["damper"]["effects"].as_table());
+  toml::table values;
+  values.insert("damper", std::move(damper));
+  // Values patched in place: the starting config's order and comments stay (tools/toml_patch).
+  std::string header = "# Written by mrd-residual: the damper fitted to the run";
   if (!r.accepted.empty()) {
-    out << ", with";
-    for (const auto& e : r.accepted) out << ' ' << e;
+    header += ", with";
+    for (const auto& e : r.accepted) header += ' ' + e;
   }
-  out << ". Every other key is the starting config's.\n" << root << '\n';
-  return out.str();
+  header += ". Every other key is the starting config's.\n";
+  std::string text = patch_toml(config_text, values);
+  if (text.rfind("# Written by mrd-residual:", 0) == 0) text.erase(0, text.find('\n') + 1);
+  return header + text;
 }
 
 std::string plot_residual(const FitSeries& s, const ResidualResult& r, const std::string& name,
@@ -275,6 +277,105 @@ std::string plot_residual(const FitSeries& s, const ResidualResult& r, const std
      << "' using 3:8 with points pt 7 ps 0.2 lc rgb '#d62728' title 'after'\n"
      << "unset multiplot\n";
   return run_gnuplot(gp.str());
+}
+
+ForceFitTraces residual_traces(const std::vector<record::RecordedRun>& runs, const FitSeries& s,
+                               const ResidualResult& r) {
+  std::string effects;
+  for (const auto& e : r.accepted) effects += (effects.empty() ? "" : ", ") + e;
+  ForceFitTraces traces;
+  traces.name = runs.size() == 1 ? runs.front().name : std::to_string(runs.size()) + " runs";
+  traces.time.resize(s.size());
+  for (std::size_t i = 0; i < s.size(); ++i) traces.time[i] = static_cast<double>(i) * s.sample_period;
+  traces.displacement = s.displacement;
+  traces.velocity = s.velocity;
+  traces.measured = s.force;
+  traces.predicted = r.predicted_after;
+  traces.predicted_label = effects.empty() ? "final model (= base)" : "final model (+ " + effects + ")";
+  traces.baseline = r.predicted_before;
+  traces.baseline_label = "base model";
+  if (r.screened) {
+    traces.keep.resize(s.size());
+    for (std::size_t i = 0; i < s.size(); ++i) traces.keep[i] = s.validation[i] != FitSeries::kExcluded;
+  }
+  return traces;
+}
+
+std::string write_residual_report(const std::vector<record::RecordedRun>& runs, const FitSeries& s,
+                                  const ResidualResult& r, const Provenance& provenance, const std::string& directory) {
+  const std::string name = runs.size() == 1 ? runs.front().name : std::to_string(runs.size()) + " runs";
+  HtmlReport report("mrd-residual: " + name, directory);
+  std::string effects = "none";
+  if (!r.accepted.empty()) {
+    effects.clear();
+    for (const auto& e : r.accepted) effects += (effects.empty() ? "" : ", ") + e;
+  }
+  report.paragraph(format("%zu samples; the J-A + Bingham base model fitted, then candidate effects tried on half of "
+                          "the run and validated on the other half. Accepted: %s. Unexplained: %s",
+                          r.samples, effects.c_str(), r.unexplained.c_str()));
+  report.figures("Before and after (as the JSON)",
+                 {{"RMS error, base model", "rms_before_N", r.before.all, "N"},
+                  {"max error, base model", "max_before_N", r.before.max, "N"},
+                  {"fit, base model", "fit_before_percent", r.fit_before_percent, "%"},
+                  {"RMS error, final model", "rms_after_N", r.after.all, "N"},
+                  {"max error, final model", "max_after_N", r.after.max, "N"},
+                  {"fit, final model", "fit_after_percent", r.fit_after_percent, "%"}});
+  add_force_fit(report, residual_traces(runs, s, r));
+
+  report.heading("Parameters");
+  std::vector<HtmlReport::Parameter> rows;
+  for (std::size_t i = 0; i < r.parameters.size(); ++i) {
+    const ParameterEstimate& p = r.parameters[i];
+    const std::string key = "parameters." + std::to_string(i);
+    rows.push_back({p.name, p.unit, p.value, p.standard_deviation, key + ".value", key + ".sd"});
+  }
+  report.parameters("Final model: standard deviations from sigma^2 (J^T J)^-1 at the fit (central differences over "
+                    "the fitting series)", rows);
+  std::vector<std::vector<std::string>> effect_rows;
+  for (const auto& e : r.accepted)
+    for (const auto& [key, value] : model::find_effect(e)->report(r.final_model.effects))
+      effect_rows.push_back({e, key, format("%.6g", value)});
+  report.table("Accepted effects' parameters", {"effect", "parameter", "value"}, effect_rows);
+
+  report.heading("Effects and terms tried");
+  std::vector<std::vector<std::string>> trials;
+  for (const CandidateTrial* t : final_trials(r)) {
+    trials.push_back({t->effect, std::to_string(t->round), format("%.6g", t->validation_before),
+                      format("%.6g", t->validation_rms), format("%.6g", t->rms_after), t->accepted ? "accepted" : "rejected",
+                      t->verdict});
+  }
+  report.table(format("Candidates (each at its last round; accepted when the validation RMS falls by %.0f %% or more)",
+                      100.0 * kMinimumValidationReduction),
+               {"effect", "round", "validation before [N]", "validation with it [N]", "whole run [N]", "verdict", "why"},
+               trials);
+  std::vector<std::vector<std::string>> terms;
+  for (const DiscoveredTerm& t : r.discovered) {
+    terms.push_back({t.term, format("%.6g", t.coefficient), t.unit, t.interference ? "interference" : "damper",
+                     format("%.1f %%", 100.0 * t.validation_gain)});
+  }
+  report.table("Library terms accepted by the regression of what the effects left",
+               {"term", "coefficient", "unit", "kind", "validation RMS gain"}, terms);
+  std::vector<std::vector<std::string>> groups;
+  for (std::size_t g = 0; g < r.ambiguous.size(); ++g) {
+    std::string members;
+    for (const auto& e : r.ambiguous[g]) members += (members.empty() ? "" : ", ") + e;
+    groups.push_back({members, r.ambiguity_tests[g]});
+  }
+  report.table("Effects the run cannot tell apart (the first is kept)", {"effects", "the run that would separate them"},
+               groups);
+
+  report.heading("Screening");
+  std::vector<std::vector<std::string>> spans;
+  for (const auto& [run, sc] : r.screenings)
+    for (const ScreenedSpan& span : sc.spans)
+      spans.push_back({run, format("%.4f", span.start_s), format("%.4f", span.end_s), span.channel,
+                       std::string(to_string(span.reason))});
+  report.paragraph(r.screened ? format("%zu samples set aside; every error and fit above is on the kept samples.",
+                                       s.excluded_samples())
+                              : std::string("Screening was off (--no-screening)."));
+  report.table("Spans set aside", {"run", "from [s]", "to [s]", "channel", "reason"}, spans);
+  report.provenance(provenance);
+  return report.write();
 }
 
 }  // namespace mrd::tools

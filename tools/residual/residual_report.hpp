@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "record/recorded_run.hpp"
+#include "tools/report/force_fit.hpp"
 #include "tools/residual/fit_series.hpp"
 #include "tools/residual/residual_search.hpp"
 
@@ -18,7 +19,13 @@ std::string residual_summary(const std::vector<record::RecordedRun>& runs, const
 // rms_before_N, max_before_N, effects, effect, rms_after_N, max_after_N, effect_params,
 // candidates [{effect, rms_after_N, validation_rms_N, accepted}] (each candidate once: its
 // last round), unexplained.
-std::string residual_json(const ResidualResult& r);
+// With `fit` (force_fit_figures of residual_traces), also "fit" (force_fit_json).
+std::string residual_json(const ResidualResult& r, const ForceFitFigures* fit = nullptr);
+
+// The series and the final model's prediction (the base model's as the baseline, the screened
+// samples marked) as the report's force-fit section reads them.
+ForceFitTraces residual_traces(const std::vector<record::RecordedRun>& runs, const FitSeries& series,
+                               const ResidualResult& r);
 
 // `config_text` (the config the analysis started from) with its damper tables replaced by the
 // final model, the accepted effects enabled in [damper.effects.*]: mrd-controller --config and
@@ -30,5 +37,12 @@ std::string updated_config(std::string_view config_text, const ResidualResult& r
 // residual against displacement and velocity). Returns "" or why not.
 std::string plot_residual(const FitSeries& series, const ResidualResult& r, const std::string& name,
                           const std::string& directory);
+
+// --report DIR: report.html with the fit (measured against the base and the final model over
+// time, displacement and velocity), the residual's structure, the parameters with their
+// standard deviations, every candidate with its validation figures, the screening's spans and
+// the provenance; the plots' .dat and .gp beside it. Returns "" or why not.
+std::string write_residual_report(const std::vector<record::RecordedRun>& runs, const FitSeries& series,
+                                  const ResidualResult& r, const Provenance& provenance, const std::string& directory);
 
 }  // namespace mrd::tools

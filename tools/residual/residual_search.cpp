@@ -8,6 +8,7 @@
 #include <numeric>
 #include <span>
 
+#include "tools/report/fit_statistics.hpp"
 #include "tools/residual/candidate_effects.hpp"
 #include "tools/text_format.hpp"
 
@@ -677,6 +678,11 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   result.evaluations = s.evaluations;
   result.after = residual_rms(full, result.predicted_after);
   result.structure_after = structure_of(full, result.predicted_after);
+  std::vector<bool> kept(full.size());
+  for (std::size_t i = 0; i < full.size(); ++i) kept[i] = full.validation[i] != FitSeries::kExcluded;
+  result.fit_before_percent = nrmse_fit_percent(full.force, result.predicted_before, kept);
+  result.fit_after_percent = nrmse_fit_percent(full.force, result.predicted_after, kept);
+  result.parameters = model_uncertainty(result.final_model, s.fit_series, base_fit_space.bounds.dimension() == 2);
   result.unexplained = describe(result.structure_after);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return result;

@@ -9,6 +9,7 @@
 #include "model/damper_model.hpp"
 #include "tools/residual/fit_series.hpp"
 #include "tools/residual/model_fit.hpp"
+#include "tools/residual/model_uncertainty.hpp"
 #include "tools/residual/residual_structure.hpp"
 #include "tools/residual/term_discovery.hpp"
 #include "tools/progress.hpp"
@@ -65,6 +66,11 @@ struct ResidualResult {
   model::DamperModel final_model;
   ResidualRms before;  // base model, whole run
   ResidualRms after;   // with the accepted effects (the base when none)
+  // NRMSE fit [%] of the base and the final model over the kept samples (nrmse_fit_percent).
+  double fit_before_percent = 0.0;
+  double fit_after_percent = 0.0;
+  // The final model's core parameters with their standard deviations (model_uncertainty).
+  std::vector<ParameterEstimate> parameters;
   std::vector<std::string> accepted;  // in the order accepted, after the set revision
   // Candidates the run cannot tell apart: each group led by the one kept in the model, the
   // others within the threshold of it; and, per group, the run that would separate them.

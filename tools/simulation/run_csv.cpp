@@ -19,18 +19,18 @@ void write_run_csv(std::ostream& out, const SimulatedRun& run, const RunColumns&
 
 std::string run_manifest_json(const SimulatedRun& run) {
   const RunOptions& o = run.options;
-  std::string effects;
-  for (const auto& e : o.effects) {
-    effects += std::string(effects.empty() ? "" : ", ") + "{\"name\": " + json_string(e.name) +
-               ", \"size\": " + json_number(e.size) + "}";
-  }
-  return "{\n  \"damper_class\": " + json_string(o.damper.name) + ",\n  \"profile\": " +
-         json_string(to_string(o.profile)) + ",\n  \"rate_hz\": " + json_number(o.rate) +
-         ",\n  \"duration_s\": " + json_number(o.duration) + ",\n  \"samples\": " +
-         std::to_string(run.samples.size()) + ",\n  \"seed\": " + std::to_string(o.seed) +
-         ",\n  \"lvdt_noise_m\": " + json_number(o.lvdt_noise) + ",\n  \"force_noise_N\": " +
-         json_number(o.force_noise) + ",\n  \"effects\": [" + effects + "],\n  \"effects_toml\": " +
-         json_string(config::effects_toml(run.effects)) + "\n}\n";
+  Json effects = Json::array();
+  for (const auto& e : o.effects) effects.push_back({{"name", e.name}, {"size", e.size}});
+  return json_text({{"damper_class", o.damper.name},
+                    {"profile", std::string(to_string(o.profile))},
+                    {"rate_hz", o.rate},
+                    {"duration_s", o.duration},
+                    {"samples", run.samples.size()},
+                    {"seed", o.seed},
+                    {"lvdt_noise_m", o.lvdt_noise},
+                    {"force_noise_N", o.force_noise},
+                    {"effects", effects},
+                    {"effects_toml", config::effects_toml(run.effects)}});
 }
 
 }  // namespace mrd::tools

@@ -1,4 +1,5 @@
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 
@@ -226,12 +227,21 @@ TEST(IdentifyReport, JsonHasTheDocumentedKeys) {
   IdentifyOptions options = paper_protocol(Algorithm::kPso);
   options.budget.evaluations = 120;
   options.polish = true;
-  const std::string json = identify_json(identify(objective, curve, options));
-  for (const char* key : {"\"algo\": \"pso\"", "\"params\": {\"Ms\": ", "\"a\": ", "\"alpha\": ",
-                          "\"k\": ", "\"c\": ", "\"rmse_T\": ", "\"evaluations\": 120",
-                          "\"wall_s\": ", "\"polish\": {\"method\": \"levenberg-marquardt\""}) {
-    EXPECT_NE(json.find(key), std::string::npos) << key;
+  const IdentifyResult result = identify(objective, curve, options);
+  const IdentifyStatistics statistics = identify_statistics(result, objective, curve);
+  const auto json = nlohmann::json::parse(identify_json(result, &statistics));
+  EXPECT_EQ(json["algo"], "pso");
+  EXPECT_EQ(json["evaluations"], 120);
+  EXPECT_EQ(json["polish"]["method"], "levenberg-marquardt");
+  for (const char* name : {"Ms", "a", "alpha", "k", "c"}) {
+    EXPECT_TRUE(json["params"][name].is_number()) << name;
+    EXPECT_TRUE(json["params_sd"][name].is_number()) << name;
   }
+  // Doubles round-trip.
+  EXPECT_EQ(json["rmse_T"].get<double>(), result.fit.rmse);
+  EXPECT_EQ(json["params"]["Ms"].get<double>(), result.search.best[0]);
+  EXPECT_EQ(json["fit_percent"].get<double>(), statistics.fit_percent);
+  EXPECT_TRUE(json["wall_s"].is_number());
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // Short runs (4 s at 1 kHz) keep this in the fast suite; the full table of
 // docs/CLOSING-THE-LOOP.md is tools/residual/detection-study.sh.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <mutex>
 
@@ -47,9 +48,9 @@ TEST_P(CleanRun, GivesNoneAndTheSameErrorAfter) {
   EXPECT_TRUE(r.accepted.empty()) << residual_summary({run}, r);
   EXPECT_EQ(r.after.all, r.before.all);
   EXPECT_NE(r.unexplained.find("white, at the noise floor"), std::string::npos) << r.unexplained;
-  const std::string json = residual_json(r);
-  EXPECT_NE(json.find("\"effect\": \"none\""), std::string::npos) << json;
-  EXPECT_NE(json.find("\"effects\": []"), std::string::npos) << json;
+  const auto json = nlohmann::json::parse(residual_json(r));
+  EXPECT_EQ(json["effect"], "none") << json.dump(2);
+  EXPECT_TRUE(json["effects"].is_array() && json["effects"].empty()) << json.dump(2);
 }
 
 INSTANTIATE_TEST_SUITE_P(BothClasses, CleanRun, ::testing::Values("50kN", "1kN"));

@@ -3,8 +3,8 @@
 #include "tools/residual/residual_report.hpp"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
-#include <regex>
 #include <set>
 
 #include "config/config_loader.hpp"
@@ -21,24 +21,29 @@ const ResidualResult& gas_spring_result() {
 }
 
 TEST(ResidualReport, JsonHasExactlyTheDocumentedKeys) {
-  const std::string json = residual_json(gas_spring_result());
+  const ResidualResult& r = gas_spring_result();
+  const auto json = nlohmann::json::parse(residual_json(r));
   std::set<std::string> top;
-  int depth = 0;
-  const std::regex key("\"([a-zA-Z_]+)\":");
-  for (std::size_t i = 0; i < json.size(); ++i) {
-    const char c = json[i];
-    if (c == '{' || c == '[') ++depth;
-    if (c == '}' || c == ']') --depth;
-    std::smatch m;
-    const std::string rest = json.substr(i, 40);
-    if (depth == 1 && c == '"' && std::regex_search(rest, m, key) && m.position(0) == 0) top.insert(m[1]);
-  }
-  EXPECT_EQ(top, (std::set<std::string>{"samples", "rms_before_N", "max_before_N", "effects", "effect", "rms_after_N",
-                                        "max_after_N", "effect_params", "candidates", "ambiguous", "ambiguity_tests", "discovered", "screening",
+  for (const auto& [key, value] : json.items()) top.insert(key);
+  EXPECT_EQ(top, (std::set<std::string>{"samples", "rms_before_N", "fit_before_percent", "fit_after_percent", "parameters",
+                                        "max_before_N", "effects", "effect", "rms_after_N", "max_after_N", "effect_params",
+                                        "candidates", "ambiguous", "ambiguity_tests", "discovered", "screening",
                                         "set_revisions", "unexplained"}));
-  EXPECT_NE(json.find("\"effect\": \"gas_spring\""), std::string::npos) << json;
-  EXPECT_NE(json.find("\"gas_spring\": {\"preload_N\": "), std::string::npos) << json;
-  EXPECT_NE(json.find("{\"effect\": \"coil_lag\", \"rms_after_N\": "), std::string::npos) << json;
+  EXPECT_EQ(json["effect"], "gas_spring");
+  EXPECT_TRUE(json["effect_params"]["gas_spring"].contains("preload_N")) << json.dump(2);
+  // Doubles round-trip: the JSON holds the very bits of the result.
+  EXPECT_EQ(json["rms_before_N"].get<double>(), r.before.all);
+  EXPECT_EQ(json["rms_after_N"].get<double>(), r.after.all);
+  EXPECT_EQ(json["fit_after_percent"].get<double>(), r.fit_after_percent);
+  bool coil_lag = false;
+  for (const auto& c : json["candidates"]) {
+    EXPECT_TRUE(c.contains("rms_after_N") && c.contains("validation_rms_N") && c["accepted"].is_boolean()) << c;
+    coil_lag = coil_lag || c["effect"] == "coil_lag";
+  }
+  EXPECT_TRUE(coil_lag) << json.dump(2);
+  ASSERT_EQ(json["parameters"].size(), r.parameters.size());
+  EXPECT_EQ(json["parameters"][0]["name"], "geometry.pole_length");
+  EXPECT_EQ(json["parameters"][0]["sd"].get<double>(), r.parameters[0].standard_deviation);
 }
 
 TEST(ResidualReport, UpdatedConfigLoadsWithTheEffectOnAndTheFittedDamper) {
@@ -55,6 +60,12 @@ TEST(ResidualReport, UpdatedConfigLoadsWithTheEffectOnAndTheFittedDamper) {
   // The 1 kN class: 70 N preload and 500 N/m at size 1.
   EXPECT_NEAR(d.effects.get<mrd::model::GasSpringEffect>().preload, 70.0, 5.0);
   EXPECT_NEAR(d.effects.get<mrd::model::GasSpringEffect>().stiffness, 500.0, 100.0);
+  // Patched in place: the default's order (a sorted writer puts [backends] first) and comments stay.
+  EXPECT_LT(text.find("[loop]"), text.find("[backends]"));
+  EXPECT_NE(text.find("[damper.effects.gas_spring]   # accumulator: F0 + k x\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("[damper.circuit]              # Eq. 9: H = N I / Le\n"), std::string::npos) << text;
+  // Written again over its own output, only the values it changes change.
+  EXPECT_EQ(updated_config(text, r), text);
 }
 
 }  // namespace

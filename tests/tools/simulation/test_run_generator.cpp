@@ -3,6 +3,7 @@
 #include "tools/simulation/run_generator.hpp"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstring>
@@ -169,10 +170,13 @@ TEST(RunGenerator, CsvHasTheRecordedRunHeaderAndUnits) {
 TEST(RunGenerator, ManifestNamesTheCarriedEffects) {
   auto o = short_run(RunProfile::kTable4, "1kN");
   o.effects = {{"stroke_end_air", 2.0}};
-  const std::string json = mrd::tools::run_manifest_json(mrd::tools::simulate_run(o));
-  EXPECT_NE(json.find("\"damper_class\": \"1kN\""), std::string::npos) << json;
-  EXPECT_NE(json.find("\"effects\": [{\"name\": \"stroke_end_air\", \"size\": 2}]"), std::string::npos) << json;
-  EXPECT_NE(json.find("[damper.effects.stroke_end_air]\\nenabled = true\\n"), std::string::npos) << json;
+  const auto json = nlohmann::json::parse(mrd::tools::run_manifest_json(mrd::tools::simulate_run(o)));
+  EXPECT_EQ(json["damper_class"], "1kN");
+  EXPECT_EQ(json["effects"], nlohmann::json::parse(R"([{"name": "stroke_end_air", "size": 2.0}])")) << json.dump(2);
+  // The TOML travels as a string with its newlines, escaped by JSON and unescaped by the parse.
+  EXPECT_NE(json["effects_toml"].get<std::string>().find("[damper.effects.stroke_end_air]\nenabled = true\n"),
+            std::string::npos)
+      << json.dump(2);
 }
 
 TEST(RunGenerator, EffectRequestsParseNamesAndSizes) {

@@ -1,0 +1,171 @@
+// The fit report's pieces (tools/report): checksums against FIPS 180-4's examples, the fit
+// percentage and autocorrelation against hand-worked values, the parameter standard deviations
+// against the closed form of a straight-line least-squares fit, and the HTML writer.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <random>
+
+#include "tools/report/fit_statistics.hpp"
+#include "tools/report/html_report.hpp"
+#include "tools/report/sha256.hpp"
+
+namespace {
+
+using namespace mrd::tools;
+
+TEST(ReportSha256, MatchesTheStandardsExamples) {
+  EXPECT_EQ(sha256_hex(""), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+  EXPECT_EQ(sha256_hex("abc"), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+  // Two blocks: the padding spills into a second one.
+  EXPECT_EQ(sha256_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq"),
+            "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
+}
+
+TEST(ReportSha256, ReadsAFileWholeAndNamesAnUnreadableOneEmpty) {
+  const auto path = std::filesystem::temp_directory_path() / "mrd_report_sha256.txt";
+  std::ofstream(path) << "abc";
+  EXPECT_EQ(sha256_file(path.string()), sha256_hex("abc"));
+  EXPECT_EQ(sha256_file((path.string() + ".missing")), "");
+}
+
+TEST(ReportFit, NrmseFitIsMatlabsCompareFigure) {
+  // y has mean 2 and |y - mean| = sqrt(2); yhat misses by 0.1 at each of the three points.
+  const std::vector<double> y = {1.0, 2.0, 3.0}, yhat = {1.1, 1.9, 3.1};
+  EXPECT_NEAR(nrmse_fit_percent(y, yhat), 100.0 * (1.0 - std::sqrt(0.03) / std::sqrt(2.0)), 1e-12);
+  EXPECT_DOUBLE_EQ(nrmse_fit_percent(y, y), 100.0);
+  EXPECT_NEAR(nrmse_fit_percent(y, {2.0, 2.0, 2.0}), 0.0, 1e-12);  // the mean scores 0
+  EXPECT_LT(nrmse_fit_percent(y, {3.0, 2.0, 1.0}), 0.0);           // worse than the mean
+  // The left-out sample would cost the fit; without it the fit is perfect.
+  EXPECT_DOUBLE_EQ(nrmse_fit_percent({1.0, 2.0, 3.0, 4.0}, {1.0, 2.0, 3.0, 40.0}, {true, true, true, false}), 100.0);
+  EXPECT_TRUE(std::isnan(nrmse_fit_percent({1.0, 1.0}, {1.0, 1.0})));
+  EXPECT_TRUE(std::isnan(nrmse_fit_percent(y, {1.0})));
+}
+
+TEST(ReportFit, AutocorrelationOfAnAlternatingSequenceAlternates) {
+  // +-1 alternating, mean 0: r(k) = (N - k)/N (-1)^k.
+  std::vector<double> e(10);
+  for (std::size_t i = 0; i < e.size(); ++i) e[i] = i % 2 ? -1.0 : 1.0;
+  const auto r = autocorrelation(e, 3);
+  ASSERT_EQ(r.size(), 4u);
+  EXPECT_DOUBLE_EQ(r[0], 1.0);
+  EXPECT_DOUBLE_EQ(r[1], -0.9);
+  EXPECT_DOUBLE_EQ(r[2], 0.8);
+  EXPECT_DOUBLE_EQ(r[3], -0.7);
+  EXPECT_DOUBLE_EQ(autocorrelation_bound_95(400), 1.96 / 20.0);
+}
+
+TEST(ReportFit, WhiteNoiseStaysMostlyInsideTheBound) {
+  std::mt19937_64 random(7);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  std::vector<double> e(20000);
+  for (double& x : e) x = noise(random);
+  const auto r = autocorrelation(e, 100);
+  const double bound = autocorrelation_bound_95(e.size());
+  int outside = 0;
+  for (std::size_t k = 1; k < r.size(); ++k) outside += std::abs(r[k]) > bound;
+  EXPECT_LE(outside, 12);  // 5 % expected; 12 of 100 is far in the tail of the binomial
+}
+
+// y = a + b x + noise: the covariance of (a, b) in closed form is sigma^2 [[Sxx + n xbar^2, ...]] / (n Sxx),
+// i.e. var(b) = s^2 / Sxx and var(a) = s^2 (1/n + xbar^2 / Sxx), s^2 = SSR / (n - 2).
+TEST(ReportFit, StandardDeviationsMatchTheStraightLineClosedForm) {
+  std::mt19937_64 random(11);
+  std::normal_distribution<double> noise(0.0, 0.3);
+  const std::size_t n = 200;
+  std::vector<double> x(n), y(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    x[i] = 0.05 * static_cast<double>(i) + 3.0;
+    y[i] = 2.0 - 0.7 * x[i] + noise(random);
+  }
+  double xbar = 0.0, ybar = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    xbar += x[i] / static_cast<double>(n);
+    ybar += y[i] / static_cast<double>(n);
+  }
+  double sxx = 0.0, sxy = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    sxx += (x[i] - xbar) * (x[i] - xbar);
+    sxy += (x[i] - xbar) * (y[i] - ybar);
+  }
+  const double b = sxy / sxx, a = ybar - b * xbar;
+  double ssr = 0.0;
+  for (std::size_t i = 0; i < n; ++i) ssr += std::pow(y[i] - a - b * x[i], 2);
+  const double s2 = ssr / static_cast<double>(n - 2);
+  const ResidualFunction line = [&](const std::vector<double>& p) {
+    std::vector<double> r(n);
+    for (std::size_t i = 0; i < n; ++i) r[i] = y[i] - p[0] - p[1] * x[i];
+    return r;
+  };
+  const ParameterUncertainty u = parameter_uncertainty(line, {a, b});
+  EXPECT_FALSE(u.singular);
+  EXPECT_NEAR(u.sigma, std::sqrt(s2), 1e-12);
+  EXPECT_NEAR(u.standard_deviation[1], std::sqrt(s2 / sxx), 1e-8 * std::sqrt(s2 / sxx));
+  EXPECT_NEAR(u.standard_deviation[0], std::sqrt(s2 * (1.0 / static_cast<double>(n) + xbar * xbar / sxx)),
+              1e-8 * u.standard_deviation[0]);
+  // corr(a, b) = -xbar / sqrt(Sxx / n + xbar^2).
+  EXPECT_NEAR(u.correlation[0][1], -xbar / std::sqrt(sxx / static_cast<double>(n) + xbar * xbar), 1e-8);
+}
+
+TEST(ReportFit, AParameterTheResidualIgnoresHasNoDeviationAndLeavesTheOthers) {
+  const std::vector<double> x = {0.0, 1.0, 2.0, 3.0, 4.0}, y = {0.1, 0.9, 2.2, 2.8, 4.1};
+  const auto u = parameter_uncertainty(
+      [&](const std::vector<double>& p) {
+        std::vector<double> r(x.size());
+        for (std::size_t i = 0; i < x.size(); ++i) r[i] = y[i] - p[0] * x[i];  // p[1] unused
+        return r;
+      },
+      {1.0, 5.0});
+  EXPECT_TRUE(u.singular);
+  EXPECT_TRUE(std::isnan(u.standard_deviation[1]));
+  EXPECT_GT(u.standard_deviation[0], 0.0);
+}
+
+std::string report_slurp(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST(ReportHtml, InlinesOneSvgPerPlotAndKeepsTheScripts) {
+  const auto dir = std::filesystem::temp_directory_path() / "mrd_report_html";
+  std::filesystem::remove_all(dir);
+  HtmlReport report("a <test> & \"quotes\"", dir.string());
+  report.figures("figures", {{"fit", "fit.fit_percent", 97.5, "%"}, {"not finite", "x", NAN, ""}});
+  const std::vector<double> t = {0.0, 1.0, 2.0}, f = {1.0, 4.0, 9.0};
+  const std::string dat = report.data("series", {"t", "f"}, {&t, &f});
+  report.plot("one", "first", "plot '" + dat + "' using 1:2 with lines title 'f'");
+  report.plot("two", "second", "plot '" + dat + "' using 2:1 with points title 'g'");
+  ASSERT_EQ(report.write(), "");
+  const std::string html = report_slurp(dir / "report.html");
+  std::size_t svgs = 0;
+  for (auto at = html.find("<svg"); at != std::string::npos; at = html.find("<svg", at + 1)) ++svgs;
+  EXPECT_EQ(svgs, 2u);
+  EXPECT_EQ(html.find("<?xml"), std::string::npos);  // inlined without the prologue
+  EXPECT_NE(html.find("a &lt;test&gt; &amp; &quot;quotes&quot;"), std::string::npos);
+  EXPECT_NE(html.find("data-key=\"fit.fit_percent\" data-value=\"97.5\""), std::string::npos);
+  EXPECT_NE(html.find("data-key=\"x\" data-value=\"nan\""), std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(dir / "one.gp"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "two.gp"));
+  EXPECT_NE(report_slurp(dir / "series.dat").find("2 9"), std::string::npos);
+}
+
+TEST(ReportHtml, ProvenanceQuotesTheCommandLineAndSumsTheInputs) {
+  const auto dir = std::filesystem::temp_directory_path() / "mrd_report_provenance";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "input.csv") << "abc";
+  const char* argv[] = {"mrd-replay", "a run.csv", "--seed=3"};
+  const Provenance p = provenance_of("mrd-replay", 3, argv, {(dir / "input.csv").string()}, "3");
+  EXPECT_EQ(p.command_line, "mrd-replay 'a run.csv' --seed=3");
+  HtmlReport report("provenance", dir.string());
+  report.provenance(p);
+  ASSERT_EQ(report.write(), "");
+  const std::string html = report_slurp(dir / "report.html");
+  EXPECT_NE(html.find(sha256_hex("abc")), std::string::npos);
+  EXPECT_NE(html.find("mrd-replay 'a run.csv' --seed=3"), std::string::npos) << html;
+}
+
+}  // namespace

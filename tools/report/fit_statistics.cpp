@@ -1,0 +1,116 @@
+#include "tools/report/fit_statistics.hpp"
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <limits>
+
+namespace mrd::tools {
+
+double nrmse_fit_percent(const std::vector<double>& y, const std::vector<double>& yhat, const std::vector<bool>& keep) {
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  if (y.size() != yhat.size() || y.empty() || (!keep.empty() && keep.size() != y.size())) return kNaN;
+  const auto kept = [&](std::size_t i) { return keep.empty() || keep[i]; };
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    if (kept(i)) {
+      sum += y[i];
+      ++n;
+    }
+  }
+  if (n == 0) return kNaN;
+  const double mean = sum / static_cast<double>(n);
+  double error = 0.0, spread = 0.0;
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    if (!kept(i)) continue;
+    error += (y[i] - yhat[i]) * (y[i] - yhat[i]);
+    spread += (y[i] - mean) * (y[i] - mean);
+  }
+  if (spread <= 0.0) return kNaN;
+  return 100.0 * (1.0 - std::sqrt(error) / std::sqrt(spread));
+}
+
+std::vector<double> autocorrelation(const std::vector<double>& e, std::size_t max_lag) {
+  const std::size_t n = e.size();
+  if (n == 0) return {};
+  double mean = 0.0;
+  for (const double x : e) mean += x;
+  mean /= static_cast<double>(n);
+  double energy = 0.0;
+  for (const double x : e) energy += (x - mean) * (x - mean);
+  std::vector<double> r(std::min(max_lag, n - 1) + 1, 0.0);
+  if (energy <= 0.0) return r;
+  for (std::size_t k = 0; k < r.size(); ++k) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i + k < n; ++i) sum += (e[i] - mean) * (e[i + k] - mean);
+    r[k] = sum / energy;
+  }
+  return r;
+}
+
+double autocorrelation_bound_95(std::size_t samples) {
+  return samples > 0 ? 1.96 / std::sqrt(static_cast<double>(samples)) : 0.0;
+}
+
+ParameterUncertainty parameter_uncertainty(const ResidualFunction& residuals, const std::vector<double>& x,
+                                           double relative_step) {
+  const std::size_t p = x.size();
+  const std::vector<double> r0 = residuals(x);
+  const std::size_t n = r0.size();
+  ParameterUncertainty out;
+  out.samples = n;
+  out.standard_deviation.assign(p, std::numeric_limits<double>::quiet_NaN());
+  out.correlation.assign(p, std::vector<double>(p, std::numeric_limits<double>::quiet_NaN()));
+  if (n <= p) {
+    out.singular = true;
+    return out;
+  }
+  Eigen::MatrixXd J(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(p));
+  for (std::size_t j = 0; j < p; ++j) {
+    const double h = relative_step * (x[j] != 0.0 ? std::abs(x[j]) : 1.0);
+    std::vector<double> up = x, down = x;
+    up[j] += h;
+    down[j] -= h;
+    const std::vector<double> r_up = residuals(up), r_down = residuals(down);
+    for (std::size_t i = 0; i < n; ++i)
+      J(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = (r_up[i] - r_down[i]) / (2.0 * h);
+  }
+  double ssr = 0.0;
+  for (const double v : r0) ssr += v * v;
+  const double variance = ssr / static_cast<double>(n - p);
+  out.sigma = std::sqrt(variance);
+  // A parameter the residual does not depend on at all (its column is zero: it acts on nothing
+  // the data saw) has no standard deviation; the others are estimated without it.
+  std::vector<Eigen::Index> used;
+  for (Eigen::Index j = 0; j < J.cols(); ++j)
+    if (J.col(j).norm() > 0.0) used.push_back(j);
+  out.singular = used.size() < p;
+  if (used.empty()) return out;
+  // Scale the columns first: J-A parameters span ten orders of magnitude.
+  Eigen::MatrixXd Js(J.rows(), static_cast<Eigen::Index>(used.size()));
+  Eigen::VectorXd scale(static_cast<Eigen::Index>(used.size()));
+  for (std::size_t u = 0; u < used.size(); ++u) {
+    const auto iu = static_cast<Eigen::Index>(u);
+    scale(iu) = J.col(used[u]).norm();
+    Js.col(iu) = J.col(used[u]) / scale(iu);
+  }
+  const Eigen::FullPivLU<Eigen::MatrixXd> lu(Js.transpose() * Js);
+  if (!lu.isInvertible()) {
+    out.singular = true;
+    return out;
+  }
+  const Eigen::MatrixXd scaled_cov = lu.inverse();
+  for (std::size_t a = 0; a < used.size(); ++a) {
+    const auto ia = static_cast<Eigen::Index>(a);
+    const auto pa = static_cast<std::size_t>(used[a]);
+    out.standard_deviation[pa] = out.sigma * std::sqrt(scaled_cov(ia, ia)) / scale(ia);
+    for (std::size_t b = 0; b < used.size(); ++b) {
+      const auto ib = static_cast<Eigen::Index>(b);
+      out.correlation[pa][static_cast<std::size_t>(used[b])] =
+          scaled_cov(ia, ib) / std::sqrt(scaled_cov(ia, ia) * scaled_cov(ib, ib));
+    }
+  }
+  return out;
+}
+
+}  // namespace mrd::tools

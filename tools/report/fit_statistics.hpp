@@ -1,0 +1,40 @@
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+// The figures an engineer expects beside a fitted model, as MATLAB's System Identification
+// Toolbox gives them (compare, resid, present).
+namespace mrd::tools {
+
+// NRMSE fit [%] as compare() defines it: 100 (1 - |y - yhat| / |y - mean(y)|), Euclidean norms.
+// 100 is a perfect fit, 0 no better than the mean, negative worse. NaN when y is constant or
+// the lengths differ. Samples where `keep` is given and false are left out.
+[[nodiscard]] double nrmse_fit_percent(const std::vector<double>& y, const std::vector<double>& yhat,
+                                       const std::vector<bool>& keep = {});
+
+// Normalised autocorrelation r(k) = sum e_i e_{i+k} / sum e_i^2 of a residual (mean removed),
+// lags 0..max_lag; r(0) = 1. For white noise |r(k)| stays within +-1.96/sqrt(N) at 95 %.
+[[nodiscard]] std::vector<double> autocorrelation(const std::vector<double>& residual, std::size_t max_lag);
+[[nodiscard]] double autocorrelation_bound_95(std::size_t samples);
+
+// Parameter standard deviations of a least-squares fit at its optimum x: the covariance
+// sigma^2 (J^T J)^-1 with sigma^2 = |r|^2 / (N - p) and J = dr/dx by central differences
+// (step: relative_step |x_j|, or relative_step where x_j = 0). `residuals` maps parameters to
+// the residual vector (any fixed length N > p).
+struct ParameterUncertainty {
+  std::vector<double> standard_deviation;  // per parameter; NaN where J^T J is singular
+  std::vector<std::vector<double>> correlation;
+  double sigma = 0.0;  // residual standard error, sqrt(|r|^2 / (N - p))
+  std::size_t samples = 0;
+  // Some parameter the data cannot determine: one the residual does not depend on (NaN, the
+  // others estimated without it), or J^T J singular over the rest (all NaN).
+  bool singular = false;
+};
+using ResidualFunction = std::function<std::vector<double>(const std::vector<double>&)>;
+[[nodiscard]] ParameterUncertainty parameter_uncertainty(const ResidualFunction& residuals,
+                                                         const std::vector<double>& x,
+                                                         double relative_step = 1e-4);
+
+}  // namespace mrd::tools

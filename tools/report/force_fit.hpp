@@ -1,0 +1,50 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "tools/json.hpp"
+#include "tools/report/html_report.hpp"
+
+// The force-fit part of a report, shared by mrd-replay and mrd-residual: measured against
+// predicted force over time, displacement and velocity, and the residual's structure.
+namespace mrd::tools {
+
+struct ForceFitTraces {
+  std::string name;                 // the run(s), for captions
+  std::vector<double> time;         // [s]
+  std::vector<double> displacement; // [m]
+  std::vector<double> velocity;     // [m/s]
+  std::vector<double> measured;     // [N]
+  std::vector<double> predicted;    // [N]
+  std::string predicted_label = "predicted";
+  std::vector<double> baseline;     // optional second prediction [N] (e.g. the base model)
+  std::string baseline_label;
+  std::vector<bool> keep;           // optional: false where screening set a sample aside
+};
+
+struct ForceFitFigures {
+  double fit_percent = 0.0;  // nrmse_fit_percent over the kept samples
+  double rms_N = 0.0;        // of measured - predicted over the kept samples
+  double max_N = 0.0;
+  double baseline_fit_percent = 0.0;  // NaN without a baseline
+  std::size_t lags = 0;      // autocorrelation lags 1..lags
+  double lag_step_s = 0.0;
+  double acf_bound = 0.0;    // 95 % bound, 1.96/sqrt(N)
+  double acf_outside = 0.0;  // fraction of lags 1..lags with |r| above it
+};
+[[nodiscard]] ForceFitFigures force_fit_figures(const ForceFitTraces& t, std::size_t lags = 100);
+
+// The figures as the tools' JSON "fit" object: fit_percent, rms_N, max_N, baseline_fit_percent,
+// acf_lags, acf_lag_step_s, acf_bound, acf_outside_fraction. The report's cells name them "fit.*".
+[[nodiscard]] Json force_fit_json(const ForceFitFigures& f);
+
+// The plot "residual_autocorrelation": r(k) of `residual` for k = 0..lags as impulses, at lag
+// k * lag_step on an axis labelled `lag_label`, between the 95 % bounds +-1.96/sqrt(N).
+void add_autocorrelation_plot(HtmlReport& report, const std::vector<double>& residual, std::size_t lags,
+                              double lag_step, const std::string& lag_label, const std::string& caption);
+
+// Writes the section (figures table and six plots) into the report.
+ForceFitFigures add_force_fit(HtmlReport& report, const ForceFitTraces& t);
+
+}  // namespace mrd::tools

@@ -1,0 +1,79 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+// One self-contained report.html in a directory: headings, text, tables and plots, the plots
+// drawn by gnuplot's svg terminal and inlined. Each plot's data (.dat) and script (.gp) stay
+// beside the HTML: `cd DIR && gnuplot NAME.gp` redraws NAME.svg after restyling.
+namespace mrd::tools {
+
+// One figure of a table, with the JSON path it stands for (dot-separated; "" for none): the cell
+// carries data-key and the full-precision data-value, the text shows six significant digits.
+struct ReportFigure {
+  std::string label;
+  std::string key;
+  double value = 0.0;
+  std::string unit;
+};
+
+// Where a report came from: the tool and its version, how it was called, the files it read
+// (the report adds their SHA-256), the seed when the tool draws random numbers.
+struct Provenance {
+  std::string tool;
+  std::string command_line;
+  std::vector<std::string> inputs;
+  std::string seed;  // "" when the tool draws none
+};
+[[nodiscard]] Provenance provenance_of(const std::string& tool, int argc, const char* const* argv,
+                                       std::vector<std::string> inputs, std::string seed = "");
+
+class HtmlReport {
+ public:
+  HtmlReport(std::string title, std::string directory);
+
+  void heading(const std::string& text);
+  void paragraph(const std::string& text);
+  void figures(const std::string& caption, const std::vector<ReportFigure>& rows);
+  // Fitted parameters with their standard deviations; the cells carry the JSON paths `key` and
+  // `sd_key` (dot-separated, array indices as numbers; "" for a figure the JSON lacks).
+  struct Parameter {
+    std::string label, unit;
+    double value = 0.0, standard_deviation = 0.0;
+    std::string key, sd_key;
+  };
+  void parameters(const std::string& caption, const std::vector<Parameter>& rows);
+  // Cells are text (escaped here).
+  void table(const std::string& caption, const std::vector<std::string>& header,
+             const std::vector<std::vector<std::string>>& rows);
+  void provenance(const Provenance& p);
+
+  // NAME.dat with the columns side by side (equal lengths; NaN is written as a gap gnuplot
+  // skips), thinned to at most max_rows rows for the plots. Returns the file's name in the
+  // directory, for the plot bodies. A header line names the columns.
+  std::string data(const std::string& name, const std::vector<std::string>& column_names,
+                   const std::vector<const std::vector<double>*>& columns, std::size_t max_rows = 20000);
+  // A plot: `body` is gnuplot after the terminal and output (labels, `plot '<dat>' using ...`),
+  // with data file names relative to the directory.
+  void plot(const std::string& name, const std::string& caption, const std::string& body);
+
+  // Writes the .dat (already written), .gp, .svg and report.html. Returns "" or why not.
+  [[nodiscard]] std::string write();
+
+  [[nodiscard]] const std::string& directory() const { return directory_; }
+  [[nodiscard]] std::string html_path() const;
+
+ private:
+  struct Plot {
+    std::string name, caption, body;
+  };
+  std::string title_, directory_, error_;
+  // HTML pieces in order; a plot stands as an empty piece with its index in plot_at_.
+  std::vector<std::string> pieces_;
+  std::vector<std::pair<std::size_t, Plot>> plots_;
+};
+
+// Text for HTML: & < > " escaped.
+[[nodiscard]] std::string html_escape(const std::string& text);
+
+}  // namespace mrd::tools
