@@ -67,7 +67,7 @@ HalSet::HalSet(const config::ControllerConfig& config, const hal::Clock& clock) 
   driver_ = choose<hal::CurrentDriver>(b.driver, mock_ ? &mock_->driver : nullptr, modbus_.get(),
                                        can_.get());
   if (b.demand) {
-    demand_ = choose<hal::DemandSource>(*b.demand, mock_ ? &mock_->demand : nullptr, nullptr, can_.get());
+    demand_ = choose<hal::DemandSource>(*b.demand, mock_ ? &mock_->demand : nullptr, modbus_.get(), can_.get());
   }
   lines_ = gpio_ ? static_cast<hal::DigitalLines*>(gpio_.get()) : &mock_->lines;
   if (b.driver == config::DeviceBackend::kCan) {
