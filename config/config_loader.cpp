@@ -1,10 +1,12 @@
 #include "config/config_loader.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
 
 #include "config/default_config_text.hpp"  // generated from etc/mrd/mrd.toml
 #include "config/effects_config.hpp"
@@ -91,6 +93,9 @@ void read_modbus(TomlReader& in, hal::modbus::ModbusConfig& m) {
   in.get("modbus.registers.current_feedback_address", r.current_feedback_address);
   read_kind(in, "modbus.registers.current_feedback_kind", r.current_feedback_kind);
   read_format(in, "modbus.registers.current_feedback", r.current_feedback);
+  in.get("modbus.registers.demand_address", r.demand_address);
+  read_kind(in, "modbus.registers.demand_kind", r.demand_kind);
+  read_format(in, "modbus.registers.demand", r.demand);
 }
 
 void read_can(TomlReader& in, hal::can::SocketCanConfig& c) {
@@ -100,6 +105,7 @@ void read_can(TomlReader& in, hal::can::SocketCanConfig& c) {
   in.get("can.command_id", c.command_id);
   in.get("can.use_feedback", c.use_feedback);
   in.get("can.feedback_id", c.feedback_id);
+  in.get("can.demand_id", c.demand_id);
   in.get_seconds("can.receive_timeout", c.receive_timeout);
   in.get_seconds("can.bus_off_hold_off", c.bus_off_hold_off);
 }
@@ -211,6 +217,8 @@ void read_all(TomlReader& in, ControllerConfig& c) {
   read_law(in, c.law);
   // The demand channel is opened in force mode only: table4 reads none.
   if (c.law.mode == control::ControlMode::kForce) c.backends.demand = demand;
+  c.can.use_demand = c.backends.demand == DeviceBackend::kCan;
+  c.modbus.registers.has_demand = c.backends.demand == DeviceBackend::kModbus;
   read_safety(in, c.safety);
   in.get("realtime.priority", c.realtime.priority);
   in.get("realtime.cpu", c.realtime.cpu);
@@ -248,22 +256,34 @@ std::string file_key(const std::string& field) {
 // current feedback on the LVDT's registers, a negative displacement decodes as 65.5 mm minus its
 // size (the feedback's word replaces the LVDT's high word).
 void check_register_overlaps(TomlReader& in, const hal::modbus::RegisterMap& r) {
-  const auto overlap = [](int a, RegisterKind a_kind, RegisterType a_type, int b, RegisterKind b_kind,
-                          RegisterType b_type) {
-    return a_kind == b_kind && a < b + static_cast<int>(word_count(b_type)) &&
-           b < a + static_cast<int>(word_count(a_type));
+  struct Value {
+    const char* key;   // the later value's address key, named in the error
+    const char* what;  // the earlier value, as the error names it
+    bool present;
+    int address;
+    RegisterKind kind;
+    RegisterType type;
   };
-  if (overlap(r.setpoint_address, RegisterKind::kHolding, r.setpoint.type, r.lvdt_address, r.lvdt_kind, r.lvdt.type)) {
-    in.error("modbus.registers.setpoint_address", "overlaps the LVDT's holding registers");
-  }
-  if (!r.has_current_feedback) return;
-  if (overlap(r.current_feedback_address, r.current_feedback_kind, r.current_feedback.type, r.lvdt_address,
-              r.lvdt_kind, r.lvdt.type)) {
-    in.error("modbus.registers.current_feedback_address", "overlaps the LVDT's registers");
-  }
-  if (overlap(r.current_feedback_address, r.current_feedback_kind, r.current_feedback.type, r.setpoint_address,
-              RegisterKind::kHolding, r.setpoint.type)) {
-    in.error("modbus.registers.current_feedback_address", "overlaps the setpoint's holding registers");
+  // In the order the errors name them: each value is checked against those before it.
+  const std::array<Value, 4> values{{
+      {"modbus.registers.lvdt_address", "the LVDT's registers", true, r.lvdt_address, r.lvdt_kind, r.lvdt.type},
+      {"modbus.registers.setpoint_address", "the setpoint's holding registers", true, r.setpoint_address,
+       RegisterKind::kHolding, r.setpoint.type},
+      {"modbus.registers.current_feedback_address", "the current feedback's registers", r.has_current_feedback,
+       r.current_feedback_address, r.current_feedback_kind, r.current_feedback.type},
+      {"modbus.registers.demand_address", "the demand's registers", r.has_demand, r.demand_address, r.demand_kind,
+       r.demand.type},
+  }};
+  const auto overlap = [](const Value& a, const Value& b) {
+    return a.kind == b.kind && a.address < b.address + static_cast<int>(word_count(b.type)) &&
+           b.address < a.address + static_cast<int>(word_count(a.type));
+  };
+  for (std::size_t i = 1; i < values.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (values[i].present && values[j].present && overlap(values[i], values[j])) {
+        in.error(values[i].key, std::string("overlaps ") + values[j].what);
+      }
+    }
   }
 }
 
@@ -303,9 +323,6 @@ void cross_check(TomlReader& in, const ControllerConfig& c) {
     in.warning("telemetry.ring_size", "holds less than two flush periods of records (" +
                                           std::to_string(static_cast<long>(per_pass)) +
                                           " each): expect dropped records");
-  }
-  if (c.backends.demand && *c.backends.demand != DeviceBackend::kMock) {
-    in.error("backends.demand", "the demand over Modbus or CAN is not implemented yet: use \"mock\"");
   }
   if (c.backends.demand == DeviceBackend::kMock && c.backends.lvdt != DeviceBackend::kMock) {
     in.error("backends.demand", "\"mock\" asks for simulation.demand_damping times the mock LVDT's velocity: "

@@ -66,7 +66,9 @@ HalSet::HalSet(const config::ControllerConfig& config, const hal::Clock& clock) 
                                           can_.get());
   driver_ = choose<hal::CurrentDriver>(b.driver, mock_ ? &mock_->driver : nullptr, modbus_.get(),
                                        can_.get());
-  if (b.demand) demand_ = choose<hal::DemandSource>(*b.demand, mock_ ? &mock_->demand : nullptr, nullptr, nullptr);
+  if (b.demand) {
+    demand_ = choose<hal::DemandSource>(*b.demand, mock_ ? &mock_->demand : nullptr, modbus_.get(), can_.get());
+  }
   lines_ = gpio_ ? static_cast<hal::DigitalLines*>(gpio_.get()) : &mock_->lines;
   if (b.driver == config::DeviceBackend::kCan) {
     can_enable_ = std::make_unique<CanEnableLines>(*lines_, *can_);

@@ -33,6 +33,7 @@ std::string_view to_string(CanEvent e) {
   switch (e) {
     case CanEvent::kLvdtFrames: return "lvdt_frames";
     case CanEvent::kFeedbackFrames: return "feedback_frames";
+    case CanEvent::kDemandFrames: return "demand_frames";
     case CanEvent::kWrongDlc: return "wrong_dlc";
     case CanEvent::kBadChecksum: return "bad_checksum";
     case CanEvent::kRepeatedCounter: return "repeated_counter";
@@ -75,10 +76,11 @@ StartResult SocketCanBackend::start() {
   const unsigned ifindex = if_nametoindex(config_.interface.c_str());
   if (ifindex == 0) return fail(where + ": no such interface");
 
-  std::array<can_filter, 2> filters{exact_filter(config_.lvdt_id, config_.extended_ids),
-                                    exact_filter(config_.feedback_id, config_.extended_ids)};
-  const socklen_t filter_bytes =
-      static_cast<socklen_t>(sizeof(can_filter) * (config_.use_feedback ? 2 : 1));
+  std::array<can_filter, 3> filters{exact_filter(config_.lvdt_id, config_.extended_ids)};
+  std::size_t n_filters = 1;
+  if (config_.use_feedback) filters[n_filters++] = exact_filter(config_.feedback_id, config_.extended_ids);
+  if (config_.use_demand) filters[n_filters++] = exact_filter(config_.demand_id, config_.extended_ids);
+  const socklen_t filter_bytes = static_cast<socklen_t>(sizeof(can_filter) * n_filters);
   const can_err_mask_t err_mask = kSubscribedErrors;
   if (setsockopt(fd, SOL_CAN_RAW, CAN_RAW_FILTER, filters.data(), filter_bytes) != 0 ||
       setsockopt(fd, SOL_CAN_RAW, CAN_RAW_ERR_FILTER, &err_mask, sizeof err_mask) != 0) {
@@ -119,6 +121,8 @@ void SocketCanBackend::stop() {
 }
 
 std::optional<DisplacementSample> SocketCanBackend::latest() { return samples_.pop_latest(); }
+
+std::optional<DemandSample> SocketCanBackend::latest_demand() { return demands_.pop_latest(); }
 
 std::optional<CurrentReading> SocketCanBackend::measured() { return feedback_.take(); }
 
@@ -187,6 +191,8 @@ void SocketCanBackend::on_frame(const can_frame& frame) {
     on_lvdt(data, id);
   } else if (config_.use_feedback && id == config_.feedback_id) {
     on_feedback(data, id);
+  } else if (config_.use_demand && id == config_.demand_id) {
+    on_demand(data, id);
   } else {
     counters_.bump(CanEvent::kUnexpectedFrames);
   }
@@ -207,18 +213,29 @@ bool SocketCanBackend::count_rejection(DecodeStatus status) {
   return true;
 }
 
+void SocketCanBackend::on_value_frame(DecodeStatus status, double value, bool fault, CanEvent good,
+                                      std::uint32_t& sequence, SpscRing<Sample, 64>& ring) {
+  const bool rejected = count_rejection(status);
+  // A repeated counter is a stale copy, not a new sample; other rejections are passed on as
+  // corrupted samples so the loop sees the sender misbehave.
+  if (status == DecodeStatus::kRepeatedCounter) return;
+  Sample s{value, clock_.now(), ++sequence, kSampleValid};
+  if (rejected) s = {0.0, s.timestamp, s.sequence, kSampleCorrupted};
+  if (status == DecodeStatus::kOutOfSequence) s.flags |= kSampleSequenceGap;
+  if (!rejected && fault) s.flags |= kSampleSensorFault;
+  if (!rejected) counters_.bump(good);
+  if (!ring.try_push(s)) counters_.bump(CanEvent::kSamplesDropped);
+}
+
 void SocketCanBackend::on_lvdt(std::span<const std::uint8_t> data, std::uint32_t id) {
   const auto d = decode_lvdt(id, data, config_.lvdt_id, &lvdt_counter_);
-  const bool rejected = count_rejection(d.status);
-  // A repeated counter is a stale copy, not a new sample; other rejections are passed on as
-  // corrupted samples so the loop sees the sensor misbehave.
-  if (d.status == DecodeStatus::kRepeatedCounter) return;
-  DisplacementSample s{d.value.displacement, clock_.now(), ++sequence_, kSampleValid};
-  if (rejected) s = {0.0, s.timestamp, s.sequence, kSampleCorrupted};
-  if (d.status == DecodeStatus::kOutOfSequence) s.flags |= kSampleSequenceGap;
-  if (!rejected && d.value.sensor_fault) s.flags |= kSampleSensorFault;
-  if (!rejected) counters_.bump(CanEvent::kLvdtFrames);
-  if (!samples_.try_push(s)) counters_.bump(CanEvent::kSamplesDropped);
+  on_value_frame(d.status, d.value.displacement, d.value.sensor_fault, CanEvent::kLvdtFrames, sequence_, samples_);
+}
+
+// DemandInvalid is the outer controller's own "sensor fault": a sample the loop must not use.
+void SocketCanBackend::on_demand(std::span<const std::uint8_t> data, std::uint32_t id) {
+  const auto d = decode_demand(id, data, config_.demand_id, &demand_counter_);
+  on_value_frame(d.status, d.value.demand, d.value.invalid, CanEvent::kDemandFrames, demand_sequence_, demands_);
 }
 
 void SocketCanBackend::on_feedback(std::span<const std::uint8_t> data, std::uint32_t id) {

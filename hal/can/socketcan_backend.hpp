@@ -12,6 +12,7 @@
 #include "hal/can/socketcan_config.hpp"
 #include "hal/clock.hpp"
 #include "hal/current_driver.hpp"
+#include "hal/demand_source.hpp"
 #include "hal/displacement_source.hpp"
 #include "hal/event_counters.hpp"
 #include "hal/io_thread.hpp"
@@ -24,6 +25,7 @@ namespace mrd::hal::can {
 enum class CanEvent : std::uint8_t {
   kLvdtFrames,           // good LVDT frames (including those after a gap)
   kFeedbackFrames,       // good current-feedback frames
+  kDemandFrames,         // good Force_Demand frames (force mode; including those after a gap)
   kWrongDlc,
   kBadChecksum,
   kRepeatedCounter,
@@ -42,11 +44,12 @@ enum class CanEvent : std::uint8_t {
 [[nodiscard]] std::string_view to_string(CanEvent e);
 using CanCounters = EventCounters<CanEvent>::Snapshot;
 
-// LVDT and current driver on raw SocketCAN, frames as in hal/can/mrd.dbc. A receive thread
+// LVDT, current driver and (with use_demand) force mode's demand on raw SocketCAN, frames as
+// in hal/can/mrd.dbc. A receive thread
 // blocks in recv() with SO_RCVTIMEO, decodes our ids and the error frames, and hands samples
 // to the loop through the SPSC ring. Transmission happens on the caller's thread: one
 // non-blocking send() per setpoint, no thread hop. Bus-off handling: see BusOffPolicy.
-class SocketCanBackend final : public DisplacementSource, public CurrentDriver {
+class SocketCanBackend final : public DisplacementSource, public CurrentDriver, public DemandSource {
  public:
   SocketCanBackend(SocketCanConfig config, const Clock& clock);
   ~SocketCanBackend() override;
@@ -63,6 +66,8 @@ class SocketCanBackend final : public DisplacementSource, public CurrentDriver {
   void stop();
 
   [[nodiscard]] std::optional<DisplacementSample> latest() override;
+  // Force_Demand frames as samples in N, judged as the LVDT's are (see on_value_frame).
+  [[nodiscard]] std::optional<DemandSample> latest_demand() override;
   // Sends one Coil_CurrentCommand frame now. kNotConnected before start(), kTxInhibited during
   // bus-off and its hold-off, kInvalidArgument when it does not fit, kIoError if send() fails.
   IoStatus write_setpoint(double amps) override;
@@ -83,6 +88,10 @@ class SocketCanBackend final : public DisplacementSource, public CurrentDriver {
   void on_frame(const can_frame& frame);
   void on_lvdt(std::span<const std::uint8_t> data, std::uint32_t id);
   void on_feedback(std::span<const std::uint8_t> data, std::uint32_t id);
+  void on_demand(std::span<const std::uint8_t> data, std::uint32_t id);
+  // The one reaction of the sample channels (LVDT, demand) to a decoded frame.
+  void on_value_frame(DecodeStatus status, double value, bool fault, CanEvent good,
+                      std::uint32_t& sequence, SpscRing<Sample, 64>& ring);
   bool count_rejection(DecodeStatus status);  // true when the frame is unusable
 
   SocketCanConfig config_;
@@ -93,12 +102,15 @@ class SocketCanBackend final : public DisplacementSource, public CurrentDriver {
   BusOffPolicy bus_off_;
   RollingCounterCheck lvdt_counter_;
   RollingCounterCheck feedback_counter_;
+  RollingCounterCheck demand_counter_;
   std::uint32_t sequence_ = 0;
+  std::uint32_t demand_sequence_ = 0;
 
   // Loop thread only.
   std::uint8_t tx_counter_ = 0;
 
   SpscRing<DisplacementSample, 64> samples_;
+  SpscRing<DemandSample, 64> demands_;
   LatestMailbox<CurrentReading> feedback_;
   std::atomic<int> feedback_fault_{-1};  // -1 unknown, 0 ok, 1 fault
   std::atomic<bool> enable_{false};

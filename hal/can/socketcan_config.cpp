@@ -21,6 +21,11 @@ ValidationReport SocketCanConfig::validate() const {
     r.check(feedback_id != lvdt_id && feedback_id != command_id, "feedback_id",
             "must differ from lvdt_id and command_id");
   }
+  if (use_demand) {
+    r.check(demand_id <= max_id, "demand_id", range);
+    r.check(demand_id != lvdt_id && demand_id != command_id && !(use_feedback && demand_id == feedback_id),
+            "demand_id", "must differ from lvdt_id, command_id and feedback_id");
+  }
   r.check(receive_timeout > 0ms, "receive_timeout", "must be > 0");
   r.check(bus_off_hold_off >= 0ms, "bus_off_hold_off", "must be >= 0");
   return r;

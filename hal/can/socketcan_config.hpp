@@ -16,6 +16,10 @@ struct SocketCanConfig {
   std::uint32_t command_id = kDefaultCommandId;
   bool use_feedback = true;  // the driver sends Coil_CurrentFeedback
   std::uint32_t feedback_id = kDefaultFeedbackId;
+  // Force mode's Force_Demand frame. use_demand is not a file key: the loader sets it when
+  // backends.demand = "can" (and only then is demand_id received and checked).
+  bool use_demand = false;
+  std::uint32_t demand_id = kDefaultDemandId;
   // SO_RCVTIMEO: the receive thread's longest block, so stop() returns within it.
   std::chrono::milliseconds receive_timeout{50};
   // Listen-only time after the controller is back from bus-off (see BusOffPolicy).

@@ -87,6 +87,8 @@ void ModbusBackend::stop() { thread_.stop(); }
 
 std::optional<DisplacementSample> ModbusBackend::latest() { return samples_.pop_latest(); }
 
+std::optional<DemandSample> ModbusBackend::latest_demand() { return demands_.pop_latest(); }
+
 IoStatus ModbusBackend::write_setpoint(double amps) {
   const EncodeResult encoded = encode_register(amps, config_.registers.setpoint);
   if (encoded.status != CodecStatus::kOk) return IoStatus::kInvalidArgument;
@@ -181,27 +183,40 @@ ModbusBackend::Outcome ModbusBackend::read_words(int address, RegisterKind kind,
   return Outcome::kOk;
 }
 
+ModbusBackend::Outcome ModbusBackend::read_sample(int address, RegisterKind kind, const RegisterFormat& format,
+                                                  std::uint32_t& sequence, SpscRing<Sample, 64>& ring) {
+  std::array<std::uint16_t, 2> words{};
+  const std::size_t n = word_count(format.type);
+  if (const Outcome o = read_words(address, kind, n, words.data()); o != Outcome::kOk) return o;
+  const DecodeResult decoded = decode_register({words.data(), n}, format);
+  Sample sample{decoded.value, clock_.now(), ++sequence, kSampleValid};
+  if (decoded.status != CodecStatus::kOk) {
+    sample.flags = kSampleCorrupted;
+    counters_.bump(ModbusEvent::kDecodeErrors);
+  }
+  if (!ring.try_push(sample)) counters_.bump(ModbusEvent::kSamplesDropped);
+  return Outcome::kOk;
+}
+
 ModbusBackend::Outcome ModbusBackend::poll_once() {
   const RegisterMap& map = config_.registers;
   // The command goes first: its latency matters more than the sample's.
   const Outcome written = write_pending_setpoint();
   if (written == Outcome::kLinkFailed) return written;
 
-  std::array<std::uint16_t, 2> words{};
-  const std::size_t n = word_count(map.lvdt.type);
-  if (const Outcome o = read_words(map.lvdt_address, map.lvdt_kind, n, words.data());
+  if (const Outcome o = read_sample(map.lvdt_address, map.lvdt_kind, map.lvdt, sequence_, samples_);
       o != Outcome::kOk) {
     return o;
   }
-  const DecodeResult decoded = decode_register({words.data(), n}, map.lvdt);
-  DisplacementSample sample{decoded.value, clock_.now(), ++sequence_, kSampleValid};
-  if (decoded.status != CodecStatus::kOk) {
-    sample.flags = kSampleCorrupted;
-    counters_.bump(ModbusEvent::kDecodeErrors);
+  if (map.has_demand) {
+    if (const Outcome o = read_sample(map.demand_address, map.demand_kind, map.demand, demand_sequence_, demands_);
+        o != Outcome::kOk) {
+      return o;
+    }
   }
-  if (!samples_.try_push(sample)) counters_.bump(ModbusEvent::kSamplesDropped);
 
   if (!map.has_current_feedback) return written;
+  std::array<std::uint16_t, 2> words{};
   const std::size_t m = word_count(map.current_feedback.type);
   if (const Outcome o = read_words(map.current_feedback_address, map.current_feedback_kind, m,
                                    words.data());

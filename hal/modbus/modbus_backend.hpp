@@ -7,6 +7,7 @@
 
 #include "hal/clock.hpp"
 #include "hal/current_driver.hpp"
+#include "hal/demand_source.hpp"
 #include "hal/displacement_source.hpp"
 #include "hal/event_counters.hpp"
 #include "hal/io_thread.hpp"
@@ -38,7 +39,8 @@ enum class ModbusEvent : std::uint8_t {
 [[nodiscard]] std::string_view to_string(ModbusEvent e);
 using ModbusCounters = EventCounters<ModbusEvent>::Snapshot;
 
-// LVDT and current driver behind one Modbus device (RTU or TCP). All libmodbus I/O runs in one
+// LVDT, current driver and (with registers.has_demand) force mode's demand behind one Modbus
+// device (RTU or TCP). All libmodbus I/O runs in one
 // thread that owns the only modbus_t: libmodbus blocks, and an RTU read alone takes ~1.6 ms at
 // 115200 baud, longer than a 1 kHz period. The loop's calls only touch lock-free buffers.
 //
@@ -46,7 +48,7 @@ using ModbusCounters = EventCounters<ModbusEvent>::Snapshot;
 // after a back-off that doubles from reconnect_min to reconnect_max and resets after the next
 // good transaction. A Modbus exception response is a device answer, not a link failure: it is
 // counted and the link kept. stop() returns within one response timeout.
-class ModbusBackend final : public DisplacementSource, public CurrentDriver {
+class ModbusBackend final : public DisplacementSource, public CurrentDriver, public DemandSource {
  public:
   ModbusBackend(ModbusConfig config, const Clock& clock);
   ~ModbusBackend() override;
@@ -59,6 +61,9 @@ class ModbusBackend final : public DisplacementSource, public CurrentDriver {
   void stop();
 
   [[nodiscard]] std::optional<DisplacementSample> latest() override;
+  // The demand register's value in N, one sample per poll (the register has no counter: a
+  // value the outer controller stopped updating reads as fresh).
+  [[nodiscard]] std::optional<DemandSample> latest_demand() override;
   // Queues the newest setpoint for the I/O thread. kInvalidArgument when it cannot be encoded;
   // kNotConnected when queued but the link is down (it is written after reconnecting).
   IoStatus write_setpoint(double amps) override;
@@ -81,16 +86,22 @@ class ModbusBackend final : public DisplacementSource, public CurrentDriver {
   Outcome write_pending_setpoint();
   Outcome read_words(int address, RegisterKind kind, std::size_t count, std::uint16_t* out);
   Outcome classify_failure(ModbusEvent counter);
+  // Reads one value's registers and hands it to the loop as a sample (corrupted when it does
+  // not decode).
+  Outcome read_sample(int address, RegisterKind kind, const RegisterFormat& format,
+                      std::uint32_t& sequence, SpscRing<Sample, 64>& ring);
 
   ModbusConfig config_;
   const Clock& clock_;
   _modbus* ctx_ = nullptr;  // used only by thread_ while it runs
 
   SpscRing<DisplacementSample, 64> samples_;
+  SpscRing<DemandSample, 64> demands_;
   LatestMailbox<EncodeResult> setpoints_;
   LatestMailbox<CurrentReading> feedback_;
   std::optional<EncodeResult> pending_setpoint_;  // I/O thread only
   std::uint32_t sequence_ = 0;                    // I/O thread only
+  std::uint32_t demand_sequence_ = 0;             // I/O thread only
 
   std::atomic<bool> connected_{false};
   std::atomic<int> last_errno_{0};

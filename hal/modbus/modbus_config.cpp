@@ -25,6 +25,10 @@ ValidationReport RegisterMap::validate() const {
     check_address(r, "current_feedback_address", current_feedback_address, current_feedback);
     r.merge(current_feedback.validate(), "current_feedback");
   }
+  if (has_demand) {
+    check_address(r, "demand_address", demand_address, demand);
+    r.merge(demand.validate(), "demand");
+  }
   return r;
 }
 

@@ -41,6 +41,14 @@ struct RegisterMap {
   RegisterFormat current_feedback{RegisterType::kInt16, WordOrder::kHighFirst, ByteOrder::kNormal,
                                   1e-3, 0.0};
 
+  // Force mode's demand [N], which the outer controller writes into the device; read with the
+  // LVDT each poll. has_demand is not a file key: the loader sets it for backends.demand =
+  // "modbus". Holding registers 2-3 by default, past a one- or two-word setpoint at 0.
+  bool has_demand = false;
+  int demand_address = 2;
+  RegisterKind demand_kind = RegisterKind::kHolding;
+  RegisterFormat demand{RegisterType::kInt32, WordOrder::kHighFirst, ByteOrder::kNormal, 0.1, 0.0};  // 0.1 N/count
+
   [[nodiscard]] ValidationReport validate() const;
 };
 

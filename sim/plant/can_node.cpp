@@ -98,7 +98,7 @@ void CanNode::set_fault_pull(bool fault) {
   pull_state_ = fault ? 1 : 0;
 }
 
-void CanNode::send(double t, double lvdt, double coil_current, const ActiveFaults& faults) {
+void CanNode::send(double t, double lvdt, double coil_current, double demand, const ActiveFaults& faults) {
   using hal::can::EncodeStatus;
   const double dt = t - last_t_;
   last_t_ = t;
@@ -144,6 +144,12 @@ void CanNode::send(double t, double lvdt, double coil_current, const ActiveFault
       transmit(to_wire(fb.frame, ids_.extended_ids));
       ++feedback_sent_;
     }
+  }
+  // The outer controller of force mode.
+  if (ids_.use_demand) {
+    const auto d = hal::can::encode_demand(ids_.demand_id, {demand, false, demand_counter_});
+    demand_counter_ = static_cast<std::uint8_t>((demand_counter_ + 1) & 0x0F);
+    if (d.status == EncodeStatus::kOk) transmit(to_wire(d.frame, ids_.extended_ids));
   }
   published_[kLvdtSent].store(lvdt_sent_, std::memory_order_relaxed);
   published_[kLvdtLost].store(lvdt_lost_, std::memory_order_relaxed);

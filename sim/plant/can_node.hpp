@@ -41,7 +41,8 @@ class CanNode {
   void stop();
 
   // Loop side, once per period at plant time t [s].
-  void send(double t, double lvdt, double coil_current, const ActiveFaults& faults);
+  // `demand` [N] goes out as a Force_Demand frame when the controller receives it.
+  void send(double t, double lvdt, double coil_current, double demand, const ActiveFaults& faults);
   // The newest command: setpoint [A] and DriverEnable; 0 A and off before the first.
   [[nodiscard]] double setpoint() const { return setpoint_.load(std::memory_order_relaxed); }
   [[nodiscard]] bool enabled() const { return enable_.load(std::memory_order_relaxed); }
@@ -70,6 +71,7 @@ class CanNode {
   std::mt19937_64 rng_;
   std::uint8_t lvdt_counter_ = 0;
   std::uint8_t feedback_counter_ = 0;
+  std::uint8_t demand_counter_ = 0;
   double error_credit_ = 0.0;
   double last_t_ = 0.0;
   bool bus_off_sent_ = false;

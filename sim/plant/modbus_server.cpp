@@ -41,7 +41,7 @@ void unpack(std::uint32_t packed, RegisterType type, std::uint16_t* out) {
 }
 
 int top_address(const hal::modbus::RegisterMap& r) {
-  return std::max({r.lvdt_address + 2, r.setpoint_address + 2, r.current_feedback_address + 2});
+  return std::max({r.lvdt_address + 2, r.setpoint_address + 2, r.current_feedback_address + 2, r.demand_address + 2});
 }
 
 std::string errno_text(const std::string& what) { return what + ": " + std::strerror(errno); }
@@ -143,13 +143,16 @@ void ModbusServer::close_all() {
   listen_fd_ = -1;
 }
 
-void ModbusServer::publish(double lvdt, double coil_current, const ActiveFaults& faults) {
+void ModbusServer::publish(double lvdt, double coil_current, double demand, const ActiveFaults& faults) {
   const auto& r = layout_.registers;
   if (const auto e = encode_register(lvdt, r.lvdt); e.status == CodecStatus::kOk) {
     lvdt_words_.store(pack(e), std::memory_order_relaxed);
   }
   if (const auto e = encode_register(coil_current, r.current_feedback); e.status == CodecStatus::kOk) {
     feedback_words_.store(pack(e), std::memory_order_relaxed);
+  }
+  if (const auto e = encode_register(demand, r.demand); e.status == CodecStatus::kOk) {
+    demand_words_.store(pack(e), std::memory_order_relaxed);
   }
   stall_.store(faults.has(FaultKind::kServerStall), std::memory_order_relaxed);
   down_.store(faults.has(FaultKind::kServerRestart), std::memory_order_relaxed);
@@ -175,6 +178,10 @@ void ModbusServer::fill_registers() {
   if (r.has_current_feedback) {
     unpack(feedback_words_.load(std::memory_order_relaxed), r.current_feedback.type,
            fb + r.current_feedback_address);
+  }
+  if (r.has_demand) {
+    std::uint16_t* demand = r.demand_kind == RegisterKind::kInput ? map_->tab_input_registers : map_->tab_registers;
+    unpack(demand_words_.load(std::memory_order_relaxed), r.demand.type, demand + r.demand_address);
   }
 }
 

@@ -47,7 +47,8 @@ class ModbusServer {
   [[nodiscard]] int port() const { return port_; }
 
   // Loop side: this period's LVDT value, coil current and faults.
-  void publish(double lvdt, double coil_current, const ActiveFaults& faults);
+  // `demand` [N] goes to the demand registers when the controller reads them.
+  void publish(double lvdt, double coil_current, double demand, const ActiveFaults& faults);
   // The newest setpoint the controller wrote [A]; 0 before the first.
   [[nodiscard]] double setpoint() const { return setpoint_.load(std::memory_order_relaxed); }
   [[nodiscard]] ModbusServerCounters counters() const;
@@ -77,6 +78,7 @@ class ModbusServer {
 
   std::atomic<std::uint32_t> lvdt_words_{0};
   std::atomic<std::uint32_t> feedback_words_{0};
+  std::atomic<std::uint32_t> demand_words_{0};
   std::atomic<double> setpoint_{0.0};
   std::atomic<bool> stall_{false};
   std::atomic<bool> down_{false};

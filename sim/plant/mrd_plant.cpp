@@ -178,8 +178,10 @@ int run_plant(const mrd::plant::PlantConfig& config, mrd::plant::Rig& rig) {
       fault_origin = t;
     }
     const auto& s = rig.step(t, fault_origin ? t - *fault_origin : -1.0, buses.commanded_current());
-    if (buses.modbus) buses.modbus->publish(s.lvdt, s.reading.coil_current, s.faults);
-    if (buses.can) buses.can->send(t, s.lvdt, s.reading.coil_current, s.faults);
+    // Force mode's outer controller: c v, with the sign of the motion the damper resists.
+    const double demand = config.sends_demand() ? config.demand_damping * s.reading.sensor_velocity : 0.0;
+    if (buses.modbus) buses.modbus->publish(s.lvdt, s.reading.coil_current, demand, s.faults);
+    if (buses.can) buses.can->send(t, s.lvdt, s.reading.coil_current, demand, s.faults);
     log.write(s);
   };
   mrd::runtime::LoopStatistics stats;

@@ -112,6 +112,7 @@ void read_all(const toml::table& root, TomlReader& in, PlantConfig& c, const std
   in.get("plant.controller_config", c.controller_config);
   in.get("plant.lvdt_noise", c.lvdt_noise);
   in.get("plant.force_noise", c.force_noise);
+  in.get("plant.demand_damping", c.demand_damping);
   in.get("plant.seed", c.seed);
   in.get("plant.log", c.log);
   in.get_enum("plant.faults_from", c.faults_from,
@@ -141,6 +142,9 @@ void validate(TomlReader& in, const PlantConfig& c) {
   if (!(c.duration >= 0.0)) in.error("plant.duration", "must be >= 0 s (0: the profile's length)");
   if (!(c.lvdt_noise >= 0.0)) in.error("plant.lvdt_noise", "must be >= 0 m");
   if (!(c.force_noise >= 0.0)) in.error("plant.force_noise", "must be >= 0 N");
+  if (!(c.demand_damping >= 0.0 && std::isfinite(c.demand_damping))) {
+    in.error("plant.demand_damping", "must be a finite value >= 0 N s/m");
+  }
   const ValidationReport realtime = c.realtime.validate();
   for (const auto& problem : realtime.issues()) {
     in.error("realtime." + problem.field, problem.message);
@@ -225,14 +229,18 @@ LoadedPlantConfig load_plant_config_text(std::string_view text, const std::strin
   read_all(*root, in, out.config, file_name);
   in.report_unknown_keys();
   validate(in, out.config);
-  config::file_messages(messages, out.errors, out.warnings);
 
   // The controller's side of the buses and its damper.
   const auto controller = out.config.controller_config.empty()
                               ? config::load_default_config()
                               : config::load_config_file(out.config.controller_config);
-  for (const auto& m : controller.errors) out.errors.push_back(m);
   out.config.controller = controller.config;
+  if (out.config.demand_damping > 0.0 && controller.ok() && !out.config.sends_demand()) {
+    in.error("plant.demand_damping", "the controller config reads no demand from a bus: it needs control.mode = "
+                                     "\"force\" and backends.demand = \"modbus\" or \"can\"");
+  }
+  config::file_messages(messages, out.errors, out.warnings);
+  for (const auto& m : controller.errors) out.errors.push_back(m);
   return out;
 }
 

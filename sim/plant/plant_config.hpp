@@ -86,6 +86,9 @@ struct PlantConfig {
   std::string controller_config;  // "": the controller's embedded default
   double lvdt_noise = 5e-6;  // RMS [m]
   double force_noise = 0.0;  // load cell RMS [N]
+  // The outer controller of force mode: c [N s/m] for a demand of c times the rig's velocity,
+  // sent over the bus the controller reads it from; 0 sends none.
+  double demand_damping = 0.0;
   std::uint32_t seed = 1;
   std::string log;           // recorded-run CSV ("": none)
   FaultClock faults_from = FaultClock::kFirstCommand;
@@ -107,6 +110,10 @@ struct PlantConfig {
   [[nodiscard]] std::string listen_host() const;
   [[nodiscard]] int listen_port() const;
   [[nodiscard]] std::string can_interface() const;
+  // True when demand_damping is on and the controller reads its demand from one of our buses.
+  [[nodiscard]] bool sends_demand() const {
+    return demand_damping > 0.0 && (controller.modbus.registers.has_demand || controller.can.use_demand);
+  }
 };
 
 struct LoadedPlantConfig {

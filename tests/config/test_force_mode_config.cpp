@@ -73,11 +73,58 @@ demand = "mock"
 
 namespace {
 
-TEST(ForceModeConfig, TheDemandOverABusIsRefusedUntilItIsImplemented) {
-  const LoadedConfig c = load_config_text("[control]\nmode = \"force\"\n[backends]\ndemand = \"can\"\n", "can.toml");
-  EXPECT_TRUE(mrd::test::has_error(c, "can.toml:4: backends.demand: the demand over Modbus or CAN is not implemented "
-                                      "yet: use \"mock\""))
+TEST(ForceModeConfig, TheDemandOverCanTurnsOnItsFrameWithAnIdThatMustNotClash) {
+  LoadedConfig c = load_config_text(
+      "[control]\nmode = \"force\"\n[backends]\nlvdt = \"can\"\ndemand = \"can\"\n[can]\ndemand_id = 0x121\n",
+      "can.toml");
+  ASSERT_TRUE(c.ok()) << c.report();
+  EXPECT_EQ(c.config.backends.demand, DeviceBackend::kCan);
+  EXPECT_TRUE(c.config.can.use_demand);
+  EXPECT_EQ(c.config.can.demand_id, 0x121u);
+
+  c = load_config_text("[control]\nmode = \"force\"\n[backends]\nlvdt = \"can\"\ndemand = \"can\"\n[can]\n"
+                       "demand_id = 0x110\n",
+                       "clash.toml");
+  EXPECT_TRUE(mrd::test::has_error(c, "clash.toml:7: can.demand_id: must differ from lvdt_id, command_id and "
+                                      "feedback_id"))
       << c.report();
+  // In table4 mode the demand is not received, so its id is not checked either.
+  c = load_config_text("[backends]\nlvdt = \"can\"\n[can]\ndemand_id = 0x110\n", "table4.toml");
+  EXPECT_TRUE(c.ok()) << c.report();
+  EXPECT_FALSE(c.config.can.use_demand);
+}
+
+TEST(ForceModeConfig, TheDemandOverModbusReadsItsRegisterWhichMustNotOverlapTheOthers) {
+  const std::string head = "[control]\nmode = \"force\"\n[backends]\nlvdt = \"modbus\"\ndemand = \"modbus\"\n"
+                           "[modbus.registers]\n";
+  LoadedConfig c = load_config_text(head + "demand_address = 7\ndemand_kind = \"input\"\n[modbus.registers.demand]\n"
+                                           "type = \"float32\"\nscale = 1.0\n",
+                                    "modbus.toml");
+  ASSERT_TRUE(c.ok()) << c.report();
+  const auto& r = c.config.modbus.registers;
+  EXPECT_TRUE(r.has_demand);
+  EXPECT_EQ(r.demand_address, 7);
+  EXPECT_EQ(r.demand_kind, mrd::hal::modbus::RegisterKind::kInput);
+  EXPECT_EQ(r.demand.type, mrd::hal::modbus::RegisterType::kFloat32);
+  EXPECT_EQ(r.demand.scale, 1.0);
+
+  c = load_config_text(head + "demand_address = 1\ndemand_kind = \"input\"\n", "lvdt.toml");
+  EXPECT_TRUE(mrd::test::has_error(c, "lvdt.toml:7: modbus.registers.demand_address: overlaps the LVDT's registers"))
+      << c.report();
+  c = load_config_text(head + "demand_address = 0\n", "setpoint.toml");
+  EXPECT_TRUE(mrd::test::has_error(c, "setpoint.toml:7: modbus.registers.demand_address: overlaps the setpoint's "
+                                      "holding registers"))
+      << c.report();
+  c = load_config_text(head + "has_current_feedback = true\ncurrent_feedback_address = 5\ndemand_kind = \"input\"\n"
+                              "demand_address = 4\n",
+                       "feedback.toml");
+  EXPECT_TRUE(mrd::test::has_error(c, "feedback.toml:10: modbus.registers.demand_address: overlaps the current "
+                                      "feedback's registers"))
+      << c.report();
+  // In table4 mode the register is not read, so it may sit anywhere.
+  c = load_config_text("[backends]\nlvdt = \"modbus\"\n[modbus.registers]\ndemand_address = 0\n", "table4.toml");
+  EXPECT_TRUE(c.ok()) << c.report();
+  EXPECT_FALSE(c.config.modbus.registers.has_demand);
 }
 
 }  // namespace

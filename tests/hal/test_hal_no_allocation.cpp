@@ -55,6 +55,7 @@ TEST(HalRealTime, RingsMailboxesAndCodecsDoNotAllocate) {
   const modbus::RegisterFormat format{modbus::RegisterType::kInt32, modbus::WordOrder::kLowFirst,
                                       modbus::ByteOrder::kSwapped, 1e-6, 0.0};
   can::RollingCounterCheck counter;
+  can::RollingCounterCheck demand_counter;
   double sink = 0.0;
   start_counting_allocations();
   for (int i = 0; i < kCycles; ++i) {
@@ -67,6 +68,10 @@ TEST(HalRealTime, RingsMailboxesAndCodecsDoNotAllocate) {
                                         {i * 1e-6, false, static_cast<std::uint8_t>(i & 0xF)});
     sink += can::decode_lvdt(frame.frame.id, frame.frame.data, can::kDefaultLvdtId, &counter)
                 .value.displacement;
+    const auto demand = can::encode_demand(can::kDefaultDemandId,
+                                           {i * 0.1, false, static_cast<std::uint8_t>(i & 0xF)});
+    sink += can::decode_demand(demand.frame.id, demand.frame.data, can::kDefaultDemandId, &demand_counter)
+                .value.demand;
   }
   EXPECT_EQ(stop_counting_allocations(), 0u);
   EXPECT_TRUE(std::isfinite(sink));

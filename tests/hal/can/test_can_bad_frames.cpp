@@ -20,8 +20,10 @@ using mrd::hal::MonotonicClock;
 using mrd::test::wait_for;
 using namespace mrd::hal::can;
 
-class ForgedBus : public ::testing::Test {
+// The back end with `config`, its receive thread fed through a socketpair.
+class ForgedBusBase : public ::testing::Test {
  protected:
+  explicit ForgedBusBase(SocketCanConfig config) : backend_(std::move(config), clock_) {}
   void SetUp() override {
     int fds[2];
     ASSERT_EQ(socketpair(AF_UNIX, SOCK_DGRAM | SOCK_CLOEXEC, 0, fds), 0);
@@ -41,17 +43,22 @@ class ForgedBus : public ::testing::Test {
     std::memcpy(frame.data, data.data(), data.size());
     ASSERT_EQ(send(bus_, &frame, sizeof frame, 0), static_cast<ssize_t>(sizeof frame));
   }
-  void send_lvdt(double metres, std::uint8_t counter) {
-    send_frame(kDefaultLvdtId, encode_lvdt(kDefaultLvdtId, {metres, false, counter}).frame.data);
-  }
   // Waits until the receive thread has counted `n` of `event`.
   bool counted(CanEvent event, std::uint64_t n) {
     return wait_for([&] { return backend_.counters()[event] == n; });
   }
 
   MonotonicClock clock_;
-  SocketCanBackend backend_{SocketCanConfig{}, clock_};
+  SocketCanBackend backend_;
   int bus_ = -1;
+};
+
+class ForgedBus : public ForgedBusBase {
+ protected:
+  ForgedBus() : ForgedBusBase(SocketCanConfig{}) {}
+  void send_lvdt(double metres, std::uint8_t counter) {
+    send_frame(kDefaultLvdtId, encode_lvdt(kDefaultLvdtId, {metres, false, counter}).frame.data);
+  }
 };
 
 TEST_F(ForgedBus, BadChecksumWrongDlcAndRepeatedCounterAreNeverUsed) {
@@ -117,6 +124,76 @@ TEST_F(ForgedBus, AFloodOfUnexpectedIdsIsCountedAndTheLvdtStillGetsThrough) {
   const auto s = backend_.latest();
   ASSERT_TRUE(s && s->usable());
   EXPECT_DOUBLE_EQ(s->value, 1e-6 * (kFlood - 1));
+}
+
+// The Force_Demand frame through the same receive thread: newtons inside, and the LVDT's
+// reaction to bad frames, with DemandInvalid as the sender's own fault flag.
+class ForgedDemandBus : public ForgedBusBase {
+ protected:
+  static SocketCanConfig demand_config() {
+    SocketCanConfig c;
+    c.use_demand = true;
+    return c;
+  }
+  ForgedDemandBus() : ForgedBusBase(demand_config()) {}
+  void send_demand_frame(std::span<const std::uint8_t> data) { send_frame(kDefaultDemandId, data); }
+};
+
+TEST_F(ForgedDemandBus, DemandFramesBecomeSamplesInNewtonsAndBadOnesAreNeverUsed) {
+  // 0x120 with bytes 0-3 = -12345 counts of 0.1 N, written by hand (little-endian), flags 0,
+  // counter 0, and the CRC from the codec's checked CRC routine.
+  std::array<std::uint8_t, 8> hand{0xC7, 0xCF, 0xFF, 0xFF, 0x00, 0x00, 0x00, 0x00};
+  hand[7] = crc8_sae_j1850(std::span(hand).first(7));
+  send_demand_frame(hand);
+  ASSERT_TRUE(counted(CanEvent::kDemandFrames, 1));
+  auto s = backend_.latest_demand();
+  ASSERT_TRUE(s && s->usable());
+  EXPECT_DOUBLE_EQ(s->value, -1234.5);
+  EXPECT_EQ(s->sequence, 1u);
+  EXPECT_FALSE(backend_.latest().has_value()) << "a demand is not a displacement";
+
+  auto forged = encode_demand(kDefaultDemandId, {500.0, false, 1}).frame;
+  forged.data[2] ^= 0x10;  // a flipped bit in the value
+  send_demand_frame(forged.data);
+  ASSERT_TRUE(counted(CanEvent::kBadChecksum, 1));
+  s = backend_.latest_demand();
+  ASSERT_TRUE(s);
+  EXPECT_FALSE(s->usable());
+  EXPECT_TRUE(s->flags & mrd::hal::kSampleCorrupted);
+
+  const auto good = encode_demand(kDefaultDemandId, {500.0, false, 1}).frame;
+  send_demand_frame(std::span(good.data).first(6));  // DLC 6
+  ASSERT_TRUE(counted(CanEvent::kWrongDlc, 1));
+  s = backend_.latest_demand();
+  ASSERT_TRUE(s);
+  EXPECT_TRUE(s->flags & mrd::hal::kSampleCorrupted);
+
+  send_demand_frame(encode_demand(kDefaultDemandId, {700.0, false, 0}).frame.data);  // counter 0 again
+  ASSERT_TRUE(counted(CanEvent::kRepeatedCounter, 1));
+  EXPECT_FALSE(backend_.latest_demand().has_value());
+
+  send_demand_frame(encode_demand(kDefaultDemandId, {800.0, false, 3}).frame.data);  // 0 -> 3: lost frames
+  ASSERT_TRUE(counted(CanEvent::kSequenceGaps, 1));
+  s = backend_.latest_demand();
+  ASSERT_TRUE(s && s->usable());
+  EXPECT_TRUE(s->flags & mrd::hal::kSampleSequenceGap);
+  EXPECT_DOUBLE_EQ(s->value, 800.0);
+
+  send_demand_frame(encode_demand(kDefaultDemandId, {900.0, true, 4}).frame.data);  // DemandInvalid
+  ASSERT_TRUE(counted(CanEvent::kDemandFrames, 3));
+  s = backend_.latest_demand();
+  ASSERT_TRUE(s);
+  EXPECT_FALSE(s->usable());
+  EXPECT_TRUE(s->flags & mrd::hal::kSampleSensorFault);
+  EXPECT_FALSE(s->flags & mrd::hal::kSampleCorrupted);
+  EXPECT_EQ(s->sequence, 5u) << "one sample each but for the repeated counter";
+}
+
+TEST_F(ForgedBus, WithoutUseDemandTheDemandFrameIsUnexpected) {
+  send_frame(kDefaultDemandId, encode_demand(kDefaultDemandId, {100.0, false, 0}).frame.data);
+  ASSERT_TRUE(counted(CanEvent::kUnexpectedFrames, 1));
+  EXPECT_FALSE(backend_.latest_demand().has_value());
+  EXPECT_EQ(backend_.counters()[CanEvent::kDemandFrames], 0u);
 }
 
 }  // namespace

@@ -74,4 +74,21 @@ TEST(SocketCanConfig, ValidatesIdsNamesAndTimes) {
   EXPECT_TRUE(c.validate().ok()) << c.validate().to_string();
 }
 
+TEST(SocketCanConfig, TheDemandIdIsCheckedOnlyWhenTheDemandIsReceived) {
+  SocketCanConfig c;
+  c.demand_id = c.command_id;
+  EXPECT_TRUE(c.validate().ok()) << c.validate().to_string();
+  c.use_demand = true;
+  EXPECT_TRUE(c.validate().mentions("demand_id")) << c.validate().to_string();
+  c.demand_id = c.feedback_id;
+  EXPECT_TRUE(c.validate().mentions("demand_id"));
+  c.use_feedback = false;  // then the feedback's id is free
+  EXPECT_TRUE(c.validate().ok()) << c.validate().to_string();
+  c = SocketCanConfig{};
+  c.use_demand = true;
+  EXPECT_TRUE(c.validate().ok()) << "0x120 is the default and clashes with nothing";
+  c.demand_id = 0x800;
+  EXPECT_TRUE(c.validate().mentions("demand_id")) << "needs 29-bit ids";
+}
+
 }  // namespace

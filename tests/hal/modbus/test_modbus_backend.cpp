@@ -126,6 +126,58 @@ TEST_F(ModbusBackendTest, NonFiniteRegisterGivesACorruptedSampleNotACrash) {
   EXPECT_TRUE(backend.connected());
 }
 
+// The outer controller's demand in a holding-register pair, 0.1 N per count, read with the
+// LVDT each poll; a value that does not decode is a corrupted demand.
+TEST_F(ModbusBackendTest, ReadsTheDemandRegisterAsSamplesInNewtons) {
+  constexpr int kDemandAddress = 40;
+  ModbusTestServer server;
+  ASSERT_TRUE(server.listening());
+  server.set_input_registers(kLvdtAddress, {0x0000, 1000});
+  server.set_holding_registers(kDemandAddress, {0xFFFF, 0xCFC7});  // -12345 counts
+  auto config = config_for(server.port());
+  config.registers.has_demand = true;
+  config.registers.demand_address = kDemandAddress;
+  ModbusBackend backend(config, clock);
+  ASSERT_TRUE(backend.start().ok);
+
+  std::optional<mrd::hal::DemandSample> d;
+  ASSERT_TRUE(wait_for([&] { return (d = backend.latest_demand()).has_value(); }));
+  EXPECT_TRUE(d->usable());
+  EXPECT_DOUBLE_EQ(d->value, -1234.5);
+  const auto lvdt = any_sample(backend);
+  ASSERT_TRUE(lvdt.has_value());
+  EXPECT_DOUBLE_EQ(lvdt->value, 1e-3) << "the LVDT is still read";
+
+  server.set_holding_registers(kDemandAddress, {0x0000, 0x2710});  // 1000.0 N
+  ASSERT_TRUE(wait_for([&] { return (d = backend.latest_demand()) && d->value > 0.0; }));
+  EXPECT_DOUBLE_EQ(d->value, 1000.0);
+
+  ModbusTestServer nan_server;
+  nan_server.set_input_registers(kLvdtAddress, {0x0000, 1000});
+  nan_server.set_holding_registers(kDemandAddress, {0x7FC0, 0x0000});  // NaN as float32
+  config = config_for(nan_server.port());
+  config.registers.has_demand = true;
+  config.registers.demand_address = kDemandAddress;
+  config.registers.demand.type = mrd::hal::modbus::RegisterType::kFloat32;
+  config.registers.demand.scale = 1.0;
+  ModbusBackend nan_backend(config, clock);
+  ASSERT_TRUE(nan_backend.start().ok);
+  ASSERT_TRUE(wait_for([&] { return (d = nan_backend.latest_demand()).has_value(); }));
+  EXPECT_FALSE(d->usable());
+  EXPECT_TRUE(d->flags & mrd::hal::kSampleCorrupted);
+  EXPECT_GE(nan_backend.counters()[ModbusEvent::kDecodeErrors], 1u);
+}
+
+TEST_F(ModbusBackendTest, WithoutHasDemandNoDemandIsRead) {
+  ModbusTestServer server;
+  ASSERT_TRUE(server.listening());
+  server.set_input_registers(kLvdtAddress, {0x0000, 1000});
+  ModbusBackend backend(config_for(server.port()), clock);
+  ASSERT_TRUE(backend.start().ok);
+  ASSERT_TRUE(any_sample(backend).has_value());
+  EXPECT_FALSE(backend.latest_demand().has_value());
+}
+
 TEST_F(ModbusBackendTest, ReconnectsWhenTheServerGoesAwayAndComesBack) {
   auto server = std::make_unique<ModbusTestServer>();
   ASSERT_TRUE(server->listening());

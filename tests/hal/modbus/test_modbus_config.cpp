@@ -37,6 +37,20 @@ TEST(ModbusConfig, EachBadFieldIsReportedWithItsPath) {
   }
 }
 
+TEST(ModbusConfig, TheDemandRegisterIsCheckedOnlyWhenTheDemandIsRead) {
+  ModbusConfig c;
+  c.registers.demand_address = 65535;  // its int32 needs two words
+  c.registers.demand.scale = 0.0;
+  EXPECT_TRUE(c.validate().ok()) << c.validate().to_string();
+  c.registers.has_demand = true;
+  const auto r = c.validate();
+  EXPECT_TRUE(r.mentions("registers.demand_address")) << r.to_string();
+  EXPECT_TRUE(r.mentions("registers.demand.scale")) << r.to_string();
+  c.registers = RegisterMap{};
+  c.registers.has_demand = true;
+  EXPECT_TRUE(c.validate().ok()) << c.validate().to_string();
+}
+
 TEST(ModbusConfig, TcpChecksHostPortAndGatewayUnitId) {
   ModbusConfig c;
   c.tcp = {"", 70000};

@@ -1,0 +1,48 @@
+// HalSet hands the loop the demand channel the config names: the CAN back end itself with
+// backends.demand = "can" or "modbus" (the same back end as the LVDT on that bus), none in
+// table4 mode.
+#include <gtest/gtest.h>
+
+#include "config/config_loader.hpp"
+#include "firmware/hal_set.hpp"
+
+namespace {
+
+using mrd::hal::can::SocketCanBackend;
+
+TEST(HalSetDemand, TheCanDemandIsTheCanBackEndThatAlsoReadsTheLvdt) {
+  const auto loaded = mrd::config::load_config_text(
+      "[control]\nmode = \"force\"\n[backends]\nlvdt = \"can\"\ndemand = \"can\"\n", "can.toml");
+  ASSERT_TRUE(loaded.ok()) << loaded.report();
+  const mrd::hal::MonotonicClock clock;
+  mrd::firmware::HalSet hal(loaded.config, clock);  // not started: no CAN on the build machine
+  const auto devices = hal.devices();
+  ASSERT_NE(devices.demand, nullptr);
+  auto* can = dynamic_cast<SocketCanBackend*>(devices.demand);
+  ASSERT_NE(can, nullptr);
+  EXPECT_EQ(can, dynamic_cast<SocketCanBackend*>(&devices.lvdt));
+  EXPECT_FALSE(devices.demand->latest_demand().has_value());
+}
+
+TEST(HalSetDemand, TheModbusDemandIsTheModbusBackEndThatAlsoReadsTheLvdt) {
+  const auto loaded = mrd::config::load_config_text(
+      "[control]\nmode = \"force\"\n[backends]\nlvdt = \"modbus\"\ndemand = \"modbus\"\n", "modbus.toml");
+  ASSERT_TRUE(loaded.ok()) << loaded.report();
+  const mrd::hal::MonotonicClock clock;
+  mrd::firmware::HalSet hal(loaded.config, clock);  // not started: nothing to connect to
+  const auto devices = hal.devices();
+  ASSERT_NE(devices.demand, nullptr);
+  auto* modbus = dynamic_cast<mrd::hal::modbus::ModbusBackend*>(devices.demand);
+  ASSERT_NE(modbus, nullptr);
+  EXPECT_EQ(modbus, dynamic_cast<mrd::hal::modbus::ModbusBackend*>(&devices.lvdt));
+}
+
+TEST(HalSetDemand, Table4ModeHasNoDemandChannel) {
+  const auto loaded = mrd::config::load_config_text("[backends]\nlvdt = \"can\"\n", "table4.toml");
+  ASSERT_TRUE(loaded.ok()) << loaded.report();
+  const mrd::hal::MonotonicClock clock;
+  mrd::firmware::HalSet hal(loaded.config, clock);
+  EXPECT_EQ(hal.devices().demand, nullptr);
+}
+
+}  // namespace
