@@ -26,8 +26,8 @@ stage "tsan: the statistics (SIGUSR1) path against the loop thread under ThreadS
 # Builds only the controller's libraries and mrd_thread_tests in build/tsan (label "threads").
 cmake --workflow --preset tsan-threads
 
-stage "fuzz: every libFuzzer target for ${MRD_FUZZ_SECONDS:-10} s (clang)"
-FUZZ_JOBS=${FUZZ_JOBS:-2} scripts/fuzz.sh "${MRD_FUZZ_SECONDS:-10}"
+stage "fuzz: every libFuzzer target for ${MRD_FUZZ_SECONDS:-5} s (clang)"
+FUZZ_JOBS=${FUZZ_JOBS:-2} scripts/fuzz.sh "${MRD_FUZZ_SECONDS:-5}"
 
 stage "arm64: cross-build the controller and the model, firmware and hal tests; run them under qemu"
 bash scripts/test-arm64.sh --quick
