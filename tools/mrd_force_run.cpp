@@ -8,7 +8,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -18,6 +17,7 @@
 #include "tools/force_run/controller_identification.hpp"
 #include "tools/force_run/force_run.hpp"
 #include "tools/gnuplot.hpp"
+#include "tools/json.hpp"
 
 namespace {
 
@@ -31,16 +31,16 @@ struct CaseRun {
   std::vector<std::string> notes;
 };
 
-nlohmann::json to_json(const CaseRun& run, std::string_view profile_name, const DemandProfile& profile,
-                       double coil_lag_ms) {
-  nlohmann::json j;
+mrd::tools::Json to_json(const CaseRun& run, std::string_view profile_name, const DemandProfile& profile,
+                         double coil_lag_ms) {
+  mrd::tools::Json j;
   j["case"] = run.name;
   j["profile"] = std::string(profile_name);
   j["profile_description"] = profile.description;
   j["coil_lag_ms"] = coil_lag_ms;
   j["desired_rms_N"] = run.result.desired_rms;
   j["reachable_fraction"] = run.result.reachable_fraction;
-  j["strategies"] = nlohmann::json::array();
+  j["strategies"] = mrd::tools::Json::array();
   for (const auto& s : run.result.strategies) {
     j["strategies"].push_back({{"name", std::string(mrd::tools::strategy_name(s.kind))},
                                {"rms_error_N", s.rms_error},
@@ -203,11 +203,11 @@ int main(int argc, char** argv) {
     for (std::size_t i = 0; i < runs.size(); ++i) {
       if (runs[i].name == "identified") top = i;
     }
-    nlohmann::json j = to_json(runs[top], profile_choice, profile, coil_lag_ms);
-    j["runs"] = nlohmann::json::array();
+    mrd::tools::Json j = to_json(runs[top], profile_choice, profile, coil_lag_ms);
+    j["runs"] = mrd::tools::Json::array();
     for (const auto& run : runs) j["runs"].push_back(to_json(run, profile_choice, profile, coil_lag_ms));
     std::ofstream out(json_path);
-    out << j.dump(2) << '\n';
+    out << mrd::tools::json_text(j);
     if (!out) {
       std::fprintf(stderr, "mrd-force-run: cannot write %s\n", json_path.c_str());
       return mrd::cli::kIo;
