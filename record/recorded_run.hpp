@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -33,6 +34,9 @@ struct RecordedRun {
   // Degrees Celsius, not kelvin: MR fluid data sheets and viscosity-temperature laws are
   // written in Celsius, and a thermal drift is a difference, which is the same in both.
   std::vector<double> temperature;
+  // CLOCK_MONOTONIC [s] of time 0 when the file says (mrd-plant's log, the controller's
+  // telemetry: common/time_origin.hpp), to join it with another log of the same host.
+  std::optional<double> time_origin;
 
   // What the reader did that the user must know (ignored columns, dropped CAN frames), one
   // line each; reports print them.

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "common/time_origin.hpp"
 #include "record/csv.hpp"
 
 namespace mrd::record {
@@ -30,14 +31,14 @@ class RunCsvParser {
   }
 
   RecordedRun parse() {
-    const auto first = lines_.next();
+    const auto first = next_line();
     if (!first) throw fail("", "empty file: expected a header (time_s, displacement_mm, ...)");
     whitespace_ = first->find(',') == std::string_view::npos;
     const bool headerless = options_.columns && options_.columns->by_position;
     headerless ? map_positions(*first) : read_header(*first);
     const std::size_t header_line = lines_.line_number();
     check_required();
-    for (auto row = headerless ? first : lines_.next(); row; row = lines_.next()) read_row(*row);
+    for (auto row = headerless ? first : next_line(); row; row = next_line()) read_row(*row);
     if (run_.size() < 2) {
       throw InputError(input_error_message(
           name_, header_line, "",
@@ -48,6 +49,15 @@ class RunCsvParser {
   }
 
  private:
+  // The next line that is not a comment ('#'); a time-origin comment sets the run's origin.
+  std::optional<std::string_view> next_line() {
+    auto line = lines_.next();
+    for (; line && is_comment_line(*line); line = lines_.next()) {
+      if (const auto origin = parse_time_origin(*line)) run_.time_origin = *origin;
+    }
+    return line;
+  }
+
   InputError fail(std::string_view column, const std::string& message) const {
     return InputError(input_error_message(name_, lines_.line_number(), column, message));
   }

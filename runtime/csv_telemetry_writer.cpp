@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "common/time_origin.hpp"
 #include "control/sample_check.hpp"
 #include "control/supervisor.hpp"
 
@@ -152,7 +153,12 @@ void CsvTelemetryWriter::drain_once() {
   std::uint64_t written = 0;
   std::uint64_t capped = 0;
   queue_.drain([&](const TelemetryRecord& r) {
-    if (!start_) start_ = r.time;
+    if (!start_) {
+      start_ = r.time;
+      const int len = format_time_origin(std::chrono::duration<double>(r.time).count(),
+                                         line, sizeof line);
+      if (len > 0) write_line(line, static_cast<std::size_t>(len));
+    }
     const int len = format(r, *start_, line, sizeof line, force_columns_);
     if (len > 0 && write_line(line, std::min(static_cast<std::size_t>(len), sizeof line - 1))) {
       ++written;

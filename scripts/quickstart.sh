@@ -34,7 +34,4 @@ wait $plant || true
 trap - EXIT
 tail -n +4 out/hil_plant.out
 echo
-t0() { sed -n 's/.*time_s 0 is CLOCK_MONOTONIC \([0-9.]*\) s.*/\1/p' "$1"; }
-./$B/tools/hil/mrd-hil-report --telemetry out/hil_telemetry.csv --plant out/hil_plant.csv \
-  --controller-t0 "$(t0 out/hil_controller.out)" --plant-t0 "$(t0 out/hil_plant.out)" \
-  --plot out/hil
+./$B/tools/hil/mrd-hil-report --telemetry out/hil_telemetry.csv --plant out/hil_plant.csv --plot out/hil

@@ -172,7 +172,10 @@ int run_plant(const mrd::plant::PlantConfig& config, mrd::plant::Rig& rig) {
   std::optional<mrd::hal::Timestamp> start;
   std::optional<double> fault_origin;  // plant time of fault time 0
   const auto cycle = [&](mrd::hal::Timestamp release) {
-    if (!start) start = release;
+    if (!start) {
+      start = release;
+      log.write_time_origin(std::chrono::duration<double>(release).count());
+    }
     const double t = std::chrono::duration<double>(release - *start).count();
     if (!fault_origin && (config.faults_from == mrd::plant::FaultClock::kStart || buses.commanded_yet())) {
       fault_origin = t;

@@ -3,6 +3,8 @@
 #include <cerrno>
 #include <cstring>
 
+#include "common/time_origin.hpp"
+
 namespace mrd::plant {
 
 hal::StartResult RunLog::open(const std::string& path) {
@@ -25,6 +27,13 @@ void RunLog::write(const RigSample& s) {
       line);
   std::fwrite(line, 1, n, file_);
   rows_.add();
+}
+
+void RunLog::write_time_origin(double monotonic_s) {
+  if (file_ == nullptr) return;
+  char line[96];
+  const int n = format_time_origin(monotonic_s, line, sizeof line);
+  if (n > 0) std::fwrite(line, 1, static_cast<std::size_t>(n), file_);
 }
 
 void RunLog::close() {

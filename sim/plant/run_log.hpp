@@ -23,6 +23,8 @@ class RunLog {
 
   [[nodiscard]] hal::StartResult open(const std::string& path);
   void write(const RigSample& s);
+  // The log's time_s 0 on CLOCK_MONOTONIC (common/time_origin.hpp), once, before the first row.
+  void write_time_origin(double monotonic_s);
   void close();
   // Any thread: the stepping thread writes, SIGUSR1's printout on the main thread reads.
   [[nodiscard]] std::uint64_t rows() const { return rows_.get(); }

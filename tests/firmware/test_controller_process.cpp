@@ -94,7 +94,7 @@ TEST_F(ControllerProcess, TwoStartsKeepTwoTelemetryFiles) {
     std::ifstream in(dir_ / name);
     std::size_t lines = 0;
     for (std::string line; std::getline(in, line);) ++lines;
-    EXPECT_EQ(lines, 102u) << name << ": the header, 100 cycles and the shutdown cycle";
+    EXPECT_EQ(lines, 103u) << name << ": the header, the time origin, 100 cycles and the shutdown cycle";
   }
 }
 

@@ -48,6 +48,8 @@ TEST(TelemetryLoop, EveryCycleIsWrittenOrCountedAsDropped) {
   std::string line;
   std::getline(in, line);
   EXPECT_EQ(line + "\n", CsvTelemetryWriter::header());
+  std::getline(in, line);  // the time origin: the rig's clock starts at 0
+  EXPECT_EQ(line, "# time_s 0 is CLOCK_MONOTONIC 0.000000000 s");
   std::getline(in, line);
   EXPECT_EQ(line.rfind("0,0.000000,0.0000,fresh,", 0), 0u) << line;
   EXPECT_NE(line.find(",INIT,none,0,0"), std::string::npos) << line;
@@ -133,8 +135,8 @@ TEST_F(TelemetryFiles, EachStartWritesItsOwnNumberedFileAndKeepsTheLastRunsRecor
   EXPECT_EQ(one_run(300, first), (dir_ / "run-0001.csv").string());
   TelemetryQueue second(1024);
   EXPECT_EQ(one_run(200, second), (dir_ / "run-0002.csv").string());
-  EXPECT_EQ(lines(dir_ / "run-0001.csv"), 301u);  // header and every row of the first run
-  EXPECT_EQ(lines(dir_ / "run-0002.csv"), 201u);
+  EXPECT_EQ(lines(dir_ / "run-0001.csv"), 302u);  // header, time origin and every row of the first run
+  EXPECT_EQ(lines(dir_ / "run-0002.csv"), 202u);
   EXPECT_FALSE(std::filesystem::exists(dir_ / "run.csv"));
 
   // Numbers continue after the highest there, whatever else the directory holds.

@@ -81,19 +81,18 @@ HilResult run_hil(const HilScenario& s) {
   }
   r.controller_exit = *controller_exit;
   r.plant_exit = *plant_exit;
-  const auto controller_t0 = find_number(r.controller_output, R"(time_s 0 is CLOCK_MONOTONIC ([0-9.]+) s)");
-  const auto plant_t0 = find_number(r.plant_output, R"(time_s 0 is CLOCK_MONOTONIC ([0-9.]+) s)");
-  if (!controller_t0 || !plant_t0) {
-    r.failure = "no time origin in the output:\n--- controller\n" + r.controller_output +
-                "--- plant\n" + r.plant_output;
-    return r;
-  }
-  r.controller_t0 = *controller_t0;
-  r.offset = *controller_t0 - *plant_t0;
   r.fault_origin = find_number(r.plant_output, R"(plant faults: time 0 is plant log time_s ([0-9.]+) s)").value_or(0.0);
   try {
-    r.telemetry = tools::read_telemetry_csv(telemetry.string());
+    auto log = tools::read_telemetry_csv(telemetry.string());
+    r.telemetry = std::move(log.rows);
     r.plant_log = record::read_recorded_run(plant_log.string());
+    // The two files' time origins, from the files themselves (as mrd-hil-report joins them).
+    if (!log.time_origin || !r.plant_log.time_origin) {
+      r.failure = "no time-origin line in " + std::string(log.time_origin ? "the plant log" : "the telemetry");
+      return r;
+    }
+    r.controller_t0 = *log.time_origin;
+    r.offset = *log.time_origin - *r.plant_log.time_origin;
   } catch (const record::InputError& e) {
     r.failure = e.what();
   }

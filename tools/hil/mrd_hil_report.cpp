@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <string>
 
 #include "common/cli/command_line.hpp"
@@ -34,28 +35,39 @@ int main(int argc, char** argv) {
   mrd::cli::set_up(app, "mrd-hil-report");
   std::string telemetry_path;
   std::string plant_path;
-  double controller_t0 = 0.0;
-  double plant_t0 = 0.0;
+  std::optional<double> controller_t0;
+  std::optional<double> plant_t0;
   std::string plot;
   app.add_option("--telemetry", telemetry_path, "mrd-controller's telemetry CSV")->required();
   app.add_option("--plant", plant_path, "mrd-plant's log (recorded-run CSV)")->required();
   app.add_option("--controller-t0", controller_t0,
-                 "CLOCK_MONOTONIC [s] of the telemetry's time 0 (mrd-controller prints it)")->required();
-  app.add_option("--plant-t0", plant_t0, "CLOCK_MONOTONIC [s] of the plant log's time 0 (mrd-plant prints it)")
-      ->required();
+                 "CLOCK_MONOTONIC [s] of the telemetry's time 0 (default: the file's time-origin line)");
+  app.add_option("--plant-t0", plant_t0,
+                 "CLOCK_MONOTONIC [s] of the plant log's time 0 (default: the file's time-origin line)");
   app.add_option("--plot", plot, "folder for the force-displacement plot (force_displacement.png, its data .csv)");
   if (const auto status = mrd::cli::parse(app, argc, argv)) return *status;
   if (!plot.empty() && !mrd::cli::prepare_output_directory("mrd-hil-report", plot)) return mrd::cli::kIo;
 
   try {
-    const auto telemetry = mrd::tools::read_telemetry_csv(telemetry_path);
+    const auto log = mrd::tools::read_telemetry_csv(telemetry_path);
+    const auto& telemetry = log.rows;
     const auto plant = mrd::record::read_recorded_run(plant_path);
+    // Files written before the time-origin line need the origins from the command line.
+    const auto origin = [](const std::optional<double>& given, const std::optional<double>& in_file,
+                           const std::string& file, const char* option) {
+      if (given) return *given;
+      if (in_file) return *in_file;
+      throw mrd::record::InputError(file + ": no time-origin line ('# time_s 0 is CLOCK_MONOTONIC ...'); give " +
+                                    option + " (the program printed it)");
+    };
+    const double offset = origin(controller_t0, log.time_origin, telemetry_path, "--controller-t0") -
+                          origin(plant_t0, plant.time_origin, plant_path, "--plant-t0");
     std::printf("telemetry: %zu records; plant log: %zu samples at %.0f Hz\n", telemetry.size(),
                 plant.size(), plant.sample_rate);
     std::printf("supervisor transitions:\n");
     for (const auto& c : mrd::tools::state_changes(telemetry)) std::printf("  %s\n", to_string(c).c_str());
 
-    const auto j = mrd::tools::join_force(telemetry, plant, controller_t0 - plant_t0);
+    const auto j = mrd::tools::join_force(telemetry, plant, offset);
     std::printf("joined %zu records in control; LVDT transport lag %.2f ms (displacement RMS "
                 "difference %.1f um after it)\n",
                 j.rows, j.lag * 1e3, j.displacement_rms * 1e6);

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "common/time_origin.hpp"
 #include "runtime/csv_telemetry_writer.hpp"
 #include "record/csv.hpp"
 
@@ -27,33 +28,48 @@ bool enum_named(std::string_view name, E count, E& out) {
 
 }  // namespace
 
-std::vector<TelemetryRow> parse_telemetry_csv(std::string_view text, const std::string& name) {
-  static const std::vector<std::string_view> kColumns = [] {
-    std::vector<std::string_view> columns;
-    std::string_view header = runtime::CsvTelemetryWriter::header();
-    header.remove_suffix(1);  // '\n'
-    for (const auto c : record::split_csv_line(header)) columns.push_back(c);
-    return columns;
-  }();
+namespace {
+
+std::vector<std::string_view> header_columns(const char* header) {
+  std::string_view line = header;
+  line.remove_suffix(1);  // '\n'
+  return record::split_csv_line(line);
+}
+
+}  // namespace
+
+TelemetryLog parse_telemetry_csv(std::string_view text, const std::string& name) {
+  static const std::vector<std::string_view> kTable4 = header_columns(runtime::CsvTelemetryWriter::header());
+  static const std::vector<std::string_view> kForce = header_columns(runtime::CsvTelemetryWriter::force_header());
   record::LineReader lines(text, name);
-  const auto first = lines.next();
+  TelemetryLog log;
+  const auto next = [&] {
+    auto line = lines.next();
+    for (; line && is_comment_line(*line); line = lines.next()) {
+      if (const auto origin = parse_time_origin(*line)) log.time_origin = *origin;
+    }
+    return line;
+  };
   const auto fail = [&](std::string_view column, const std::string& message) {
     return record::InputError(record::input_error_message(name, lines.line_number(), column, message));
   };
-  if (!first || record::split_csv_line(*first) != kColumns) {
+  const auto first = next();
+  const auto header = first ? record::split_csv_line(*first) : std::vector<std::string_view>{};
+  log.force_mode = header == kForce;
+  if (header != kTable4 && !log.force_mode) {
     throw fail("", "not an mrd-controller telemetry file: the header must be " +
                        std::string(runtime::CsvTelemetryWriter::header()).substr(0, 60) + "...");
   }
-  std::vector<TelemetryRow> rows;
-  while (const auto line = lines.next()) {
+  const auto& columns = log.force_mode ? kForce : kTable4;
+  while (const auto line = next()) {
     const auto f = record::split_csv_line(*line);
-    if (f.size() != kColumns.size()) {
-      throw fail("", "expected " + std::to_string(kColumns.size()) + " fields, got " + std::to_string(f.size()));
+    if (f.size() != columns.size()) {
+      throw fail("", "expected " + std::to_string(columns.size()) + " fields, got " + std::to_string(f.size()));
     }
     const auto number = [&](std::size_t i) {
       if (f[i] == "nan" || f[i] == "-nan") return std::numeric_limits<double>::quiet_NaN();
       const auto v = record::parse_finite(f[i]);
-      if (!v) throw fail(kColumns[i], "'" + std::string(f[i]) + "' is not a number");
+      if (!v) throw fail(columns[i], "'" + std::string(f[i]) + "' is not a number");
       return *v;
     };
     TelemetryRow r;
@@ -69,16 +85,25 @@ std::vector<TelemetryRow> parse_telemetry_csv(std::string_view text, const std::
     r.B = number(9);
     r.velocity = number(10) * 1e-3;
     r.force = number(11) * 1e3;
-    if (!enum_named(f[12], SupervisorState::kCount, r.state)) throw fail(kColumns[12], "unknown state");
-    if (!enum_named(f[13], Trigger::kCount, r.trigger)) throw fail(kColumns[13], "unknown trigger");
+    if (!enum_named(f[12], SupervisorState::kCount, r.state)) throw fail(columns[12], "unknown state");
+    if (!enum_named(f[13], Trigger::kCount, r.trigger)) throw fail(columns[13], "unknown trigger");
     r.overruns = static_cast<std::uint32_t>(number(14));
     r.enable = number(15) != 0.0;
-    rows.push_back(std::move(r));
+    r.latched = number(16) != 0.0;
+    r.recoveries = static_cast<std::uint64_t>(number(17));
+    if (log.force_mode) {
+      r.demand = number(18);
+      r.yield_force = number(19);
+      r.demand_check = std::string(f[20]);
+      r.clipped = number(21) != 0.0;
+      r.reached = number(22) != 0.0;
+    }
+    log.rows.push_back(std::move(r));
   }
-  return rows;
+  return log;
 }
 
-std::vector<TelemetryRow> read_telemetry_csv(const std::string& path) {
+TelemetryLog read_telemetry_csv(const std::string& path) {
   return parse_telemetry_csv(record::read_text_file(path), path);
 }
 

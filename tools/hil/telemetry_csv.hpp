@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -27,15 +28,32 @@ struct TelemetryRow {
   control::Trigger trigger = control::Trigger::kNone;
   std::uint32_t overruns = 0;
   bool enable = false;
+  bool latched = false;
+  std::uint64_t recoveries = 0;  // the J-A observer's non-finite recoveries so far
+  // Force mode's columns (zero and empty in a table4 file).
+  double demand = 0.0;       // [N] the demand the law used
+  double yield_force = 0.0;  // [N] Eq. 12's yield force at the law's target
+  std::string demand_check;  // the demand's SampleCheck name
+  bool clipped = false;      // the demand asked the damper to push: minimum force commanded
+  bool reached = false;      // the inverse reached the demand within the period
 
   [[nodiscard]] bool in_control() const {
     return state == control::SupervisorState::kRun || state == control::SupervisorState::kDegraded;
   }
 };
 
-// Reads the controller's telemetry CSV; throws InputError "file:line: column 'x': message".
-std::vector<TelemetryRow> parse_telemetry_csv(std::string_view text, const std::string& name);
-std::vector<TelemetryRow> read_telemetry_csv(const std::string& path);
+// The controller's telemetry file: its rows, whether it has force mode's columns, and its
+// time 0 on CLOCK_MONOTONIC when the file carries it (common/time_origin.hpp).
+struct TelemetryLog {
+  std::vector<TelemetryRow> rows;
+  bool force_mode = false;
+  std::optional<double> time_origin;  // [s]
+};
+
+// Reads the controller's telemetry CSV (table4 or force mode's header); throws InputError
+// "file:line: column 'x': message".
+TelemetryLog parse_telemetry_csv(std::string_view text, const std::string& name);
+TelemetryLog read_telemetry_csv(const std::string& path);
 
 // A state change in the telemetry: the row where it took effect.
 struct StateChange {

@@ -1,0 +1,136 @@
+// tools/hil/telemetry_csv reads what runtime::CsvTelemetryWriter writes, in both modes, with the
+// file's time origin; and record's run reader takes the plant log's origin line.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <string>
+
+#include "common/time_origin.hpp"
+#include "record/csv.hpp"
+#include "record/run_csv.hpp"
+#include "runtime/csv_telemetry_writer.hpp"
+#include "runtime/telemetry_queue.hpp"
+#include "tools/hil/telemetry_csv.hpp"
+
+namespace {
+
+using mrd::runtime::CsvTelemetryWriter;
+using mrd::runtime::TelemetryQueue;
+using mrd::runtime::TelemetryRecord;
+using namespace std::chrono_literals;
+
+// Three records a millisecond apart starting at `start` on the loop's clock, through the real
+// writer into a file; the file's text.
+std::string written_file(bool force_columns, mrd::hal::Timestamp start) {
+  const auto path = std::filesystem::temp_directory_path() /
+                    (std::string("mrd_telemetry_log_") + (force_columns ? "force" : "table4") + ".csv");
+  TelemetryQueue q(16);
+  CsvTelemetryWriter writer(q, 3600.0, force_columns);
+  EXPECT_TRUE(writer.start(path.string()).ok);
+  for (int i = 0; i < 3; ++i) {
+    TelemetryRecord r{};
+    r.cycle = static_cast<std::uint64_t>(i);
+    r.time = start + i * 1ms;
+    r.displacement = 0.01 * i;
+    r.state = static_cast<std::uint8_t>(mrd::control::SupervisorState::kRun);
+    r.latched = i == 2;
+    r.recoveries = static_cast<std::uint64_t>(i);
+    r.demand = -1500.0 * i;
+    r.yield_force = 800.0;
+    r.demand_check = static_cast<std::uint8_t>(mrd::control::SampleCheck::kStale);
+    r.clipped = i == 1;
+    r.reached = true;
+    q.offer(r);
+  }
+  writer.stop();
+  const std::string text = mrd::record::read_text_file(path.string());
+  std::filesystem::remove(path);
+  return text;
+}
+
+TEST(TelemetryLog, TheWritersFileCarriesItsOriginAndReadsBackInBothModes) {
+  const auto start = 8123456789012ns;  // 8123.456789012 s on CLOCK_MONOTONIC
+  for (const bool force : {false, true}) {
+    const auto log = mrd::tools::parse_telemetry_csv(written_file(force, start), "t.csv");
+    EXPECT_EQ(log.force_mode, force);
+    ASSERT_TRUE(log.time_origin.has_value());
+    EXPECT_DOUBLE_EQ(*log.time_origin, 8123.456789012);
+    ASSERT_EQ(log.rows.size(), 3u);
+    EXPECT_DOUBLE_EQ(log.rows[2].time, 0.002);
+    EXPECT_DOUBLE_EQ(log.rows[2].displacement, 0.02);
+    EXPECT_EQ(log.rows[2].state, mrd::control::SupervisorState::kRun);
+    EXPECT_TRUE(log.rows[2].latched);
+    EXPECT_FALSE(log.rows[1].latched);
+    EXPECT_EQ(log.rows[2].recoveries, 2u);
+    if (force) {
+      EXPECT_DOUBLE_EQ(log.rows[2].demand, -3000.0);
+      EXPECT_DOUBLE_EQ(log.rows[0].yield_force, 800.0);
+      EXPECT_EQ(log.rows[0].demand_check, "stale");
+      EXPECT_TRUE(log.rows[1].clipped);
+      EXPECT_FALSE(log.rows[2].clipped);
+      EXPECT_TRUE(log.rows[0].reached);
+    } else {
+      EXPECT_EQ(log.rows[2].demand, 0.0);
+      EXPECT_TRUE(log.rows[2].demand_check.empty());
+    }
+  }
+}
+
+TEST(TelemetryLog, AFileWithoutTheOriginLineHasNone) {
+  const std::string text = std::string(CsvTelemetryWriter::header()) +
+                           "0,0.000000,1.0000,fresh,0,0,0,0,0,0,0,0,INIT,none,0,0,0,0\n";
+  const auto log = mrd::tools::parse_telemetry_csv(text, "old.csv");
+  EXPECT_FALSE(log.time_origin.has_value());
+  ASSERT_EQ(log.rows.size(), 1u);
+  EXPECT_DOUBLE_EQ(log.rows[0].displacement, 1e-3);
+}
+
+TEST(TelemetryLog, AForeignHeaderOrARaggedRowNamesTheFileAndLine) {
+  try {
+    (void)mrd::tools::parse_telemetry_csv("time_s,force_N\n0,1\n", "x.csv");
+    ADD_FAILURE() << "a foreign header was read";
+  } catch (const mrd::record::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("x.csv:1:"), std::string::npos) << e.what();
+  }
+  try {
+    (void)mrd::tools::parse_telemetry_csv(std::string(CsvTelemetryWriter::force_header()) +
+                                              "# time_s 0 is CLOCK_MONOTONIC 5.000000000 s\n"
+                                              "0,0.000000,1.0000,fresh,0,0,0,0,0,0,0,0,INIT,none,0,0,0,0\n",
+                                          "f.csv");
+    ADD_FAILURE() << "a table4 row under the force header was read";
+  } catch (const mrd::record::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("f.csv:3:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("expected 23 fields, got 18"), std::string::npos) << e.what();
+  }
+}
+
+TEST(TimeOrigin, ParsesWhatItFormatsToTheNanosecondAndNothingElse) {
+  char line[96];
+  ASSERT_GT(mrd::format_time_origin(1234567.000000001, line, sizeof line), 0);
+  EXPECT_STREQ(line, "# time_s 0 is CLOCK_MONOTONIC 1234567.000000001 s\n");
+  ASSERT_TRUE(mrd::parse_time_origin(line).has_value());
+  EXPECT_DOUBLE_EQ(*mrd::parse_time_origin(line), 1234567.000000001);
+  EXPECT_FALSE(mrd::parse_time_origin("# time_s 0 is CLOCK_MONOTONIC s").has_value());
+  EXPECT_FALSE(mrd::parse_time_origin("# time_s 0 is CLOCK_MONOTONIC 12x s").has_value());
+  EXPECT_FALSE(mrd::parse_time_origin("# time_s 0 is CLOCK_MONOTONIC -1 s").has_value());
+  EXPECT_FALSE(mrd::parse_time_origin("# time_s 0 is CLOCK_REALTIME 12 s").has_value());
+  EXPECT_FALSE(mrd::parse_time_origin("# a comment").has_value());
+}
+
+TEST(TimeOrigin, TheRunReaderTakesTheOriginAndSkipsComments) {
+  const auto run = mrd::record::parse_run_csv(
+      "# mrd-plant log\n"
+      "time_s,displacement_mm,current_A,force_N\n"
+      "# time_s 0 is CLOCK_MONOTONIC 42.500000000 s\n"
+      "0,1,0.5,10\n"
+      "# a note between rows\n"
+      "0.001,2,0.5,11\n",
+      "plant.csv", {});
+  ASSERT_TRUE(run.time_origin.has_value());
+  EXPECT_DOUBLE_EQ(*run.time_origin, 42.5);
+  ASSERT_EQ(run.size(), 2u);
+  EXPECT_DOUBLE_EQ(run.force[1], 11.0);
+}
+
+}  // namespace
