@@ -25,6 +25,7 @@ void run_control_law(benchmark::State& state, mrd::control::ControlMode mode) {
   mrd::control::DemandChecker demands({.range = 60e3, .max_age = std::chrono::milliseconds{5}});
   double coil = 0.0;
   std::uint32_t i = 0;
+  long evaluations = 0;
   for (auto _ : state) {
     const double t = i * kPeriod;
     const auto now = std::chrono::duration_cast<mrd::hal::Timestamp>(std::chrono::duration<double>(t));
@@ -34,9 +35,15 @@ void run_control_law(benchmark::State& state, mrd::control::ControlMode mode) {
     law.observe({.displacement = kAmplitude * std::sin(kOmega * t),
                  .timing = mrd::model::SampleTiming{true, kPeriod, 0.0},
                  .coil_current = coil});
-    coil = law.command(demands.held_value()).current;
-    benchmark::DoNotOptimize(coil);
+    // Kept from the optimiser as a const value: Google Benchmark's DoNotOptimize on a non-const
+    // double that is read afterwards ("+m,r") is miscompiled by GCC 12 (GCC bug 92597); here it
+    // fed sin(wt) back as the coil current, a 1 A swing that tripled the cycle's time.
+    const auto command = law.command(demands.held_value());
+    benchmark::DoNotOptimize(command);
+    coil = command.current;
+    if (const auto* inverse = law.force_inverse()) evaluations += inverse->last_evaluations();
   }
+  state.counters["evaluations"] = benchmark::Counter(static_cast<double>(evaluations), benchmark::Counter::kAvgIterations);
 }
 
 void BM_ForceModeLawCycle(benchmark::State& state) { run_control_law(state, mrd::control::ControlMode::kForce); }

@@ -73,6 +73,8 @@ class ControlLaw {
 
   [[nodiscard]] ControlMode mode() const { return force_ ? ControlMode::kForce : ControlMode::kTable4; }
   [[nodiscard]] const model::Observer& observer() const { return observer_; }
+  // Force mode's inverse (nullptr in table4 mode), for its search statistics.
+  [[nodiscard]] const model::ForceInverse* force_inverse() const { return force_ ? &*force_ : nullptr; }
 
  private:
   model::CurrentSchedule schedule_;
