@@ -80,7 +80,7 @@ std::vector<Algorithm> parse_algorithms(const std::vector<std::string>& names) {
   return out;
 }
 
-int reproduce_paper(const StudyOptions& study, double table1_H_max, const std::string& out_dir) {
+int reproduce_paper(const StudyOptions& study, double table1_H_max, const std::string& out_dir, bool quiet) {
   struct Case {
     const char* name;
     mrd::model::JilesAthertonParams truth;
@@ -98,7 +98,12 @@ int reproduce_paper(const StudyOptions& study, double table1_H_max, const std::s
     const BHCurve curve = synthetic_loop(c.truth, c.H_max, 1000);
     std::fprintf(stderr, "reproduce-paper: %s ...\n", c.name);
     const auto sensitivity = parameter_sensitivity(BHObjective(curve), to_point(c.truth));
-    const auto rows = parameter_recovery_study(c.truth, curve, study);
+    auto progress = TerminalProgress::on_stderr(quiet);
+    StudyOptions with_progress = study;
+    with_progress.progress = progress.get();
+    with_progress.stage = "recovery";
+    const auto rows = parameter_recovery_study(c.truth, curve, with_progress);
+    progress.reset();  // ends the status line before the next case's
     report << "### " << c.name << "\n\nRelative error of each parameter [%], median [q25, q75] over "
            << study.seeds << " seeds; population " << study.budget.population << ", budget "
            << study.budget.evaluations << " evaluations, 1000 points.\n\n"
@@ -174,8 +179,10 @@ struct StudyArguments {
   int seeds = 20;
   std::vector<std::string> algo_names;
   std::string out_dir;
+  bool quiet = false;
 
   void add_to(CLI::App& cmd, const char* table_name) {
+    cmd.add_flag("--quiet,-q", quiet, "no progress line on stderr (it shows only when stderr is a terminal)");
     cmd.add_option("--seeds", seeds, "seeds per algorithm")->check(CLI::Range(1, 1000))->capture_default_str();
     cmd.add_option("--algos", algo_names, "algorithms to run, comma-separated (default: all)")
         ->delimiter(',')
@@ -285,10 +292,16 @@ int run_evaluate(const CurveArguments& curve_args, const std::string& parameter_
   return 0;
 }
 
-int run_compare(const CurveArguments& curve_args, const StudyOptions& study, const std::string& out_dir) {
+int run_compare(const CurveArguments& curve_args, const StudyOptions& study, const std::string& out_dir,
+                bool quiet) {
   const BHCurve curve = curve_args.read();
   const BHObjective objective(curve, curve_args.settings());
-  const auto rows = measured_fit_study(curve, study);
+  auto progress = TerminalProgress::on_stderr(quiet);
+  StudyOptions with_progress = study;
+  with_progress.progress = progress.get();
+  with_progress.stage = "compare";
+  const auto rows = measured_fit_study(curve, with_progress);
+  progress.reset();  // ends the status line before the table
   char summary[160];
   std::snprintf(summary, sizeof summary, "%zu loops, %zu points, rms B %.4g T; %d seeds each.\n\n",
                 curve.loops.size(), objective.points(), objective.rms_B(), study.seeds);
@@ -383,8 +396,10 @@ int main(int argc, char** argv) {
   try {
     if (*fit_cmd) return run_fit(fit);
     if (*evaluate_cmd) return run_evaluate(evaluate_curve, evaluate_text);
-    if (*compare_cmd) return run_compare(compare_curve, compare_study.study(compare_options), compare_study.out_dir);
-    if (*paper_cmd) return reproduce_paper(paper_study.study(paper_options), table1_H_max, paper_study.out_dir);
+    if (*compare_cmd) return run_compare(compare_curve, compare_study.study(compare_options), compare_study.out_dir,
+                                          compare_study.quiet);
+    if (*paper_cmd) return reproduce_paper(paper_study.study(paper_options), table1_H_max, paper_study.out_dir,
+                                               paper_study.quiet);
     return run_synthetic(synthetic);
   } catch (const CLI::Error& e) {  // a value checked after parsing (--start, --bounds, ...)
     app.exit(e);

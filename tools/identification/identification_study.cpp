@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <Eigen/SVD>
 
 #include "tools/identification/start_point.hpp"
@@ -56,6 +57,9 @@ std::vector<StudyRow> run_study(const BHCurve& curve, const StudyOptions& option
                                 const std::optional<Point>& truth) {
   const BHObjective objective(curve);
   std::vector<StudyRow> rows;
+  const std::int64_t runs = static_cast<std::int64_t>(options.algorithms.size()) * options.seeds;
+  std::int64_t done = 0;
+  double best_rmse = std::numeric_limits<double>::quiet_NaN();
   for (const Algorithm algorithm : options.algorithms) {
     Samples search, polished;
     const bool polish = options.polished_row && algorithm == Algorithm::kImprovedPso;
@@ -78,6 +82,12 @@ std::vector<StudyRow> run_study(const BHCurve& curve, const StudyOptions& option
         polished.add(r.polish->best, t, r.polish->rmse,
                      static_cast<double>(r.search.evaluations + r.polish->evaluations),
                      r.wall_s + r.polish_wall_s);
+      }
+      const double rmse = r.polish ? std::fmin(r.fit.rmse, r.polish->rmse) : r.fit.rmse;
+      if (!(rmse >= best_rmse)) best_rmse = rmse;
+      if (options.progress) {
+        options.progress->report({.stage = options.stage, .round = seed, .candidate = algorithm_name(algorithm),
+                                  .done = ++done, .total = runs, .best_error = best_rmse, .unit = "T RMSE"});
       }
     }
     rows.push_back(search.row(std::string(algorithm_name(algorithm))));

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "tools/identification/identification.hpp"
@@ -30,6 +31,10 @@ struct StudyOptions {
   bool polished_row = true;  // add "improved-pso + LM"
   int polish_evaluations = 3000;
   ImprovedPsoSettings improved;
+  // After each seed's run: the algorithm, runs done of all, best RMSE so far (compare and
+  // reproduce-paper run for minutes).
+  ProgressSink* progress = nullptr;
+  std::string_view stage = "study";  // the progress line's label
 };
 
 // Section 4.1: fit a curve generated from `truth`, searching +-100% around the truth, and

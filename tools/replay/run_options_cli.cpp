@@ -1,7 +1,9 @@
 #include "tools/replay/run_options_cli.hpp"
 
 #include <cstdio>
+#include <string_view>
 
+#include "record/csv.hpp"
 #include "record/run_columns.hpp"
 
 namespace mrd::tools {
@@ -10,7 +12,19 @@ void RunOptionsCli::add_to(CLI::App& app) {
   app.add_option("--columns", columns_,
                  "map a foreign file's columns: t=time_s,D=displacement_cm,... by header name, or "
                  "1=time_s,2=displacement_mm,... by position (no header); units: " +
-                     record::known_unit_names());
+                     record::known_unit_names())
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            try {
+              (void)record::parse_column_mapping(text);
+              return std::string();
+            } catch (const record::InputError& e) {
+              std::string_view why = e.what();  // CLI11 names the option itself
+              if (why.starts_with("--columns: ")) why.remove_prefix(11);
+              return std::string(why);
+            }
+          },
+          "MAPPING"));
   current_option_ = app.add_option("--current", current_, "constant coil current of the run [A]");
   auto* from_name = app.add_flag("--current-from-name", current_from_name_,
                                  "read the constant current from the file name (25mm0x25Hz0x5A.txt: 0.5 A)");

@@ -65,7 +65,16 @@ int main(int argc, char** argv) {
   app.add_option("--noise-um", noise_um, "LVDT noise RMS [um]; default the class's");
   app.add_option("--force-noise-n", options.force_noise, "load-cell noise RMS [N]; default the class's");
   app.add_option("--seed", options.seed, "noise, random motion and telegraph seed")->capture_default_str();
-  app.add_option("--effect", effects, "NAME[:SIZE], repeatable; SIZE small, medium, large or a factor");
+  // Checked while parsing, so a misspelt effect is a usage error that names the option.
+  const CLI::Validator effect_request(
+      [](std::string& text) {
+        std::string error;
+        return mrd::tools::parse_effect_request(text, error) ? std::string() : error;
+      },
+      "NAME[:SIZE]");
+  app.add_option("--effect", effects, "NAME[:SIZE], repeatable; SIZE small, medium, large or a factor "
+                                      "(--list-effects names them)")
+      ->check(effect_request);
   app.add_flag("--with-B", columns.B, "add the B_T column");
   app.add_flag("--with-temperature", columns.temperature, "add the temperature_C column");
   app.add_flag("--no-velocity", no_velocity, "leave out the velocity_mm_s column");

@@ -5,6 +5,7 @@
 
 #include "tools/identification/bh_objective.hpp"
 #include "tools/identification/identification.hpp"
+#include "tools/identification/identification_study.hpp"
 #include "tools/identification/loop_simulation.hpp"
 #include "tools/identification/start_point.hpp"
 #include "tools/identification/synthetic_curve.hpp"
@@ -198,6 +199,48 @@ TEST(Identification, ProgressReportsEvaluationsAndABestThatNeverRises) {
   EXPECT_EQ(sink.reports.back().total, 600);
   EXPECT_EQ(sink.reports.back().done, r.search.evaluations);
   EXPECT_DOUBLE_EQ(sink.reports.back().best, r.search.fitness);
+}
+
+// A many-seed study reports each finished run: the algorithm, runs done of all, and the best
+// RMSE so far, which ends at the smallest of the rows' minima.
+class StudyProgressSink final : public ProgressSink {
+ public:
+  void report(const ProgressReport& r) override {
+    reports.push_back({r.done, r.total, r.best_error, r.round, std::string(r.candidate), std::string(r.stage)});
+  }
+  struct Seen {
+    std::int64_t done, total;
+    double best;
+    int seed;
+    std::string algorithm, stage;
+  };
+  std::vector<Seen> reports;
+};
+
+TEST(IdentificationStudy, ReportsEveryRunWithTheBestRmseSoFar) {
+  const BHCurve curve = synthetic_loop(kSteel, 5000.0, 200);
+  StudyOptions study;
+  study.algorithms = {Algorithm::kPso, Algorithm::kImprovedPso};
+  study.seeds = 2;
+  study.budget.evaluations = 300;
+  study.threads = 1;
+  study.polished_row = false;
+  StudyProgressSink sink;
+  study.progress = &sink;
+  study.stage = "compare";
+  const auto rows = measured_fit_study(curve, study);
+  ASSERT_EQ(sink.reports.size(), 4u);
+  for (std::size_t i = 0; i < sink.reports.size(); ++i) {
+    EXPECT_EQ(sink.reports[i].done, static_cast<std::int64_t>(i + 1));
+    EXPECT_EQ(sink.reports[i].total, 4);
+    EXPECT_EQ(sink.reports[i].seed, static_cast<int>(i % 2) + 1);
+    EXPECT_EQ(sink.reports[i].stage, "compare");
+    if (i > 0) EXPECT_LE(sink.reports[i].best, sink.reports[i - 1].best);
+  }
+  EXPECT_EQ(sink.reports[0].algorithm, "pso");
+  EXPECT_EQ(sink.reports[3].algorithm, "improved-pso");
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_DOUBLE_EQ(sink.reports.back().best, std::min(rows[0].rmse.min, rows[1].rmse.min));
 }
 
 TEST(Identification, FitOfMeasuredFerriteBeatsTheAuthorsPublishedFit) {
