@@ -96,6 +96,7 @@ void read_modbus(TomlReader& in, hal::modbus::ModbusConfig& m) {
   in.get("modbus.registers.demand_address", r.demand_address);
   read_kind(in, "modbus.registers.demand_kind", r.demand_kind);
   read_format(in, "modbus.registers.demand", r.demand);
+  in.get("modbus.registers.demand_counter_address", r.demand_counter_address);
 }
 
 void read_can(TomlReader& in, hal::can::SocketCanConfig& c) {
@@ -265,7 +266,7 @@ void check_register_overlaps(TomlReader& in, const hal::modbus::RegisterMap& r) 
     RegisterType type;
   };
   // In the order the errors name them: each value is checked against those before it.
-  const std::array<Value, 4> values{{
+  const std::array<Value, 5> values{{
       {"modbus.registers.lvdt_address", "the LVDT's registers", true, r.lvdt_address, r.lvdt_kind, r.lvdt.type},
       {"modbus.registers.setpoint_address", "the setpoint's holding registers", true, r.setpoint_address,
        RegisterKind::kHolding, r.setpoint.type},
@@ -273,6 +274,8 @@ void check_register_overlaps(TomlReader& in, const hal::modbus::RegisterMap& r) 
        r.current_feedback_address, r.current_feedback_kind, r.current_feedback.type},
       {"modbus.registers.demand_address", "the demand's registers", r.has_demand, r.demand_address, r.demand_kind,
        r.demand.type},
+      {"modbus.registers.demand_counter_address", "the demand counter's register", r.has_demand_counter(),
+       r.demand_counter_address, r.demand_kind, RegisterType::kUint16},
   }};
   const auto overlap = [](const Value& a, const Value& b) {
     return a.kind == b.kind && a.address < b.address + static_cast<int>(word_count(b.type)) &&

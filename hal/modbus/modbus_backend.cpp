@@ -183,18 +183,55 @@ ModbusBackend::Outcome ModbusBackend::read_words(int address, RegisterKind kind,
   return Outcome::kOk;
 }
 
-ModbusBackend::Outcome ModbusBackend::read_sample(int address, RegisterKind kind, const RegisterFormat& format,
-                                                  std::uint32_t& sequence, SpscRing<Sample, 64>& ring) {
-  std::array<std::uint16_t, 2> words{};
-  const std::size_t n = word_count(format.type);
-  if (const Outcome o = read_words(address, kind, n, words.data()); o != Outcome::kOk) return o;
-  const DecodeResult decoded = decode_register({words.data(), n}, format);
-  Sample sample{decoded.value, clock_.now(), ++sequence, kSampleValid};
+void ModbusBackend::push_sample(std::span<const std::uint16_t> words, const RegisterFormat& format,
+                                std::uint32_t sequence, SpscRing<Sample, 64>& ring) {
+  const DecodeResult decoded = decode_register(words, format);
+  Sample sample{decoded.value, clock_.now(), sequence, kSampleValid};
   if (decoded.status != CodecStatus::kOk) {
     sample.flags = kSampleCorrupted;
     counters_.bump(ModbusEvent::kDecodeErrors);
   }
   if (!ring.try_push(sample)) counters_.bump(ModbusEvent::kSamplesDropped);
+}
+
+ModbusBackend::Outcome ModbusBackend::read_sample(int address, RegisterKind kind, const RegisterFormat& format,
+                                                  std::uint32_t& sequence, SpscRing<Sample, 64>& ring) {
+  std::array<std::uint16_t, 2> words{};
+  const std::size_t n = word_count(format.type);
+  if (const Outcome o = read_words(address, kind, n, words.data()); o != Outcome::kOk) return o;
+  push_sample({words.data(), n}, format, ++sequence, ring);
+  return Outcome::kOk;
+}
+
+ModbusBackend::Outcome ModbusBackend::read_demand() {
+  const RegisterMap& map = config_.registers;
+  if (!map.has_demand_counter()) {
+    return read_sample(map.demand_address, map.demand_kind, map.demand, demand_sequence_, demands_);
+  }
+  // words: the value's one or two, then the counter's.
+  std::array<std::uint16_t, 3> words{};
+  const std::size_t n = word_count(map.demand.type);
+  const int value_end = map.demand_address + static_cast<int>(n);
+  Outcome o = Outcome::kOk;
+  if (map.demand_counter_address == value_end) {
+    o = read_words(map.demand_address, map.demand_kind, n + 1, words.data());
+  } else if (map.demand_counter_address + 1 == map.demand_address) {
+    std::array<std::uint16_t, 3> ahead{};  // counter first on the device
+    o = read_words(map.demand_counter_address, map.demand_kind, n + 1, ahead.data());
+    std::copy_n(ahead.begin() + 1, n, words.begin());
+    words[n] = ahead[0];
+  } else {
+    // Counter first: an outer controller writes the value, then counts, so a value read after
+    // the counter is at least as new as it. The other order could pair a new counter with the
+    // old value and then never take the new one.
+    o = read_words(map.demand_counter_address, map.demand_kind, 1, &words[n]);
+    if (o == Outcome::kOk) o = read_words(map.demand_address, map.demand_kind, n, words.data());
+  }
+  if (o != Outcome::kOk) return o;
+  const std::uint16_t counter = words[n];
+  if (demand_counter_ == counter) return Outcome::kOk;  // nothing new since the last poll
+  demand_counter_ = counter;
+  push_sample({words.data(), n}, map.demand, counter, demands_);
   return Outcome::kOk;
 }
 
@@ -209,10 +246,7 @@ ModbusBackend::Outcome ModbusBackend::poll_once() {
     return o;
   }
   if (map.has_demand) {
-    if (const Outcome o = read_sample(map.demand_address, map.demand_kind, map.demand, demand_sequence_, demands_);
-        o != Outcome::kOk) {
-      return o;
-    }
+    if (const Outcome o = read_demand(); o != Outcome::kOk) return o;
   }
 
   if (!map.has_current_feedback) return written;

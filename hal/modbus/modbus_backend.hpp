@@ -3,6 +3,7 @@
 #include <atomic>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string_view>
 
 #include "hal/clock.hpp"
@@ -61,8 +62,9 @@ class ModbusBackend final : public DisplacementSource, public CurrentDriver, pub
   void stop();
 
   [[nodiscard]] std::optional<DisplacementSample> latest() override;
-  // The demand register's value in N, one sample per poll (the register has no counter: a
-  // value the outer controller stopped updating reads as fresh).
+  // The demand register's value in N. Without a counter register one sample per poll (a value
+  // the outer controller stopped updating reads as fresh); with registers.demand_counter_address
+  // one per poll that finds the counter changed, its sequence the counter's value.
   [[nodiscard]] std::optional<DemandSample> latest_demand() override;
   // Queues the newest setpoint for the I/O thread. kInvalidArgument when it cannot be encoded;
   // kNotConnected when queued but the link is down (it is written after reconnecting).
@@ -90,6 +92,11 @@ class ModbusBackend final : public DisplacementSource, public CurrentDriver, pub
   // not decode).
   Outcome read_sample(int address, RegisterKind kind, const RegisterFormat& format,
                       std::uint32_t& sequence, SpscRing<Sample, 64>& ring);
+  // The demand, with its counter when it has one: a sample only when the counter moved.
+  Outcome read_demand();
+  // Decodes `words` into a sample stamped now and queues it.
+  void push_sample(std::span<const std::uint16_t> words, const RegisterFormat& format, std::uint32_t sequence,
+                   SpscRing<Sample, 64>& ring);
 
   ModbusConfig config_;
   const Clock& clock_;
@@ -102,6 +109,9 @@ class ModbusBackend final : public DisplacementSource, public CurrentDriver, pub
   std::optional<EncodeResult> pending_setpoint_;  // I/O thread only
   std::uint32_t sequence_ = 0;                    // I/O thread only
   std::uint32_t demand_sequence_ = 0;             // I/O thread only
+  // The counter's value at the last demand taken; kept over a reconnect, so that a demand
+  // frozen across an outage is not taken as new. I/O thread only.
+  std::optional<std::uint16_t> demand_counter_;
 
   std::atomic<bool> connected_{false};
   std::atomic<int> last_errno_{0};

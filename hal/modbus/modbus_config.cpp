@@ -28,6 +28,8 @@ ValidationReport RegisterMap::validate() const {
   if (has_demand) {
     check_address(r, "demand_address", demand_address, demand);
     r.merge(demand.validate(), "demand");
+    r.check(demand_counter_address >= -1 && demand_counter_address <= kMaxAddress, "demand_counter_address",
+            "must be -1 (none) or in 0..65535");
   }
   return r;
 }

@@ -48,6 +48,13 @@ struct RegisterMap {
   int demand_address = 2;
   RegisterKind demand_kind = RegisterKind::kHolding;
   RegisterFormat demand{RegisterType::kInt32, WordOrder::kHighFirst, ByteOrder::kNormal, 0.1, 0.0};  // 0.1 N/count
+  // Optional: one 16-bit word, of demand_kind, that the outer controller increments with every
+  // new demand. Without it a demand it stopped updating reads as fresh each poll; with it a
+  // poll that finds the counter unchanged yields no demand, so silence shows as missing, then
+  // stale. -1: none.
+  int demand_counter_address = -1;
+
+  [[nodiscard]] bool has_demand_counter() const { return has_demand && demand_counter_address >= 0; }
 
   [[nodiscard]] ValidationReport validate() const;
 };

@@ -98,7 +98,17 @@ void CanNode::set_fault_pull(bool fault) {
   pull_state_ = fault ? 1 : 0;
 }
 
-void CanNode::send(double t, double lvdt, double coil_current, double demand, const ActiveFaults& faults) {
+std::optional<hal::can::Frame> demand_frame(std::uint32_t id, double demand, const ActiveFaults& faults,
+                                            std::uint8_t& counter) {
+  if (faults.has(FaultKind::kDemandStale)) return std::nullopt;
+  const auto d = hal::can::encode_demand(id, {demand, faults.has(FaultKind::kDemandInvalid), counter});
+  if (d.status != hal::can::EncodeStatus::kOk) return std::nullopt;
+  counter = static_cast<std::uint8_t>((counter + 1) & 0x0F);
+  return d.frame;
+}
+
+void CanNode::send(double t, double lvdt, double coil_current, std::optional<double> demand,
+                   const ActiveFaults& faults) {
   using hal::can::EncodeStatus;
   const double dt = t - last_t_;
   last_t_ = t;
@@ -146,10 +156,10 @@ void CanNode::send(double t, double lvdt, double coil_current, double demand, co
     }
   }
   // The outer controller of force mode.
-  if (ids_.use_demand) {
-    const auto d = hal::can::encode_demand(ids_.demand_id, {demand, false, demand_counter_});
-    demand_counter_ = static_cast<std::uint8_t>((demand_counter_ + 1) & 0x0F);
-    if (d.status == EncodeStatus::kOk) transmit(to_wire(d.frame, ids_.extended_ids));
+  if (ids_.use_demand && demand) {
+    if (const auto frame = demand_frame(ids_.demand_id, *demand, faults, demand_counter_)) {
+      transmit(to_wire(*frame, ids_.extended_ids));
+    }
   }
   published_[kLvdtSent].store(lvdt_sent_, std::memory_order_relaxed);
   published_[kLvdtLost].store(lvdt_lost_, std::memory_order_relaxed);

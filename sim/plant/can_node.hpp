@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cstdint>
 #include <deque>
+#include <optional>
 #include <random>
 #include <string>
 
@@ -26,6 +27,12 @@ struct CanNodeCounters {
   std::uint64_t tx_errors = 0;
 };
 
+// The outer controller's Force_Demand frame this period for `demand` [N], under the demand
+// faults: none while demand_stale (and the counter holds: a silent controller counts nothing),
+// the DemandInvalid bit while demand_invalid. Advances `counter` (4 bits) per frame sent.
+[[nodiscard]] std::optional<hal::can::Frame> demand_frame(std::uint32_t id, double demand, const ActiveFaults& faults,
+                                                          std::uint8_t& counter);
+
 // The rig's LVDT conditioner and coil driver on one SocketCAN interface, frames as in
 // hal/can/mrd.dbc with the controller's ids. The plant's loop sends the LVDT (and feedback)
 // frames each period, with the CAN faults applied; a receive thread takes the command frames.
@@ -41,8 +48,9 @@ class CanNode {
   void stop();
 
   // Loop side, once per period at plant time t [s].
-  // `demand` [N] goes out as a Force_Demand frame when the controller receives it.
-  void send(double t, double lvdt, double coil_current, double demand, const ActiveFaults& faults);
+  // `demand` [N] (none: the plant is not the outer controller) goes out as a Force_Demand
+  // frame when the controller receives it (demand_frame).
+  void send(double t, double lvdt, double coil_current, std::optional<double> demand, const ActiveFaults& faults);
   // The newest command: setpoint [A] and DriverEnable; 0 A and off before the first.
   [[nodiscard]] double setpoint() const { return setpoint_.load(std::memory_order_relaxed); }
   [[nodiscard]] bool enabled() const { return enable_.load(std::memory_order_relaxed); }

@@ -41,7 +41,8 @@ void unpack(std::uint32_t packed, RegisterType type, std::uint16_t* out) {
 }
 
 int top_address(const hal::modbus::RegisterMap& r) {
-  return std::max({r.lvdt_address + 2, r.setpoint_address + 2, r.current_feedback_address + 2, r.demand_address + 2});
+  return std::max({r.lvdt_address + 2, r.setpoint_address + 2, r.current_feedback_address + 2, r.demand_address + 2,
+                   r.demand_counter_address + 1});
 }
 
 std::string errno_text(const std::string& what) { return what + ": " + std::strerror(errno); }
@@ -143,7 +144,8 @@ void ModbusServer::close_all() {
   listen_fd_ = -1;
 }
 
-void ModbusServer::publish(double lvdt, double coil_current, double demand, const ActiveFaults& faults) {
+void ModbusServer::publish(double lvdt, double coil_current, std::optional<double> demand,
+                           const ActiveFaults& faults) {
   const auto& r = layout_.registers;
   if (const auto e = encode_register(lvdt, r.lvdt); e.status == CodecStatus::kOk) {
     lvdt_words_.store(pack(e), std::memory_order_relaxed);
@@ -151,8 +153,13 @@ void ModbusServer::publish(double lvdt, double coil_current, double demand, cons
   if (const auto e = encode_register(coil_current, r.current_feedback); e.status == CodecStatus::kOk) {
     feedback_words_.store(pack(e), std::memory_order_relaxed);
   }
-  if (const auto e = encode_register(demand, r.demand); e.status == CodecStatus::kOk) {
-    demand_words_.store(pack(e), std::memory_order_relaxed);
+  if (demand && !faults.has(FaultKind::kDemandStale)) {
+    const double sent = faults.has(FaultKind::kDemandInvalid) ? faults.value_of(FaultKind::kDemandInvalid) : *demand;
+    if (const auto e = encode_register(sent, r.demand); e.status == CodecStatus::kOk) {
+      // Only this thread writes: the count +1 (16 bits, wrapping) with the new words.
+      const std::uint64_t count = ((demand_state_.load(std::memory_order_relaxed) >> 32) + 1) & 0xFFFF;
+      demand_state_.store((count << 32) | pack(e), std::memory_order_relaxed);
+    }
   }
   stall_.store(faults.has(FaultKind::kServerStall), std::memory_order_relaxed);
   down_.store(faults.has(FaultKind::kServerRestart), std::memory_order_relaxed);
@@ -180,8 +187,10 @@ void ModbusServer::fill_registers() {
            fb + r.current_feedback_address);
   }
   if (r.has_demand) {
-    std::uint16_t* demand = r.demand_kind == RegisterKind::kInput ? map_->tab_input_registers : map_->tab_registers;
-    unpack(demand_words_.load(std::memory_order_relaxed), r.demand.type, demand + r.demand_address);
+    std::uint16_t* table = r.demand_kind == RegisterKind::kInput ? map_->tab_input_registers : map_->tab_registers;
+    const std::uint64_t state = demand_state_.load(std::memory_order_relaxed);
+    unpack(static_cast<std::uint32_t>(state), r.demand.type, table + r.demand_address);
+    if (r.has_demand_counter()) table[r.demand_counter_address] = static_cast<std::uint16_t>(state >> 32);
   }
 }
 

@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -47,8 +48,10 @@ class ModbusServer {
   [[nodiscard]] int port() const { return port_; }
 
   // Loop side: this period's LVDT value, coil current and faults.
-  // `demand` [N] goes to the demand registers when the controller reads them.
-  void publish(double lvdt, double coil_current, double demand, const ActiveFaults& faults);
+  // `demand` [N] (none: the plant is not the outer controller) goes to the demand registers
+  // when the controller reads them, and counts in its counter register when it has one;
+  // demand_stale freezes both, demand_invalid writes the fault's value instead.
+  void publish(double lvdt, double coil_current, std::optional<double> demand, const ActiveFaults& faults);
   // The newest setpoint the controller wrote [A]; 0 before the first.
   [[nodiscard]] double setpoint() const { return setpoint_.load(std::memory_order_relaxed); }
   [[nodiscard]] ModbusServerCounters counters() const;
@@ -78,7 +81,9 @@ class ModbusServer {
 
   std::atomic<std::uint32_t> lvdt_words_{0};
   std::atomic<std::uint32_t> feedback_words_{0};
-  std::atomic<std::uint32_t> demand_words_{0};
+  // The demand's words (low half) and its counter (bits 32-47) in one atomic, so that a reply
+  // never pairs a new count with the value before it.
+  std::atomic<std::uint64_t> demand_state_{0};
   std::atomic<double> setpoint_{0.0};
   std::atomic<bool> stall_{false};
   std::atomic<bool> down_{false};

@@ -182,7 +182,8 @@ int run_plant(const mrd::plant::PlantConfig& config, mrd::plant::Rig& rig) {
     }
     const auto& s = rig.step(t, fault_origin ? t - *fault_origin : -1.0, buses.commanded_current());
     // Force mode's outer controller: c v, with the sign of the motion the damper resists.
-    const double demand = config.sends_demand() ? config.demand_damping * s.reading.sensor_velocity : 0.0;
+    const std::optional<double> demand =
+        config.sends_demand() ? std::optional(config.demand_damping * s.reading.sensor_velocity) : std::nullopt;
     if (buses.modbus) buses.modbus->publish(s.lvdt, s.reading.coil_current, demand, s.faults);
     if (buses.can) buses.can->send(t, s.lvdt, s.reading.coil_current, demand, s.faults);
     log.write(s);

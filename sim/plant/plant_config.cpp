@@ -7,6 +7,7 @@
 #include "config/config_loader.hpp"
 #include "config/effects_config.hpp"
 #include "config/toml_reader.hpp"
+#include "hal/modbus/register_codec.hpp"
 
 namespace mrd::plant {
 
@@ -28,6 +29,8 @@ constexpr std::pair<std::string_view, FaultKind> kFaultNames[] = {
     {"error_frames", FaultKind::kErrorFrames},
     {"bus_off", FaultKind::kBusOff},
     {"driver_fault", FaultKind::kDriverFault},
+    {"demand_stale", FaultKind::kDemandStale},
+    {"demand_invalid", FaultKind::kDemandInvalid},
 };
 
 // The value a fault takes when the file leaves it at 0.
@@ -178,6 +181,26 @@ void validate(TomlReader& in, const PlantConfig& c) {
   }
 }
 
+// demand_invalid's value is a demand beyond the controller's force.demand_range (by default
+// twice it), one its demand registers can carry: a value the controller takes as fair, or the
+// codec refuses (the registers would keep the last good one), would inject no fault.
+void check_demand_faults(TomlReader& in, PlantConfig& c) {
+  const double range = c.controller.safety.demand_range;
+  for (Fault& f : c.faults) {
+    if (f.kind != FaultKind::kDemandInvalid) continue;
+    const std::string key = "faults." + f.name + ".value";
+    if (f.value == 0.0) f.value = 2.0 * range;
+    if (!(std::fabs(f.value) > range)) {
+      in.error(key, "must lie beyond the controller's force.demand_range (" + std::to_string(range) +
+                        " N), or the controller takes it as a fair demand");
+    } else if (c.controller.modbus.registers.has_demand &&
+               hal::modbus::encode_register(f.value, c.controller.modbus.registers.demand).status !=
+                   hal::modbus::CodecStatus::kOk) {
+      in.error(key, "cannot be written in the controller's demand registers (modbus.registers.demand)");
+    }
+  }
+}
+
 }  // namespace
 
 std::string_view to_string(ProfileKind k) {
@@ -239,6 +262,7 @@ LoadedPlantConfig load_plant_config_text(std::string_view text, const std::strin
     in.error("plant.demand_damping", "the controller config reads no demand from a bus: it needs control.mode = "
                                      "\"force\" and backends.demand = \"modbus\" or \"can\"");
   }
+  if (controller.ok()) check_demand_faults(in, out.config);
   config::file_messages(messages, out.errors, out.warnings);
   for (const auto& m : controller.errors) out.errors.push_back(m);
   return out;

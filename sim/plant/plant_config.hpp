@@ -44,6 +44,8 @@ enum class FaultKind : std::uint8_t {
   kErrorFrames,     // CAN: value error frames (controller problem: RX warning) per second
   kBusOff,          // CAN: one bus-off error frame at the start of the window
   kDriverFault,     // the driver's fault: CAN feedback bit, and the gpio-sim pull when set
+  kDemandStale,     // the outer controller stops: CAN no Force_Demand frames; Modbus value and counter frozen
+  kDemandInvalid,   // CAN: the DemandInvalid bit; Modbus: value [N], beyond force.demand_range, as the demand
   kCount
 };
 [[nodiscard]] std::string_view to_string(FaultKind k);

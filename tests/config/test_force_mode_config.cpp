@@ -127,4 +127,48 @@ TEST(ForceModeConfig, TheDemandOverModbusReadsItsRegisterWhichMustNotOverlapTheO
   EXPECT_FALSE(c.config.modbus.registers.has_demand);
 }
 
+// The optional counter word beside the demand: read in force mode, -1 (none) by default, in
+// range, and clear of the other values' registers, the demand's own included.
+TEST(ForceModeConfig, TheDemandCounterRegisterIsOptionalInRangeAndOverlapsNothing) {
+  const std::string head = "[control]\nmode = \"force\"\n[backends]\nlvdt = \"modbus\"\ndemand = \"modbus\"\n"
+                           "[modbus.registers]\n";
+  LoadedConfig c = load_config_text(head, "none.toml");
+  ASSERT_TRUE(c.ok()) << c.report();
+  EXPECT_EQ(c.config.modbus.registers.demand_counter_address, -1);
+  EXPECT_FALSE(c.config.modbus.registers.has_demand_counter());
+
+  c = load_config_text(head + "demand_counter_address = 4\n", "counter.toml");
+  ASSERT_TRUE(c.ok()) << c.report();
+  EXPECT_EQ(c.config.modbus.registers.demand_counter_address, 4);
+  EXPECT_TRUE(c.config.modbus.registers.has_demand_counter());
+
+  c = load_config_text(head + "demand_counter_address = 65536\n", "range.toml");
+  EXPECT_TRUE(mrd::test::has_error(c, "range.toml:7: modbus.registers.demand_counter_address: must be -1 (none) "
+                                      "or in 0..65535"))
+      << c.report();
+  c = load_config_text(head + "demand_counter_address = -2\n", "negative.toml");
+  EXPECT_TRUE(mrd::test::has_error(c, "negative.toml:7: modbus.registers.demand_counter_address: must be -1 "
+                                      "(none) or in 0..65535"))
+      << c.report();
+  // The demand's second word (holding 2-3 by default).
+  c = load_config_text(head + "demand_counter_address = 3\n", "demand.toml");
+  EXPECT_TRUE(mrd::test::has_error(c, "demand.toml:7: modbus.registers.demand_counter_address: overlaps the "
+                                      "demand's registers"))
+      << c.report();
+  c = load_config_text(head + "demand_counter_address = 0\n", "setpoint.toml");
+  EXPECT_TRUE(mrd::test::has_error(c, "setpoint.toml:7: modbus.registers.demand_counter_address: overlaps the "
+                                      "setpoint's holding registers"))
+      << c.report();
+  // Same kind as the demand: an input-register counter at the LVDT's address collides with it.
+  c = load_config_text(head + "demand_kind = \"input\"\ndemand_address = 8\ndemand_counter_address = 1\n",
+                       "lvdt.toml");
+  EXPECT_TRUE(mrd::test::has_error(c, "lvdt.toml:9: modbus.registers.demand_counter_address: overlaps the LVDT's "
+                                      "registers"))
+      << c.report();
+  // In table4 mode nothing of the demand is read.
+  c = load_config_text("[backends]\nlvdt = \"modbus\"\n[modbus.registers]\ndemand_counter_address = 0\n", "t4.toml");
+  EXPECT_TRUE(c.ok()) << c.report();
+  EXPECT_FALSE(c.config.modbus.registers.has_demand_counter());
+}
+
 }  // namespace

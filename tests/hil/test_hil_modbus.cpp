@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <numbers>
 #include <regex>
 #include <vector>
@@ -34,9 +35,10 @@ constexpr double kPeakSpeed = 2.0 * std::numbers::pi * 0.5 * 0.040;  // [m/s], o
 // trip off, 50 good periods to leave INIT or SAFE and a 0.1 s response timeout: these tests are
 // about the bus's faults, and on a shared CI machine a process can wait 20 ms for a core now and
 // then (an overrun breaks a run of good periods; a late answer would fail a write).
-std::string loop_toml(const std::string& transport) {
+// `backends` adds keys to its table.
+std::string loop_toml(const std::string& transport, const std::string& backends = "") {
   return "[loop]\nrate = " + std::to_string(kRate) +
-         "\n[backends]\nlvdt = \"modbus\"\ndriver = \"modbus\"\nlines = \"mock\"\n"
+         "\n[backends]\nlvdt = \"modbus\"\ndriver = \"modbus\"\nlines = \"mock\"\n" + backends +
          "[modbus]\ntransport = \"" + transport + "\"\npoll_period = " + std::to_string(kPoll) +
          "\nresponse_timeout = 0.1\n[safety]\noverrun_limit = 1000000\nrecovery_periods = 50\n";
 }
@@ -203,6 +205,123 @@ TEST(HilModbus, OutOfRangeLvdtTripsSafeAfterBadSamplePeriods) {
   EXPECT_EQ(r.telemetry[safe].trigger, Trigger::kSampleOutOfRange);
   EXPECT_EQ(run_length_before(r.telemetry, safe, [](const TelemetryRow& x) { return x.sample == "out_of_range"; }),
             static_cast<std::size_t>(safety().bad_sample_periods));
+}
+
+// Force mode: mrd-plant is also the outer controller and serves the demand c v with the
+// controller's counter register beside it (etc/mrd/hil-force-modbus.toml's layout at kRate).
+constexpr double kDemandDamping = 250e3;  // [N s/m], etc/mrd/plant-force.toml's
+constexpr int kDemandCounterAddress = 4;  // after the demand's holding registers 2-3
+
+std::string force_toml() {
+  return "[control]\nmode = \"force\"\n" + loop_toml("tcp", "demand = \"modbus\"\n") +
+         "[modbus.registers]\ndemand_counter_address = " + std::to_string(kDemandCounterAddress) + "\n";
+}
+
+const mrd::control::SupervisorConfig& force_safety() {
+  static const auto config = mrd::config::load_config_text(force_toml(), "force").config.safety;
+  return config;
+}
+
+// The rig's velocity at plant time t, by central difference of the plant log's displacement over
+// +-h: the log has no velocity column. Its error: the LVDT noise (5 um RMS, independent per row)
+// gives sqrt(2) 5 um / 2h = 0.35 mm/s RMS for h = 10 ms, 88 N RMS of c v; the sine's curvature
+// v (omega h)^2 / 6 = 0.02 mm/s at the peak, 5 N.
+double plant_velocity(const mrd::record::RecordedRun& plant, double t, double h = 0.010) {
+  return (interpolate(plant.time, plant.displacement, t + h) - interpolate(plant.time, plant.displacement, t - h)) /
+         (2.0 * h);
+}
+
+// The controller in force mode reaches RUN on the plant's demand, uses c v as its demand, and
+// when the outer controller stops (demand_stale: the registers' value and counter frozen from
+// 2 s on the fault clock) goes SAFE (demand_stale) in the documented number of periods.
+TEST(HilModbus, ForceModeFollowsThePlantsDemandAndAStaleDemandTripsSafe) {
+  const HilResult r = mrd::test::run_hil(
+      {"force_stale", force_toml(),
+       "demand_damping = " + std::to_string(kDemandDamping) +
+           "\n[profile]\nkind = \"sine\"\namplitude = 0.040\nfrequency = 0.5\n"
+           "[faults.quiet]\nkind = \"demand_stale\"\nstart = 2.0\n",
+       4.0, true, {}});
+  ASSERT_NO_FATAL_FAILURE(expect_processes_ran(r));
+  const auto& safety = force_safety();
+  const std::size_t run_at = expect_first_run(r, safety, fresh_with_demand);
+  const std::size_t safe = first_in(r, SupervisorState::kSafe, 0.0);
+  ASSERT_LT(safe, r.telemetry.size()) << "never went SAFE\n" << transitions(r);
+  ASSERT_GT(safe, run_at);
+
+  // In RUN before the fault, the demand the law used is c v at the row's time on the plant's
+  // clock. The demand was read up to a poll period (+ a plant period for the register's value)
+  // before the row's release: |d(c v)/dt| <= c A omega^2 = 98.7 kN/s, so up to 1.1 kN of age on
+  // the steepest slope; a late wake-up (a period, on a shared machine) moves the row the other
+  // way. So each row's demand must equal c v at some instant within [t - poll - 2 ms - period,
+  // t + period], to within 4 sigma of the differenced velocity's noise plus its curvature error
+  // (4 x 88 + 5 N, 400 N: 1.3 % of the 31.4 kN peak). Only fresh demands in RUN are judged.
+  const double window_before = kPoll + 0.002 + kPeriod;
+  const double window_after = kPeriod;
+  constexpr double kTolerance = 400.0;  // [N]
+  std::size_t outside = 0;
+  double peak = 0.0;
+  std::vector<std::pair<double, double>> judged;  // plant time, demand [N]
+  std::string first_outside;
+  for (std::size_t i = run_at; i < safe; ++i) {
+    const auto& row = r.telemetry[i];
+    const double t = r.plant_time(row);
+    if (row.state != SupervisorState::kRun || row.demand_check != "fresh" || r.fault_time(row) >= 2.0) continue;
+    if (t - window_before - 0.010 < r.plant_log.time.front() || t + window_after + 0.010 > r.plant_log.time.back()) {
+      continue;
+    }
+    double closest = std::numeric_limits<double>::infinity();
+    for (double at = t - window_before; at <= t + window_after; at += 0.001) {
+      closest = std::min(closest, std::fabs(row.demand - kDemandDamping * plant_velocity(r.plant_log, at)));
+    }
+    peak = std::max(peak, std::fabs(row.demand));
+    judged.emplace_back(t, row.demand);
+    if (closest > kTolerance) {
+      ++outside;
+      if (first_outside.empty()) {
+        first_outside = "cycle " + std::to_string(row.cycle) + ": demand " + std::to_string(row.demand) +
+                        " N, nearest c v " + std::to_string(closest) + " N off";
+      }
+    }
+  }
+  // RUN from about 1 s to 2 s on the fault clock at 50 Hz: about 50 rows.
+  ASSERT_GE(judged.size(), 30u) << transitions(r);
+  EXPECT_EQ(outside, 0u) << first_outside;
+  // One age for all rows, fitted over the same window (0.5 ms steps): what is left is the
+  // age's jitter and the differenced velocity's noise (88 N RMS). An age spread evenly over a
+  // poll period adds 98.7 kN/s x 10 ms / sqrt(12) / sqrt(2) = 200 N RMS over the sine, over two
+  // (a poll a whole period late now and then, on a loaded machine) 400 N; with the noise 410 N:
+  // the bound is 500 N RMS (1.6 % of the peak). Measured: 65-215 N RMS at ages of 2.5-9.5 ms
+  // (214-687 N at the row's own time), 7 runs at load averages of 4-6.
+  const auto rms_at = [&](double age) {
+    double sum = 0.0;
+    for (const auto& [t, demand] : judged) {
+      const double e = demand - kDemandDamping * plant_velocity(r.plant_log, t - age);
+      sum += e * e;
+    }
+    return std::sqrt(sum / static_cast<double>(judged.size()));
+  };
+  double age = 0.0;
+  double fitted = rms_at(0.0);
+  const double at_row = fitted;
+  for (double a = -window_after; a <= window_before; a += 0.0005) {
+    if (const double e = rms_at(a); e < fitted) {
+      fitted = e;
+      age = a;
+    }
+  }
+  EXPECT_LT(fitted, 500.0) << "demand age " << age * 1e3 << " ms";
+  // The sine's peak c v, 250e3 x 0.1257 = 31.4 kN, is reached within 1 % in the second judged.
+  EXPECT_GT(peak, 0.90 * kDemandDamping * kPeakSpeed);
+  EXPECT_LT(peak, 1.01 * kDemandDamping * kPeakSpeed);
+  RecordProperty("demand_rows_judged", std::to_string(judged.size()));
+  RecordProperty("demand_rms_at_row_time_N", std::to_string(at_row));
+  RecordProperty("demand_age_ms", std::to_string(age * 1e3));
+  RecordProperty("demand_rms_at_age_N", std::to_string(fitted));
+
+  // The stale demand: SAFE (demand_stale) within demand_max_age + 1 periods of the last fresh one.
+  const std::uint64_t periods = expect_demand_stale_trip(r, safe, safety, 2.0, kPeriod);
+  RecordProperty("stale_periods_to_safe", std::to_string(periods));
+  RecordProperty("safe_fault_time_s", std::to_string(r.fault_time(r.telemetry[safe])));
 }
 
 // Modbus RTU: the plant's libmodbus RTU server on a pty, the controller on the symlink to its

@@ -347,4 +347,32 @@ TEST_F(HilVm, CanFaultsTripTheDocumentedReactions) {
   expect_table4_followed(r);
 }
 
+// Force mode over vcan0: the plant is the outer controller and sends Force_Demand (c v) with
+// the LVDT frames; 1 s after the first command it falls silent (demand_stale: no Force_Demand
+// frames, the LVDT's go on). The controller reaches RUN on the demand and goes SAFE
+// (demand_stale) within demand_max_age + 1 periods of the last fresh demand.
+TEST_F(HilVm, ForceModeOverVcanTripsSafeWhenTheDemandStops) {
+  pull(fault_line(), false);
+  std::string toml = "[control]\nmode = \"force\"\n" + controller_toml();
+  toml.insert(toml.find("[can]"), "demand = \"can\"\n");  // into [backends]
+  const auto force_safety = mrd::config::load_config_text(toml, "vm_force").config.safety;
+  const HilResult r = run_hil({"vm_force_stale", toml,
+                               "rate = 100.0\ndemand_damping = 250e3\n[modbus]\nenabled = false\n[can]\nenabled = true\n"
+                               "[profile]\nkind = \"sine\"\namplitude = 0.040\nfrequency = 0.5\n"
+                               "[faults.quiet]\nkind = \"demand_stale\"\nstart = 1.0\n",
+                               2.0, false, {}});
+  ASSERT_NO_FATAL_FAILURE(expect_processes_ran(r));
+  const std::size_t run_at = expect_first_run(r, force_safety, fresh_with_demand);
+  // The demand was c v, not the idle 0: the sine's peak c v is 31.4 kN.
+  double peak = 0.0;
+  for (std::size_t i = run_at; i < r.telemetry.size() && r.fault_time(r.telemetry[i]) < 1.0; ++i) {
+    peak = std::max(peak, std::fabs(r.telemetry[i].demand));
+  }
+  EXPECT_GT(peak, 1e3) << "no demand in RUN";
+  const std::size_t safe = first_in(r, mrd::control::SupervisorState::kSafe, 0.0);
+  ASSERT_LT(safe, r.telemetry.size()) << "never went SAFE\n" << transitions(r);
+  ASSERT_GT(safe, run_at) << transitions(r);
+  expect_demand_stale_trip(r, safe, force_safety, 1.0, kPeriod);
+}
+
 }  // namespace

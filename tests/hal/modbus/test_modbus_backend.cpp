@@ -168,6 +168,79 @@ TEST_F(ModbusBackendTest, ReadsTheDemandRegisterAsSamplesInNewtons) {
   EXPECT_GE(nan_backend.counters()[ModbusEvent::kDecodeErrors], 1u);
 }
 
+// With a demand counter register, a poll yields a demand only when the counter moved since the
+// previous one, with the counter as its sequence: an outer controller that stops counting goes
+// silent (missing, then stale in the checker) instead of repeating its last value as fresh.
+// Each layout: the counter right after the value (one read), right before it (one read), and
+// apart (two reads).
+TEST_F(ModbusBackendTest, ADemandCounterGivesADemandOnlyWhenItAdvancesAndWrapsAround) {
+  constexpr int kDemandAddress = 40;
+  struct Layout {
+    const char* name;
+    int counter_address;
+  };
+  for (const Layout layout : {Layout{"after", kDemandAddress + 2}, Layout{"before", kDemandAddress - 1},
+                              Layout{"apart", kDemandAddress + 10}}) {
+    SCOPED_TRACE(layout.name);
+    ModbusTestServer server;
+    ASSERT_TRUE(server.listening());
+    server.set_input_registers(kLvdtAddress, {0x0000, 1000});
+    // The outer controller's write: the value, then its count (one call where they are adjacent).
+    const auto publish = [&](std::uint16_t low_word, std::uint16_t counter) {
+      if (layout.counter_address == kDemandAddress + 2) {
+        server.set_holding_registers(kDemandAddress, {0x0000, low_word, counter});
+      } else if (layout.counter_address == kDemandAddress - 1) {
+        server.set_holding_registers(layout.counter_address, {counter, 0x0000, low_word});
+      } else {
+        server.set_holding_registers(kDemandAddress, {0x0000, low_word});
+        server.set_holding_registers(layout.counter_address, {counter});
+      }
+    };
+    publish(100, 7);  // 10.0 N, count 7
+    auto config = config_for(server.port());
+    config.registers.has_demand = true;
+    config.registers.demand_address = kDemandAddress;
+    config.registers.demand_counter_address = layout.counter_address;
+    ModbusBackend backend(config, clock);
+    ASSERT_TRUE(backend.start().ok);
+
+    std::optional<mrd::hal::DemandSample> d;
+    ASSERT_TRUE(wait_for([&] { return (d = backend.latest_demand()).has_value(); }));
+    EXPECT_DOUBLE_EQ(d->value, 10.0);
+    EXPECT_EQ(d->sequence, 7u);
+    EXPECT_TRUE(d->usable());
+
+    // Frozen: polls go on (reads counted) but no demand comes. Each poll reads at least the
+    // LVDT and the counter, so 8 more good reads are at least 4 polls.
+    const auto reads = backend.counters()[ModbusEvent::kReadsOk];
+    ASSERT_TRUE(wait_for([&] { return backend.counters()[ModbusEvent::kReadsOk] >= reads + 8; }));
+    EXPECT_FALSE(backend.latest_demand().has_value()) << "a frozen counter gave a demand";
+    EXPECT_TRUE(any_sample(backend).has_value()) << "the LVDT is still read";
+
+    // Advances: one demand with the new value; a jump of 3 shows in the sequence.
+    publish(200, 10);
+    ASSERT_TRUE(wait_for([&] { return (d = backend.latest_demand()).has_value(); }));
+    EXPECT_DOUBLE_EQ(d->value, 20.0);
+    EXPECT_EQ(d->sequence, 10u);
+
+    // Wrap: 65535 -> 0 is an advance, not a frozen counter.
+    publish(300, 65535);
+    ASSERT_TRUE(wait_for([&] { return (d = backend.latest_demand()) && d->sequence == 65535u; }));
+    EXPECT_DOUBLE_EQ(d->value, 30.0);
+    publish(400, 0);
+    ASSERT_TRUE(wait_for([&] { return (d = backend.latest_demand()).has_value(); }));
+    EXPECT_EQ(d->sequence, 0u);
+    EXPECT_DOUBLE_EQ(d->value, 40.0);
+
+    // A counter that moves with an unchanged value is a new demand: a held demand is fair.
+    publish(400, 1);
+    ASSERT_TRUE(wait_for([&] { return (d = backend.latest_demand()).has_value(); }));
+    EXPECT_EQ(d->sequence, 1u);
+    EXPECT_DOUBLE_EQ(d->value, 40.0);
+    EXPECT_EQ(backend.counters()[ModbusEvent::kReadErrors], 0u);
+  }
+}
+
 TEST_F(ModbusBackendTest, WithoutHasDemandNoDemandIsRead) {
   ModbusTestServer server;
   ASSERT_TRUE(server.listening());
