@@ -1,5 +1,7 @@
 #include "record/csv.hpp"
 
+#include "common/time_origin.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -37,6 +39,21 @@ std::optional<std::string_view> LineReader::next() {
     if (!trim(line).empty()) return line;
   }
   return std::nullopt;
+}
+
+std::optional<std::string_view> next_data_line(LineReader& lines, std::optional<double>& origin) {
+  auto line = lines.next();
+  for (; line && is_comment_line(*line); line = lines.next()) {
+    if (!line->starts_with(kTimeOriginPrefix)) continue;
+    const auto parsed = parse_time_origin(*line);
+    const auto fail = [&](const char* why) {
+      return InputError(input_error_message(lines.name(), lines.line_number(), "", why));
+    };
+    if (!parsed) throw fail("a time-origin line must read '# time_s 0 is CLOCK_MONOTONIC <seconds> s'");
+    if (origin) throw fail("a second time-origin line");
+    origin = *parsed;
+  }
+  return line;
 }
 
 bool write_text_file(const std::string& path, const std::string& text) {

@@ -31,12 +31,18 @@ class LineReader {
   std::optional<std::string_view> next();
   // The number of the line next() returned last (0 before the first).
   [[nodiscard]] std::size_t line_number() const { return line_number_; }
+  [[nodiscard]] const std::string& name() const { return name_; }
 
  private:
   std::string_view rest_;
   std::string name_;
   std::size_t line_number_ = 0;
 };
+
+// The next line of `lines` that is not a '#' comment. A time-origin comment
+// (common/time_origin.hpp) sets `origin`; one that starts like it but does not parse, or a second
+// one, throws InputError naming the file and the line.
+std::optional<std::string_view> next_data_line(LineReader& lines, std::optional<double>& origin);
 
 // The whole file as text. Throws InputError "path: cannot open the file", and
 // line_too_long_message as soon as a line passes kMaxLineLength, so a file with a 2 GB line

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include "common/time_origin.hpp"
 #include "record/csv.hpp"
 
 namespace mrd::record {
@@ -49,14 +48,7 @@ class RunCsvParser {
   }
 
  private:
-  // The next line that is not a comment ('#'); a time-origin comment sets the run's origin.
-  std::optional<std::string_view> next_line() {
-    auto line = lines_.next();
-    for (; line && is_comment_line(*line); line = lines_.next()) {
-      if (const auto origin = parse_time_origin(*line)) run_.time_origin = *origin;
-    }
-    return line;
-  }
+  std::optional<std::string_view> next_line() { return next_data_line(lines_, run_.time_origin); }
 
   InputError fail(std::string_view column, const std::string& message) const {
     return InputError(input_error_message(name_, lines_.line_number(), column, message));

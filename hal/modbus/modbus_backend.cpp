@@ -229,9 +229,12 @@ ModbusBackend::Outcome ModbusBackend::read_demand() {
   }
   if (o != Outcome::kOk) return o;
   const std::uint16_t counter = words[n];
+  // The first count only sets the reference: whatever a stopped outer controller left in the
+  // registers before this start is not a demand. A change is.
+  const bool first = !demand_counter_;
   if (demand_counter_ == counter) return Outcome::kOk;  // nothing new since the last poll
   demand_counter_ = counter;
-  push_sample({words.data(), n}, map.demand, counter, demands_);
+  if (!first) push_sample({words.data(), n}, map.demand, counter, demands_);
   return Outcome::kOk;
 }
 

@@ -184,18 +184,36 @@ void validate(TomlReader& in, const PlantConfig& c) {
 // demand_invalid's value is a demand beyond the controller's force.demand_range (by default
 // twice it), one its demand registers can carry: a value the controller takes as fair, or the
 // codec refuses (the registers would keep the last good one), would inject no fault.
+// A demand fault the plant cannot inject is an error, not a script that silently tests nothing:
+// without a demand sent on a bus, or, over Modbus, a stale demand without the counter that
+// makes it visible.
 void check_demand_faults(TomlReader& in, PlantConfig& c) {
   const double range = c.controller.safety.demand_range;
+  const auto& registers = c.controller.modbus.registers;
   for (Fault& f : c.faults) {
-    if (f.kind != FaultKind::kDemandInvalid) continue;
+    if (f.kind != FaultKind::kDemandInvalid && f.kind != FaultKind::kDemandStale) continue;
+    const std::string kind_key = "faults." + f.name + ".kind";
+    if (!c.sends_demand()) {
+      in.error(kind_key, "the plant sends no demand: it needs plant.demand_damping > 0 and a controller that "
+                         "reads its demand from a bus");
+      continue;
+    }
+    if (f.kind == FaultKind::kDemandStale) {
+      if (registers.has_demand && !registers.has_demand_counter()) {
+        in.error(kind_key, "over Modbus a stale demand is invisible without the controller's "
+                           "modbus.registers.demand_counter_address");
+      }
+      continue;
+    }
     const std::string key = "faults." + f.name + ".value";
     if (f.value == 0.0) f.value = 2.0 * range;
+    if (!registers.has_demand) {
+      continue;  // CAN: the frame's DemandInvalid bit; the value is not sent
+    }
     if (!(std::fabs(f.value) > range)) {
       in.error(key, "must lie beyond the controller's force.demand_range (" + std::to_string(range) +
                         " N), or the controller takes it as a fair demand");
-    } else if (c.controller.modbus.registers.has_demand &&
-               hal::modbus::encode_register(f.value, c.controller.modbus.registers.demand).status !=
-                   hal::modbus::CodecStatus::kOk) {
+    } else if (hal::modbus::encode_register(f.value, registers.demand).status != hal::modbus::CodecStatus::kOk) {
       in.error(key, "cannot be written in the controller's demand registers (modbus.registers.demand)");
     }
   }

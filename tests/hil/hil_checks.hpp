@@ -121,7 +121,7 @@ inline std::size_t first_in(const HilResult& r, SupervisorState state, double t)
 
 // Force mode's outer controller fell silent at fault time `start` (demand_stale): row `safe`, the
 // first SAFE, is the supervisor's demand_stale trip. Counted in loop periods from the
-// telemetry's cycle column (a late wake-up moves rows in time, not in count): at most
+// telemetry's cycle column (a late wake-up moves rows in time, not in count): exactly
 // demand_stale_periods + 1 from the last fresh demand to SAFE (the supervisor trips at more
 // than demand_stale_periods without one), each period between without a fresh demand and
 // DEGRADED, and the last fresh demand within two periods of the fault's start. Returns the
@@ -134,8 +134,9 @@ inline std::uint64_t expect_demand_stale_trip(const HilResult& r, std::size_t sa
   while (last_fresh > 0 && r.telemetry[last_fresh].demand_check != "fresh") --last_fresh;
   EXPECT_EQ(r.telemetry[last_fresh].demand_check, "fresh") << "no fresh demand before SAFE";
   const std::uint64_t periods = r.telemetry[safe].cycle - r.telemetry[last_fresh].cycle;
-  EXPECT_GE(periods, 1u);
-  EXPECT_LE(periods, static_cast<std::uint64_t>(safety.demand_stale_periods + 1)) << transitions(r);
+  // The supervisor trips when more than demand_stale_periods executed periods in a row brought
+  // no fresh demand, and `cycle` counts executed periods: neither sooner nor later.
+  EXPECT_EQ(periods, static_cast<std::uint64_t>(safety.demand_stale_periods + 1)) << transitions(r);
   for (std::size_t i = last_fresh + 1; i < safe; ++i) {
     EXPECT_EQ(r.telemetry[i].demand_check, "missing") << "cycle " << r.telemetry[i].cycle;
     EXPECT_EQ(r.telemetry[i].state, SupervisorState::kDegraded) << "cycle " << r.telemetry[i].cycle;

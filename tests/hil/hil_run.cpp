@@ -88,7 +88,9 @@ HilResult run_hil(const HilScenario& s) {
     r.plant_log = record::read_recorded_run(plant_log.string());
     // The two files' time origins, from the files themselves (as mrd-hil-report joins them).
     if (!log.time_origin || !r.plant_log.time_origin) {
-      r.failure = "no time-origin line in " + std::string(log.time_origin ? "the plant log" : "the telemetry");
+      r.failure = "no time-origin line in" + std::string(log.time_origin ? "" : " " + telemetry.string()) +
+                  (r.plant_log.time_origin ? "" : " " + plant_log.string()) + "\n--- controller\n" +
+                  r.controller_output + "--- plant\n" + r.plant_output;
       return r;
     }
     r.controller_t0 = *log.time_origin;

@@ -218,8 +218,9 @@ std::string force_toml() {
 }
 
 const mrd::control::SupervisorConfig& force_safety() {
-  static const auto config = mrd::config::load_config_text(force_toml(), "force").config.safety;
-  return config;
+  static const auto loaded = mrd::config::load_config_text(force_toml(), "force");
+  EXPECT_TRUE(loaded.ok()) << loaded.report();  // else the limits judged are the defaults
+  return loaded.config.safety;
 }
 
 // The rig's velocity at plant time t, by central difference of the plant log's displacement over
@@ -310,7 +311,8 @@ TEST(HilModbus, ForceModeFollowsThePlantsDemandAndAStaleDemandTripsSafe) {
     }
   }
   EXPECT_LT(fitted, 500.0) << "demand age " << age * 1e3 << " ms";
-  // The sine's peak c v, 250e3 x 0.1257 = 31.4 kN, is reached within 1 % in the second judged.
+  // The sine's peak c v, 250e3 x 0.1257 = 31.4 kN, is reached in the second judged: at least
+  // 90 % of it (the rows fall a poll's age either side of the crest), and not over it by 1 %.
   EXPECT_GT(peak, 0.90 * kDemandDamping * kPeakSpeed);
   EXPECT_LT(peak, 1.01 * kDemandDamping * kPeakSpeed);
   RecordProperty("demand_rows_judged", std::to_string(judged.size()));

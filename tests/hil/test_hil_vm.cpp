@@ -355,7 +355,9 @@ TEST_F(HilVm, ForceModeOverVcanTripsSafeWhenTheDemandStops) {
   pull(fault_line(), false);
   std::string toml = "[control]\nmode = \"force\"\n" + controller_toml();
   toml.insert(toml.find("[can]"), "demand = \"can\"\n");  // into [backends]
-  const auto force_safety = mrd::config::load_config_text(toml, "vm_force").config.safety;
+  const auto loaded = mrd::config::load_config_text(toml, "vm_force");
+  ASSERT_TRUE(loaded.ok()) << loaded.report();  // else the limits judged are the defaults
+  const auto& force_safety = loaded.config.safety;
   const HilResult r = run_hil({"vm_force_stale", toml,
                                "rate = 100.0\ndemand_damping = 250e3\n[modbus]\nenabled = false\n[can]\nenabled = true\n"
                                "[profile]\nkind = \"sine\"\namplitude = 0.040\nfrequency = 0.5\n"

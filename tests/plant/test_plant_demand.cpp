@@ -4,6 +4,7 @@
 // (demand_stale, demand_invalid) on Modbus and in the Force_Demand frame.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <memory>
 #include <optional>
 #include <string>
@@ -11,6 +12,7 @@
 #include "control/demand_check.hpp"
 #include "hal/can/can_codec.hpp"
 #include "hal/modbus/modbus_backend.hpp"
+#include "record/csv.hpp"
 #include "sim/plant/can_node.hpp"
 #include "sim/plant/modbus_server.hpp"
 #include "sim/plant/plant_config.hpp"
@@ -102,9 +104,16 @@ mrd::plant::ActiveFaults faults_with(mrd::plant::FaultKind kind, double value = 
   return a;
 }
 
+// The plant as outer controller of etc/mrd/hil-force-modbus.toml (demand and its counter over
+// Modbus TCP), with `faults` appended.
+std::string force_plant(const std::string& faults) {
+  return "[plant]\ndemand_damping = 250e3\ncontroller_config = \"" MRD_SOURCE_DIR
+         "/etc/mrd/hil-force-modbus.toml\"\n" + faults;
+}
+
 TEST(PlantDemand, TheDemandFaultsParseAndAnInvalidDemandLiesBeyondTheControllersRange) {
-  auto c = load_plant_config_text("[plant]\ncontroller_config = \"\"\n[faults.quiet]\nkind = \"demand_stale\"\n"
-                                  "start = 2.0\n[faults.bad]\nkind = \"demand_invalid\"\nstart = 3.0\n",
+  auto c = load_plant_config_text(force_plant("[faults.quiet]\nkind = \"demand_stale\"\n"
+                                              "start = 2.0\n[faults.bad]\nkind = \"demand_invalid\"\nstart = 3.0\n"),
                                   "plant.toml");
   ASSERT_TRUE(c.ok()) << c.report();
   ASSERT_EQ(c.config.faults.size(), 2u);
@@ -113,20 +122,40 @@ TEST(PlantDemand, TheDemandFaultsParseAndAnInvalidDemandLiesBeyondTheControllers
   EXPECT_EQ(to_string(c.config.faults[1].kind), "demand_stale");
   EXPECT_EQ(c.config.faults[0].kind, mrd::plant::FaultKind::kDemandInvalid);
   EXPECT_EQ(to_string(c.config.faults[0].kind), "demand_invalid");
-  // The default controller's force.demand_range is 60 kN: twice it.
+  // The controller's force.demand_range is the default 60 kN: twice it.
   EXPECT_DOUBLE_EQ(c.config.controller.safety.demand_range, 60e3);
   EXPECT_DOUBLE_EQ(c.config.faults[0].value, 120e3);
 
-  c = load_plant_config_text("[plant]\ncontroller_config = \"\"\n[faults.bad]\nkind = \"demand_invalid\"\n"
-                             "value = -50e3\n",
-                             "fair.toml");
-  EXPECT_NE(c.report().find("fair.toml:5: faults.bad.value: must lie beyond the controller's force.demand_range"),
+  c = load_plant_config_text(force_plant("[faults.bad]\nkind = \"demand_invalid\"\nvalue = -50e3\n"), "fair.toml");
+  EXPECT_NE(c.report().find("fair.toml:6: faults.bad.value: must lie beyond the controller's force.demand_range"),
             std::string::npos)
       << c.report();
-  c = load_plant_config_text("[plant]\ncontroller_config = \"\"\n[faults.bad]\nkind = \"demand_invalid\"\n"
-                             "value = -70e3\n",
+  c = load_plant_config_text(force_plant("[faults.bad]\nkind = \"demand_invalid\"\nvalue = -70e3\n"),
                              "negative.toml");
   EXPECT_TRUE(c.ok()) << c.report();
+}
+
+// A demand fault that could inject nothing is refused where it is named.
+TEST(PlantDemand, ADemandFaultWithNoDemandToSpoilIsAnError) {
+  auto c = load_plant_config_text("[plant]\ncontroller_config = \"\"\n[faults.quiet]\nkind = \"demand_stale\"\n",
+                                  "silent.toml");
+  EXPECT_NE(c.report().find("silent.toml:4: faults.quiet.kind: the plant sends no demand"), std::string::npos)
+      << c.report();
+  // Over Modbus without the controller's counter a frozen demand reads as fresh.
+  const std::string no_counter = testing::TempDir() + "mrd_force_no_counter.toml";
+  {
+    std::string text = mrd::record::read_text_file(MRD_SOURCE_DIR "/etc/mrd/hil-force-modbus.toml");
+    const std::string counter = "demand_counter_address = 4";
+    ASSERT_NE(text.find(counter), std::string::npos);
+    text.replace(text.find(counter), counter.size(), "demand_counter_address = -1");
+    std::ofstream(no_counter) << text;
+  }
+  c = load_plant_config_text("[plant]\ndemand_damping = 250e3\ncontroller_config = \"" + no_counter +
+                                 "\"\n[faults.quiet]\nkind = \"demand_stale\"\n",
+                             "uncounted.toml");
+  EXPECT_NE(c.report().find("uncounted.toml:5: faults.quiet.kind: over Modbus a stale demand is invisible"),
+            std::string::npos)
+      << c.report();
 }
 
 // With the controller's counter register, the server counts each period it sends a demand;
@@ -140,13 +169,11 @@ TEST(PlantDemand, TheModbusServerCountsDemandsAndServesTheDemandFaults) {
   layout.registers.demand_counter_address = 8;
   ServedDemand served(layout, 100.0);
   ASSERT_EQ(served.error(), "");
-  auto d = served.next_demand();
-  ASSERT_TRUE(d.has_value());
-  EXPECT_DOUBLE_EQ(d->value, 100.0);
-  EXPECT_EQ(d->sequence, 1u) << "the first demand sent is count 1";
+  // The first demand sent is count 1, which the back end takes as its reference.
+  EXPECT_TRUE(served.no_demand_over_polls()) << "the count found at the start gave a demand";
 
   served.server().publish(0.001, 0.0, 200.0, mrd::plant::ActiveFaults{});
-  d = served.next_demand();
+  auto d = served.next_demand();
   ASSERT_TRUE(d.has_value());
   EXPECT_DOUBLE_EQ(d->value, 200.0);
   EXPECT_EQ(d->sequence, 2u);

@@ -1,10 +1,10 @@
 #include "tools/hil/telemetry_csv.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
-#include "common/time_origin.hpp"
 #include "runtime/csv_telemetry_writer.hpp"
 #include "record/csv.hpp"
 
@@ -14,6 +14,10 @@ namespace {
 
 using control::SupervisorState;
 using control::Trigger;
+
+// One past the last SampleCheck, for enum_named.
+constexpr auto kSampleChecks =
+    static_cast<control::SampleCheck>(static_cast<int>(control::SampleCheck::kFromFuture) + 1);
 
 template <typename E>
 bool enum_named(std::string_view name, E count, E& out) {
@@ -43,13 +47,7 @@ TelemetryLog parse_telemetry_csv(std::string_view text, const std::string& name)
   static const std::vector<std::string_view> kForce = header_columns(runtime::CsvTelemetryWriter::force_header());
   record::LineReader lines(text, name);
   TelemetryLog log;
-  const auto next = [&] {
-    auto line = lines.next();
-    for (; line && is_comment_line(*line); line = lines.next()) {
-      if (const auto origin = parse_time_origin(*line)) log.time_origin = *origin;
-    }
-    return line;
-  };
+  const auto next = [&] { return record::next_data_line(lines, log.time_origin); };
   const auto fail = [&](std::string_view column, const std::string& message) {
     return record::InputError(record::input_error_message(name, lines.line_number(), column, message));
   };
@@ -72,10 +70,25 @@ TelemetryLog parse_telemetry_csv(std::string_view text, const std::string& name)
       if (!v) throw fail(columns[i], "'" + std::string(f[i]) + "' is not a number");
       return *v;
     };
+    // Counts and flags as the writer prints them: whole numbers, and 0 or 1.
+    const auto count = [&](std::size_t i) {
+      std::uint64_t v = 0;
+      const auto [end, error] = std::from_chars(f[i].data(), f[i].data() + f[i].size(), v);
+      if (error != std::errc{} || end != f[i].data() + f[i].size()) {
+        throw fail(columns[i], "'" + std::string(f[i]) + "' is not a count");
+      }
+      return v;
+    };
+    const auto flag = [&](std::size_t i) {
+      if (f[i] != "0" && f[i] != "1") throw fail(columns[i], "'" + std::string(f[i]) + "' is not 0 or 1");
+      return f[i] == "1";
+    };
     TelemetryRow r;
-    r.cycle = static_cast<std::uint64_t>(number(0));
+    r.cycle = count(0);
     r.time = number(1);
     r.displacement = number(2) * 1e-3;
+    control::SampleCheck sample{};
+    if (!enum_named(f[3], kSampleChecks, sample)) throw fail(columns[3], "unknown sample check");
     r.sample = std::string(f[3]);
     r.measured_current = number(4);
     r.scheduled_current = number(5);
@@ -87,16 +100,20 @@ TelemetryLog parse_telemetry_csv(std::string_view text, const std::string& name)
     r.force = number(11) * 1e3;
     if (!enum_named(f[12], SupervisorState::kCount, r.state)) throw fail(columns[12], "unknown state");
     if (!enum_named(f[13], Trigger::kCount, r.trigger)) throw fail(columns[13], "unknown trigger");
-    r.overruns = static_cast<std::uint32_t>(number(14));
-    r.enable = number(15) != 0.0;
-    r.latched = number(16) != 0.0;
-    r.recoveries = static_cast<std::uint64_t>(number(17));
+    const std::uint64_t overruns = count(14);
+    if (overruns > std::numeric_limits<std::uint32_t>::max()) throw fail(columns[14], "more than 2^32 - 1");
+    r.overruns = static_cast<std::uint32_t>(overruns);
+    r.enable = flag(15);
+    r.latched = flag(16);
+    r.recoveries = count(17);
     if (log.force_mode) {
       r.demand = number(18);
       r.yield_force = number(19);
+      control::SampleCheck check{};
+      if (!enum_named(f[20], kSampleChecks, check)) throw fail(columns[20], "unknown demand check");
       r.demand_check = std::string(f[20]);
-      r.clipped = number(21) != 0.0;
-      r.reached = number(22) != 0.0;
+      r.clipped = flag(21);
+      r.reached = flag(22);
     }
     log.rows.push_back(std::move(r));
   }

@@ -84,7 +84,8 @@ std::vector<StudyRow> run_study(const BHCurve& curve, const StudyOptions& option
                      r.wall_s + r.polish_wall_s);
       }
       const double rmse = r.polish ? std::fmin(r.fit.rmse, r.polish->rmse) : r.fit.rmse;
-      if (!(rmse >= best_rmse)) best_rmse = rmse;
+      // A diverged run (NaN) never becomes the best, nor lets a worse one in after it.
+      if (std::isfinite(rmse) && (std::isnan(best_rmse) || rmse < best_rmse)) best_rmse = rmse;
       if (options.progress) {
         options.progress->report({.stage = options.stage, .round = seed, .candidate = algorithm_name(algorithm),
                                   .done = ++done, .total = runs, .best_error = best_rmse, .unit = "T RMSE"});

@@ -204,16 +204,24 @@ TEST_F(ModbusBackendTest, ADemandCounterGivesADemandOnlyWhenItAdvancesAndWrapsAr
     ModbusBackend backend(config, clock);
     ASSERT_TRUE(backend.start().ok);
 
+    // What the registers held at the start is no demand: the first count is the reference.
+    // Each poll reads at least the LVDT and the counter, so 8 good reads are at least 4 polls.
+    const auto polls_later = [&] {
+      const auto reads = backend.counters()[ModbusEvent::kReadsOk];
+      return wait_for([&] { return backend.counters()[ModbusEvent::kReadsOk] >= reads + 8; });
+    };
+    ASSERT_TRUE(polls_later());
+    EXPECT_FALSE(backend.latest_demand().has_value()) << "the count found at the start gave a demand";
+
     std::optional<mrd::hal::DemandSample> d;
+    publish(150, 8);
     ASSERT_TRUE(wait_for([&] { return (d = backend.latest_demand()).has_value(); }));
-    EXPECT_DOUBLE_EQ(d->value, 10.0);
-    EXPECT_EQ(d->sequence, 7u);
+    EXPECT_DOUBLE_EQ(d->value, 15.0);
+    EXPECT_EQ(d->sequence, 8u);
     EXPECT_TRUE(d->usable());
 
-    // Frozen: polls go on (reads counted) but no demand comes. Each poll reads at least the
-    // LVDT and the counter, so 8 more good reads are at least 4 polls.
-    const auto reads = backend.counters()[ModbusEvent::kReadsOk];
-    ASSERT_TRUE(wait_for([&] { return backend.counters()[ModbusEvent::kReadsOk] >= reads + 8; }));
+    // Frozen: polls go on (reads counted) but no demand comes.
+    ASSERT_TRUE(polls_later());
     EXPECT_FALSE(backend.latest_demand().has_value()) << "a frozen counter gave a demand";
     EXPECT_TRUE(any_sample(backend).has_value()) << "the LVDT is still read";
 

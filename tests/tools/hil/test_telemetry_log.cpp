@@ -105,6 +105,40 @@ TEST(TelemetryLog, AForeignHeaderOrARaggedRowNamesTheFileAndLine) {
   }
 }
 
+// The error a telemetry text gets, or "" when it reads.
+std::string telemetry_error(const std::string& text) {
+  try {
+    (void)mrd::tools::parse_telemetry_csv(text, "t.csv");
+    return "";
+  } catch (const mrd::record::InputError& e) {
+    return e.what();
+  }
+}
+
+TEST(TelemetryLog, CountsFlagsChecksAndTheOriginLineAreCheckedNotCast) {
+  const std::string header = CsvTelemetryWriter::header();
+  const std::string good = "0,0.000000,1.0000,fresh,0,0,0,0,0,0,0,0,INIT,none,0,0,0,0\n";
+  EXPECT_EQ(telemetry_error(header + good), "");
+  EXPECT_EQ(telemetry_error(header + "0,0.000000,1.0000,fresh,0,0,0,0,0,0,0,0,INIT,none,nan,0,0,0\n"),
+            "t.csv:2: column 'overruns': 'nan' is not a count");
+  EXPECT_EQ(telemetry_error(header + "0,0.000000,1.0000,fresh,0,0,0,0,0,0,0,0,INIT,none,0,0,0,-1\n"),
+            "t.csv:2: column 'recoveries': '-1' is not a count");
+  EXPECT_EQ(telemetry_error(header + "1.5,0.000000,1.0000,fresh,0,0,0,0,0,0,0,0,INIT,none,0,0,0,0\n"),
+            "t.csv:2: column 'cycle': '1.5' is not a count");
+  EXPECT_EQ(telemetry_error(header + "0,0.000000,1.0000,fresh,0,0,0,0,0,0,0,0,INIT,none,0,2,0,0\n"),
+            "t.csv:2: column 'enable': '2' is not 0 or 1");
+  EXPECT_EQ(telemetry_error(header + "0,0.000000,1.0000,fine,0,0,0,0,0,0,0,0,INIT,none,0,0,0,0\n"),
+            "t.csv:2: column 'sample': unknown sample check");
+  const std::string force = CsvTelemetryWriter::force_header();
+  EXPECT_EQ(telemetry_error(force + "0,0.000000,1.0000,fresh,0,0,0,0,0,0,0,0,INIT,none,0,0,0,0,5,6,late,0,1\n"),
+            "t.csv:2: column 'demand': unknown demand check");
+  EXPECT_EQ(telemetry_error(header + "# time_s 0 is CLOCK_MONOTONIC 12,5 s\n" + good),
+            "t.csv:2: a time-origin line must read '# time_s 0 is CLOCK_MONOTONIC <seconds> s'");
+  EXPECT_EQ(telemetry_error(header + "# time_s 0 is CLOCK_MONOTONIC 1.0 s\n" + good +
+                            "# time_s 0 is CLOCK_MONOTONIC 2.0 s\n"),
+            "t.csv:4: a second time-origin line");
+}
+
 TEST(TimeOrigin, ParsesWhatItFormatsToTheNanosecondAndNothingElse) {
   char line[96];
   ASSERT_GT(mrd::format_time_origin(1234567.000000001, line, sizeof line), 0);
