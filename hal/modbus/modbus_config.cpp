@@ -29,6 +29,10 @@ ValidationReport RegisterMap::validate() const {
     check_address(r, "demand_address", demand_address, demand);
     r.merge(demand.validate(), "demand");
   }
+  if (has_load_cell) {
+    check_address(r, "load_cell_address", load_cell_address, load_cell);
+    r.merge(load_cell.validate(), "load_cell");
+  }
   return r;
 }
 

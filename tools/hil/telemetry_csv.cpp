@@ -97,6 +97,8 @@ TelemetryLog parse_telemetry_csv(std::string_view text, const std::string& name)
       r.demand_check = std::string(f[20]);
       r.clipped = number(21) != 0.0;
       r.reached = number(22) != 0.0;
+      r.force_scale = number(23);
+      r.load_cell_frozen = static_cast<std::uint32_t>(number(24));
     }
     log.rows.push_back(std::move(r));
   }

@@ -41,6 +41,8 @@ std::string written_file(bool force_columns, mrd::hal::Timestamp start) {
     r.demand_check = static_cast<std::uint8_t>(mrd::control::SampleCheck::kStale);
     r.clipped = i == 1;
     r.reached = true;
+    r.force_scale = 1.0 - 0.125 * i;
+    r.load_cell_frozen = static_cast<std::uint32_t>(7 * i);
     q.offer(r);
   }
   writer.stop();
@@ -70,6 +72,8 @@ TEST(TelemetryLog, TheWritersFileCarriesItsOriginAndReadsBackInBothModes) {
       EXPECT_TRUE(log.rows[1].clipped);
       EXPECT_FALSE(log.rows[2].clipped);
       EXPECT_TRUE(log.rows[0].reached);
+      EXPECT_DOUBLE_EQ(log.rows[2].force_scale, 0.75);
+      EXPECT_EQ(log.rows[1].load_cell_frozen, 7u);
     } else {
       EXPECT_EQ(log.rows[2].demand, 0.0);
       EXPECT_TRUE(log.rows[2].demand_check.empty());
@@ -101,7 +105,7 @@ TEST(TelemetryLog, AForeignHeaderOrARaggedRowNamesTheFileAndLine) {
     ADD_FAILURE() << "a table4 row under the force header was read";
   } catch (const mrd::record::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("f.csv:3:"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("expected 23 fields, got 18"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("expected 25 fields, got 18"), std::string::npos) << e.what();
   }
 }
 
