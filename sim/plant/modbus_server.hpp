@@ -49,6 +49,9 @@ class ModbusServer {
   // Loop side: this period's LVDT value, coil current and faults.
   // `demand` [N] goes to the demand registers when the controller reads them.
   void publish(double lvdt, double coil_current, double demand, const ActiveFaults& faults);
+  // Loop side: the rig's measured force [N] for the load-cell registers, when the controller
+  // reads them (force mode's load-cell feedback).
+  void publish_load_cell(double force);
   // The newest setpoint the controller wrote [A]; 0 before the first.
   [[nodiscard]] double setpoint() const { return setpoint_.load(std::memory_order_relaxed); }
   [[nodiscard]] ModbusServerCounters counters() const;
@@ -78,6 +81,7 @@ class ModbusServer {
 
   std::atomic<std::uint32_t> lvdt_words_{0};
   std::atomic<std::uint32_t> feedback_words_{0};
+  std::atomic<std::uint32_t> load_cell_words_{0};
   std::atomic<std::uint32_t> demand_words_{0};
   std::atomic<double> setpoint_{0.0};
   std::atomic<bool> stall_{false};
