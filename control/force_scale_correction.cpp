@@ -42,7 +42,9 @@ ScaleUpdate ForceScaleCorrection::update(const LoadCellObservation& in) {
   periods_since_fresh_ = 0;
   const double measured_yield = in.measured - in.viscous;
   const double model_yield = in.predicted - in.viscous;
-  const bool yielding = std::fabs(in.measured) > min_force_ && std::fabs(in.predicted) > min_force_ &&
+  // On the yield parts, not the whole forces: at speed the viscous part alone can pass a force
+  // gate while the yield part (the ratio's denominator) is the zero-field stress's few hundred N.
+  const bool yielding = std::fabs(measured_yield) > min_force_ && std::fabs(model_yield) > min_force_ &&
                         std::fabs(in.velocity) > min_speed_ && measured_yield * model_yield > 0.0;
   if (!yielding) return ScaleUpdate::kGatedOut;
   // The target may lie past a bound (the scale then reaches it in finite time and stops there),

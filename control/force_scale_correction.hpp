@@ -10,7 +10,7 @@ namespace mrd::control {
 struct ForceScaleSettings {
   double time_constant = 5.0;        // [s] of the first-order move toward measured / predicted
   double max_correction = 0.3;       // the scale stays in [1 - max, 1 + max]
-  double min_force_fraction = 0.1;   // gate: |F_measured| and |F_model| above this share of the range
+  double min_force_fraction = 0.1;   // gate: both yield parts, |F - c0 v|, above this share of the range
   double min_speed = 0.01;           // gate: |v| above it [m/s] (10 v_s: the sign term is saturated)
   int max_age_periods = 5;           // more periods than this without a fresh sample: stale
 };
@@ -49,9 +49,9 @@ enum class ScaleUpdate : std::uint8_t {
 //   s* = s (F_measured - c0 v) / (F_model - c0 v),
 //
 // by 1 - exp(-T / time_constant) of the way (a first-order filter in the time spent gated in),
-// and stays in [1 - max_correction, 1 + max_correction]. The gate: |F_measured| and |F_model|
-// above min_force_fraction of the force range, |v| above min_speed, and both yield parts of the
-// same sign; elsewhere the ratio is noise over a small number. A stale or bad load cell freezes
+// and stays in [1 - max_correction, 1 + max_correction]. The gate: both yield parts,
+// |F_measured - c0 v| and |F_model - c0 v|, above min_force_fraction of the force range, of the
+// same sign, and |v| above min_speed; elsewhere the ratio is noise over a small number. A stale or bad load cell freezes
 // s (not a fault: the law keeps the last scale) and is counted. Pure, no heap.
 class ForceScaleCorrection {
  public:
