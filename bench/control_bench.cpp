@@ -17,9 +17,12 @@ constexpr double kPeriod = 1e-3;
 constexpr double kAmplitude = 0.040;                    // [m], Table 4's motion
 constexpr double kOmega = 2.0 * std::numbers::pi * 0.5;  // [rad/s]
 
-void run_control_law(benchmark::State& state, mrd::control::ControlMode mode) {
+// `load_cell`: the load-cell correction runs too, on a load cell reading 0.9 of the demand
+// (a fresh sample every period, so it moves the scale whenever the gate lets it).
+void run_control_law(benchmark::State& state, mrd::control::ControlMode mode, bool load_cell = false) {
   mrd::control::ControlLawConfig config;
   config.mode = mode;
+  config.has_load_cell = load_cell;
   config.limits.min_current = -config.limits.max_current;  // bipolar, as in docs/FORCE-CONTROL.md
   mrd::control::ControlLaw law(config);
   mrd::control::DemandChecker demands({.range = 60e3, .max_age = std::chrono::milliseconds{5}});
@@ -35,6 +38,9 @@ void run_control_law(benchmark::State& state, mrd::control::ControlMode mode) {
     law.observe({.displacement = kAmplitude * std::sin(kOmega * t),
                  .timing = mrd::model::SampleTiming{true, kPeriod, 0.0},
                  .coil_current = coil});
+    if (load_cell) {
+      benchmark::DoNotOptimize(law.correct_force_scale(mrd::control::LoadCellStatus::kFresh, 0.9 * demand.value));
+    }
     // Kept from the optimiser as a const value: Google Benchmark's DoNotOptimize on a non-const
     // double that is read afterwards ("+m,r") is miscompiled by GCC 12 (GCC bug 92597); here it
     // fed sin(wt) back as the coil current, a 1 A swing that tripled the cycle's time.
@@ -48,5 +54,9 @@ void run_control_law(benchmark::State& state, mrd::control::ControlMode mode) {
 
 void BM_ForceModeLawCycle(benchmark::State& state) { run_control_law(state, mrd::control::ControlMode::kForce); }
 BENCHMARK(BM_ForceModeLawCycle);
+void BM_ForceModeLawCycleLoadCell(benchmark::State& state) {
+  run_control_law(state, mrd::control::ControlMode::kForce, true);
+}
+BENCHMARK(BM_ForceModeLawCycleLoadCell);
 
 }  // namespace

@@ -97,6 +97,9 @@ void read_modbus(TomlReader& in, hal::modbus::ModbusConfig& m) {
   read_kind(in, "modbus.registers.demand_kind", r.demand_kind);
   read_format(in, "modbus.registers.demand", r.demand);
   in.get("modbus.registers.demand_counter_address", r.demand_counter_address);
+  in.get("modbus.registers.load_cell_address", r.load_cell_address);
+  read_kind(in, "modbus.registers.load_cell_kind", r.load_cell_kind);
+  read_format(in, "modbus.registers.load_cell", r.load_cell);
 }
 
 void read_can(TomlReader& in, hal::can::SocketCanConfig& c) {
@@ -107,6 +110,7 @@ void read_can(TomlReader& in, hal::can::SocketCanConfig& c) {
   in.get("can.use_feedback", c.use_feedback);
   in.get("can.feedback_id", c.feedback_id);
   in.get("can.demand_id", c.demand_id);
+  in.get("can.load_cell_id", c.load_cell_id);
   in.get_seconds("can.receive_timeout", c.receive_timeout);
   in.get_seconds("can.bus_off_hold_off", c.bus_off_hold_off);
 }
@@ -150,6 +154,11 @@ void read_law(TomlReader& in, control::ControlLawConfig& law) {
   in.get_enum("control.mode", law.mode,
               {{"table4", control::ControlMode::kTable4}, {"force", control::ControlMode::kForce}});
   in.get("force.invert_coil_lag", law.force.invert_coil_lag);
+  in.get("force.load_cell.time_constant", law.load_cell.time_constant);
+  in.get("force.load_cell.max_correction", law.load_cell.max_correction);
+  in.get("force.load_cell.min_force_fraction", law.load_cell.min_force_fraction);
+  in.get("force.load_cell.min_speed", law.load_cell.min_speed);
+  in.get("force.load_cell.max_age", law.load_cell.max_age_periods);
   read_damper(in, law.damper);
   in.get("schedule.thresholds", law.schedule.thresholds);
   in.get("schedule.currents", law.schedule.currents);
@@ -207,6 +216,11 @@ void read_all(TomlReader& in, ControllerConfig& c) {
   in.get_enum("backends.demand", demand,
               {{"mock", DeviceBackend::kMock}, {"modbus", DeviceBackend::kModbus},
                {"can", DeviceBackend::kCan}});
+  // Force mode's optional load cell: none (the law runs open-loop on the model) by default.
+  std::optional<DeviceBackend> load_cell;
+  in.get_enum("backends.load_cell", load_cell,
+              {{"none", std::nullopt}, {"mock", DeviceBackend::kMock}, {"modbus", DeviceBackend::kModbus},
+               {"can", DeviceBackend::kCan}});
   in.get("simulation.amplitude", c.simulation.amplitude);
   in.get("simulation.frequency", c.simulation.frequency);
   in.get("simulation.lvdt_noise", c.simulation.lvdt_noise);
@@ -220,6 +234,10 @@ void read_all(TomlReader& in, ControllerConfig& c) {
   if (c.law.mode == control::ControlMode::kForce) c.backends.demand = demand;
   c.can.use_demand = c.backends.demand == DeviceBackend::kCan;
   c.modbus.registers.has_demand = c.backends.demand == DeviceBackend::kModbus;
+  if (c.law.mode == control::ControlMode::kForce) c.backends.load_cell = load_cell;
+  c.law.has_load_cell = c.backends.load_cell.has_value();
+  c.can.use_load_cell = c.backends.load_cell == DeviceBackend::kCan;
+  c.modbus.registers.has_load_cell = c.backends.load_cell == DeviceBackend::kModbus;
   read_safety(in, c.safety);
   in.get("realtime.priority", c.realtime.priority);
   in.get("realtime.cpu", c.realtime.cpu);
@@ -250,6 +268,8 @@ std::string safety_key(const std::string& field) {
 std::string file_key(const std::string& field) {
   if (field.starts_with("limits.")) return "compensator." + field.substr(7);
   if (field == "observer.sample_period") return "loop.rate";
+  if (field == "load_cell.max_age_periods") return "force.load_cell.max_age";
+  if (field.starts_with("load_cell.")) return "force." + field;
   return field;
 }
 
@@ -266,7 +286,7 @@ void check_register_overlaps(TomlReader& in, const hal::modbus::RegisterMap& r) 
     RegisterType type;
   };
   // In the order the errors name them: each value is checked against those before it.
-  const std::array<Value, 5> values{{
+  const std::array<Value, 6> values{{
       {"modbus.registers.lvdt_address", "the LVDT's registers", true, r.lvdt_address, r.lvdt_kind, r.lvdt.type},
       {"modbus.registers.setpoint_address", "the setpoint's holding registers", true, r.setpoint_address,
        RegisterKind::kHolding, r.setpoint.type},
@@ -276,6 +296,8 @@ void check_register_overlaps(TomlReader& in, const hal::modbus::RegisterMap& r) 
        r.demand.type},
       {"modbus.registers.demand_counter_address", "the demand counter's register", r.has_demand_counter(),
        r.demand_counter_address, r.demand_kind, RegisterType::kUint16},
+      {"modbus.registers.load_cell_address", "the load cell's registers", r.has_load_cell, r.load_cell_address,
+       r.load_cell_kind, r.load_cell.type},
   }};
   const auto overlap = [](const Value& a, const Value& b) {
     return a.kind == b.kind && a.address < b.address + static_cast<int>(word_count(b.type)) &&
@@ -330,6 +352,9 @@ void cross_check(TomlReader& in, const ControllerConfig& c) {
   if (c.backends.demand == DeviceBackend::kMock && c.backends.lvdt != DeviceBackend::kMock) {
     in.error("backends.demand", "\"mock\" asks for simulation.demand_damping times the mock LVDT's velocity: "
                                 "it needs backends.lvdt = \"mock\"");
+  }
+  if (c.backends.load_cell == DeviceBackend::kMock && c.backends.lvdt != DeviceBackend::kMock) {
+    in.error("backends.load_cell", "\"mock\" measures the simulated rig's force: it needs backends.lvdt = \"mock\"");
   }
   if (c.backends.uses(DeviceBackend::kModbus)) check_register_overlaps(in, c.modbus.registers);
 }

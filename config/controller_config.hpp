@@ -25,8 +25,11 @@ struct BackendSelection {
   DeviceBackend driver = DeviceBackend::kMock;
   LinesBackend lines = LinesBackend::kMock;
   std::optional<DeviceBackend> demand;  // the force demand; set in force mode only
+  std::optional<DeviceBackend> load_cell;  // force mode's optional load cell (none: open-loop on the model)
 
-  [[nodiscard]] bool uses(DeviceBackend b) const { return lvdt == b || driver == b || demand == b; }
+  [[nodiscard]] bool uses(DeviceBackend b) const {
+    return lvdt == b || driver == b || demand == b || load_cell == b;
+  }
   [[nodiscard]] bool any_mock() const {
     return uses(DeviceBackend::kMock) || lines == LinesBackend::kMock;
   }

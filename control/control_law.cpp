@@ -15,6 +15,7 @@ ValidationReport validate(const ControlLawConfig& config) {
   report.require_positive("observer.sample_period", config.observer.sample_period);
   report.require_positive("observer.velocity_cutoff_frequency",
                           config.observer.velocity_cutoff_frequency);
+  if (config.has_load_cell) report.merge(validate(config.load_cell), "load_cell");
   if (report.ok() && config.limits.min_current >= config.limits.max_current) {
     report.error("limits.min_current", "must be below limits.max_current");
   }
@@ -31,6 +32,22 @@ ControlLaw::ControlLaw(const ControlLawConfig& config)
                      config.observer.sample_period),
       compensate_(config.compensate_hysteresis) {
   if (config.mode == ControlMode::kForce) force_.emplace(observer_, config.limits, config.force);
+  // The gate's force range is the model's maximum yield force.
+  if (force_ && config.has_load_cell) {
+    correction_.emplace(config.load_cell, force_->max_yield_force(), config.observer.sample_period);
+  }
+}
+
+ScaleUpdate ControlLaw::correct_force_scale(LoadCellStatus status, double measured) {
+  if (!correction_) return ScaleUpdate::kWaiting;
+  const model::ObserverEstimate& e = observation_.estimate;
+  const ScaleUpdate u = correction_->update({.status = status,
+                                            .measured = measured,
+                                            .predicted = e.force,
+                                            .viscous = observer_.damper().force(e.velocity, 0.0),
+                                            .velocity = e.velocity});
+  observer_.set_yield_scale(correction_->scale());
+  return u;
 }
 
 const ControlLaw::Observation& ControlLaw::observe(const model::Measurement& m) {

@@ -5,6 +5,7 @@
 #include <limits>
 #include <optional>
 
+#include "control/force_scale_correction.hpp"
 #include "model/current_schedule.hpp"
 #include "model/damper_model.hpp"
 #include "model/force_inverse.hpp"
@@ -22,6 +23,9 @@ enum class ControlMode : std::uint8_t { kTable4, kForce };
 struct ControlLawConfig {
   ControlMode mode = ControlMode::kTable4;
   model::ForceInverseOptions force;  // force mode only
+  // Force mode's optional load-cell feedback (backends.load_cell; the loader sets has_load_cell).
+  bool has_load_cell = false;
+  ForceScaleSettings load_cell;
   model::DamperModel damper;
   model::CurrentScheduleTable schedule;
   model::CompensatorLimits limits;
@@ -65,6 +69,16 @@ class ControlLaw {
   const Observation& observe(const model::Measurement& m);
   // After observe(), this period's command; `demand` [N] is force mode's (ignored in table4).
   Command command(double demand = 0.0);
+  // Force mode with a load cell, after observe() and only while the law drives the coil: this
+  // period's load cell against this period's estimate moves the observer's yield scale, which
+  // the command's inverse then uses (ForceScaleCorrection). kWaiting without a load cell.
+  ScaleUpdate correct_force_scale(LoadCellStatus status, double measured);
+  // The model's yield force scale now: 1 without a load cell.
+  [[nodiscard]] double force_scale() const { return observer_.yield_scale(); }
+  // Null without a load cell.
+  [[nodiscard]] const ForceScaleCorrection* force_scale_correction() const {
+    return correction_ ? &*correction_ : nullptr;
+  }
   void hold(double current) {
     compensator_.reset(current);
     uncompensated_.reset(current);
@@ -82,6 +96,7 @@ class ControlLaw {
   model::HysteresisCompensator compensator_;
   model::SlewLimiter uncompensated_;
   std::optional<model::ForceInverse> force_;  // force mode only
+  std::optional<ForceScaleCorrection> correction_;  // force mode with a load cell only
   bool compensate_;
   Observation observation_;
 };

@@ -39,6 +39,9 @@ ControlLoop::ControlLoop(const control::ControlLawConfig& law, const control::Su
   if (law.mode == control::ControlMode::kForce && hal_.demand == nullptr) {
     throw std::invalid_argument("control.mode = \"force\" needs a demand source");
   }
+  if (law.mode == control::ControlMode::kForce && law.has_load_cell && hal_.load_cell == nullptr) {
+    throw std::invalid_argument("the load-cell correction needs a load-cell source");
+  }
   law_.hold(fail_safe_current_);
 }
 
@@ -61,6 +64,16 @@ bool ControlLoop::readback_lost(const std::optional<hal::CurrentReading>& measur
   return require_readback_ && now - started_ > readback_timeout_;
 }
 
+control::LoadCellStatus ControlLoop::read_load_cell(double& newtons) {
+  if (hal_.load_cell == nullptr) return control::LoadCellStatus::kNone;
+  const std::optional<hal::LoadCellSample> s = hal_.load_cell->latest_load_cell();
+  if (!s || s->sequence == load_cell_sequence_) return control::LoadCellStatus::kNone;
+  load_cell_sequence_ = s->sequence;
+  if (!s->usable() || !std::isfinite(s->value)) return control::LoadCellStatus::kBad;
+  newtons = s->value;
+  return control::LoadCellStatus::kFresh;
+}
+
 const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
   const std::uint32_t skipped = skipped_periods(now);
   overruns_ += skipped;
@@ -72,6 +85,8 @@ const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
   const bool force_mode = law_.mode() == control::ControlMode::kForce;
   const control::SampleCheck demand_check =
       force_mode ? demand_checker_.check(hal_.demand->latest_demand(), now) : control::SampleCheck::kFresh;
+  double load_cell_force = 0.0;
+  const control::LoadCellStatus load_cell = read_load_cell(load_cell_force);
   const std::optional<bool> fault = hal_.lines.driver_fault();
   const std::optional<hal::CurrentReading> measured = hal_.driver.measured();
   double coil = last_setpoint_;
@@ -111,6 +126,8 @@ const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
   // Force mode's demand: the last good one, held while demands are missing or bad.
   const double demand = force_mode ? demand_checker_.held_value() : kNotComputed;
   if (d.in_control) {
+    // The load cell corrects the model's yield force scale only while the law drives the coil.
+    law_.correct_force_scale(load_cell, load_cell_force);
     command = law_.command(demand);
     if (!std::isfinite(command.current)) d = supervisor_.veto(control::Trigger::kCommandNotFinite, now);
   }
@@ -121,6 +138,12 @@ const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
   write_outputs(d, setpoint);
 
   // 7. Telemetry.
+  const control::ForceScaleCorrection* correction = law_.force_scale_correction();
+  const auto load_cell_frozen = [&] {
+    if (correction == nullptr) return std::uint32_t{0};
+    const std::uint64_t n = correction->stale_periods() + correction->bad_samples();
+    return static_cast<std::uint32_t>(std::min<std::uint64_t>(n, std::numeric_limits<std::uint32_t>::max()));
+  };
   record_ = runtime::TelemetryRecord{cycles_,
                             now,
                             checker_.held_value(),
@@ -143,7 +166,10 @@ const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
                             command.yield_force,
                             static_cast<std::uint8_t>(demand_check),
                             command.clipped,
-                            command.reached};
+                            command.reached,
+                            force_mode ? law_.force_scale() : kNotComputed,
+                            load_cell_frozen(),
+                            d.in_control && correction != nullptr && correction->reached_bound()};
   if (telemetry_ != nullptr && cycles_ % decimation_ == 0) telemetry_->offer(record_);
   ++cycles_;
   return record_;

@@ -29,7 +29,8 @@ namespace mrd::firmware {
 class ControlLoop {
  public:
   // The period is the control law's sample period. `telemetry` may be null (no telemetry).
-  // Force mode needs `devices.demand` (std::invalid_argument without it).
+  // Force mode needs `devices.demand`, and its load-cell correction `devices.load_cell`
+  // (std::invalid_argument without them).
   ControlLoop(const control::ControlLawConfig& law, const control::SupervisorConfig& safety, HalDevices devices,
               runtime::TelemetryQueue* telemetry = nullptr, int telemetry_decimation = 1);
 
@@ -52,6 +53,9 @@ class ControlLoop {
 
  private:
   std::uint32_t skipped_periods(hal::Timestamp now) const;
+  // Force mode's load cell this period: nothing new (also a repeated sample), a fresh usable
+  // one (its value in `newtons`), or a bad one.
+  control::LoadCellStatus read_load_cell(double& newtons);
   [[nodiscard]] bool readback_lost(const std::optional<hal::CurrentReading>& measured, hal::Timestamp now);
   void write_outputs(const control::SupervisorDecision& d, double setpoint);
 
@@ -59,6 +63,7 @@ class ControlLoop {
   control::Supervisor supervisor_;
   control::SampleChecker checker_;
   control::DemandChecker demand_checker_;
+  std::optional<std::uint32_t> load_cell_sequence_;  // the last load-cell sample's
   HalDevices hal_;
   runtime::TelemetryQueue* telemetry_;
   std::uint64_t decimation_;

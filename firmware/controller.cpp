@@ -1,6 +1,7 @@
 #include "firmware/controller.hpp"
 
 #include <chrono>
+#include <cstdio>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -49,10 +50,21 @@ runtime::ServiceStatus service_status(const config::ControllerConfig& config, co
 
 // The transitions the loop published since the last call, into the journal (main thread).
 void log_transitions(runtime::SupervisorFeed& feed, const runtime::Journal& journal, hal::Timestamp start,
-                     std::uint64_t& lost_logged) {
+                     std::uint64_t& lost_logged, std::uint64_t& bounds_logged) {
   feed.drain([&](const runtime::SupervisorEvent& e) {
     journal.write(runtime::transition_priority(e), runtime::format_transition(e, start));
   });
+  // A scale at its bound means the model's yield force is off by more than the correction may
+  // take up: worth an engineer's look (identify the model again), not a fault.
+  if (const std::uint64_t hits = feed.force_scale_bound_hits(); hits > bounds_logged) {
+    char line[160];
+    std::snprintf(line, sizeof line,
+                  "force mode: the load-cell correction's yield force scale reached its bound (%.3f); "
+                  "force.load_cell.max_correction limits it",
+                  feed.force_scale_at_bound());
+    journal.write(runtime::Priority::kWarning, line);
+    bounds_logged = hits;
+  }
   if (const std::uint64_t lost = feed.lost(); lost > lost_logged) {
     journal.write(runtime::Priority::kWarning,
                   "supervisor: " + std::to_string(lost - lost_logged) + " transitions not logged (the feed was full)");
@@ -100,7 +112,10 @@ int run_controller(const config::ControllerConfig& config, const RunOptions& opt
   };
 
   const std::string mode = config.backends.demand
-                               ? ", force mode, demand=" + std::string(to_string(*config.backends.demand))
+                               ? ", force mode, demand=" + std::string(to_string(*config.backends.demand)) +
+                                     (config.backends.load_cell
+                                          ? ", load_cell=" + std::string(to_string(*config.backends.load_cell))
+                                          : std::string())
                                : std::string();
   std::fprintf(out, "mrd-controller: %.0f Hz, lvdt=%s driver=%s lines=%s%s%s%s\n", config.rate,
                to_string(config.backends.lvdt).data(), to_string(config.backends.driver).data(),
@@ -111,6 +126,7 @@ int run_controller(const config::ControllerConfig& config, const RunOptions& opt
   runtime::ServiceNotifier notifier;
   const hal::Timestamp start = clock.now();
   std::uint64_t lost_logged = 0;
+  std::uint64_t bounds_logged = 0;
   const runtime::RealTimeRun run{.realtime = config.realtime,
                                  .period = config.period(),
                                  .max_cycles = static_cast<std::uint64_t>(options.duration_s * config.rate + 0.5),
@@ -138,12 +154,12 @@ int run_controller(const config::ControllerConfig& config, const RunOptions& opt
           },
       .tick =
           [&](hal::Timestamp now) {
-            log_transitions(feed, journal, start, lost_logged);
+            log_transitions(feed, journal, start, lost_logged, bounds_logged);
             notifier.tick(now, service_status(config, stats, feed));
           }};
   runtime::run_real_time(run, signals, unblock, rt, stats, cycle, hooks);
   // The loop thread has ended (joined): the final cycle's transition is in the feed.
-  log_transitions(feed, journal, start, lost_logged);
+  log_transitions(feed, journal, start, lost_logged, bounds_logged);
   const int stop_signal = signals.stop_signal.load();
   const std::string why = stop_signal != 0  ? std::string("stopped on ") + runtime::signal_name(stop_signal)
                           : signals.stop.load() ? std::string("stopped on request")

@@ -4,6 +4,7 @@
 #include "hal/demand_source.hpp"
 #include "hal/digital_lines.hpp"
 #include "hal/displacement_source.hpp"
+#include "hal/load_cell_source.hpp"
 
 namespace mrd::firmware {
 
@@ -13,6 +14,7 @@ struct HalDevices {
   hal::CurrentDriver& driver;
   hal::DigitalLines& lines;
   hal::DemandSource* demand = nullptr;  // the force demand; force mode needs it, table4 reads none
+  hal::LoadCellSource* load_cell = nullptr;  // force mode's optional load cell
 };
 
 }  // namespace mrd::firmware

@@ -69,6 +69,10 @@ HalSet::HalSet(const config::ControllerConfig& config, const hal::Clock& clock) 
   if (b.demand) {
     demand_ = choose<hal::DemandSource>(*b.demand, mock_ ? &mock_->demand : nullptr, modbus_.get(), can_.get());
   }
+  if (b.load_cell) {
+    load_cell_ =
+        choose<hal::LoadCellSource>(*b.load_cell, mock_ ? &mock_->load_cell : nullptr, modbus_.get(), can_.get());
+  }
   lines_ = gpio_ ? static_cast<hal::DigitalLines*>(gpio_.get()) : &mock_->lines;
   if (b.driver == config::DeviceBackend::kCan) {
     can_enable_ = std::make_unique<CanEnableLines>(*lines_, *can_);

@@ -29,7 +29,7 @@ class HalSet {
   [[nodiscard]] hal::StartResult start();
   void stop();
 
-  [[nodiscard]] HalDevices devices() { return {*lvdt_, *driver_, *lines_, demand_}; }
+  [[nodiscard]] HalDevices devices() { return {*lvdt_, *driver_, *lines_, demand_, load_cell_}; }
   [[nodiscard]] hal::mock::MockHal* mock() { return mock_.get(); }
   // The bus back ends' I/O threads (after start()), for the real-time set-up.
   [[nodiscard]] std::vector<hal::IoThread*> io_threads();
@@ -48,6 +48,7 @@ class HalSet {
   hal::CurrentDriver* driver_ = nullptr;
   hal::DigitalLines* lines_ = nullptr;
   hal::DemandSource* demand_ = nullptr;  // force mode only
+  hal::LoadCellSource* load_cell_ = nullptr;  // force mode with backends.load_cell only
 };
 
 }  // namespace mrd::firmware

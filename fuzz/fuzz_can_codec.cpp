@@ -1,6 +1,7 @@
 // libFuzzer target: the CAN frame decoder (hal/can/can_codec), rolling counter and CRC-8
 // included. The input is a stream of frames as a receiver would see them: per frame one
-// header byte (bits 0-1: LVDT, command, feedback or force demand decoder; bits 2-5: DLC 0-15; bit 6: a
+// header byte (bits 0-1: LVDT, command, feedback or a 4-byte force frame decoder, bit 7 then picking
+// Load_Cell over Force_Demand; bits 2-5: DLC 0-15; bit 6: a
 // foreign id) and then DLC payload bytes. Each decoder keeps its own counter check across the
 // stream. A frame that carries values must be 8 bytes with a good checksum, its values finite,
 // and encoding them again must give back the same payload.
@@ -56,6 +57,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   RollingCounterCheck command_counter;
   RollingCounterCheck feedback_counter;
   RollingCounterCheck demand_counter;
+  RollingCounterCheck load_cell_counter;
   std::span<const std::uint8_t> rest(data, size);
   while (!rest.empty()) {
     const std::uint8_t header = rest[0];
@@ -78,8 +80,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                     foreign, 2, 2, &CurrentFeedbackFrame::measured);
         break;
       default:
-        check_frame(decode_demand, encode_demand, kDefaultDemandId, demand_counter, payload, foreign, 4, 4,
-                    &ForceDemandFrame::demand);
+        // Bit 7 picks the load cell's frame among the 4-byte force frames (the corpus's old
+        // inputs keep their meaning: the demand).
+        if ((header & 0x80) != 0) {
+          check_frame(decode_load_cell, encode_load_cell, kDefaultLoadCellId, load_cell_counter, payload, foreign, 4,
+                      4, &LoadCellFrame::force);
+        } else {
+          check_frame(decode_demand, encode_demand, kDefaultDemandId, demand_counter, payload, foreign, 4, 4,
+                      &ForceDemandFrame::demand);
+        }
         break;
     }
   }

@@ -18,21 +18,24 @@ ForceInverse::ForceInverse(const Observer& observer, const CompensatorLimits& li
       max_yield_stress_(yield_stress_(compensator_.target().B(limits.max_current))),
       invert_coil_lag_(options.invert_coil_lag) {}
 
-double ForceInverse::aimed_yield_stress(const ForceDemand& demand, bool& clipped) const {
+double ForceInverse::aimed_yield_stress(const ForceDemand& demand, double scale, bool& clipped) const {
   if (!std::isfinite(demand.force) || !std::isfinite(demand.velocity)) {
     clipped = true;  // the safe answer to a bad demand: the least force
     return min_yield_stress_;
   }
-  // Negative where the demand pushes with the motion or asks less than c0 v (Eq. 11-12).
-  const double needed = damper_.yield_stress_for(demand.force, demand.velocity);
+  // Negative where the demand pushes with the motion or asks less than c0 v (Eq. 11-12). The
+  // observer's yield scale multiplies Eq. 13's stress, so the model's stress is the needed one
+  // divided by it.
+  const double needed = damper_.yield_stress_for(demand.force, demand.velocity) / scale;
   clipped = !(needed >= min_yield_stress_ && needed <= max_yield_stress_);
   return std::fmin(std::fmax(needed, min_yield_stress_), max_yield_stress_);
 }
 
 ForceCommand ForceInverse::step(const ForceDemand& demand, const Observer& observer) {
   ForceCommand out;
-  const double tau = aimed_yield_stress(demand, out.clipped);
-  out.yield_force = damper_.yield_force(tau);
+  const double scale = observer.yield_scale();
+  const double tau = aimed_yield_stress(demand, scale, out.clipped);
+  out.yield_force = damper_.yield_force(tau * scale);
   // Eq. 13 gives |B|; the polarity the core already has is the one nearer.
   const JilesAtherton& core = observer.magnetics();
   out.target_B = std::copysign(yield_stress_.induction(tau), core.B());

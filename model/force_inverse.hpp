@@ -19,7 +19,7 @@ struct ForceDemand {
 struct ForceCommand {
   double current = 0.0;      // to the driver [A]
   double target_B = 0.0;     // the gap induction aimed at [T]
-  double yield_force = 0.0;  // 3 Ap L / hd tau_y at target_B [N] (Eq. 12)
+  double yield_force = 0.0;  // 3 Ap L / hd tau_y at target_B [N] (Eq. 12), times the observer's yield scale
   // The demand was not one the damper can give at this velocity (it pushed with the motion,
   // asked for less than the zero-field force or more than the maximum current's, or was not
   // finite), so the nearest one was aimed at: the least force for the first three.
@@ -50,16 +50,17 @@ class ForceInverse {
   // from it.
   void hold(double current) { driver_.reset(current); }
 
-  // The yield force at the maximum current on the anhysteretic curve [N]: demands beyond it
-  // are clipped.
+  // The yield force at the maximum current on the anhysteretic curve [N], of the model without
+  // the observer's yield scale: demands beyond it times the scale are clipped.
   [[nodiscard]] double max_yield_force() const { return damper_.yield_force(max_yield_stress_); }
   [[nodiscard]] double last_command() const { return driver_.value(); }
   // Trial integrations of Eq. 10 in the last step (at most 2 + max_iterations).
   [[nodiscard]] int last_evaluations() const { return evaluations_; }
 
  private:
-  // The yield stress to aim at [Pa], within what the fluid can give; sets `clipped`.
-  double aimed_yield_stress(const ForceDemand& demand, bool& clipped) const;
+  // The model's yield stress to aim at [Pa] (before the observer's yield `scale`), within what
+  // the fluid can give; sets `clipped`.
+  double aimed_yield_stress(const ForceDemand& demand, double scale, bool& clipped) const;
 
   YieldStress yield_stress_;
   BinghamDamper damper_;

@@ -42,7 +42,7 @@ PredictedMotion Observer::track(const Measurement& m) {
 
 ObserverEstimate Observer::base_force(double velocity, double B) {
   estimate_.B = B;
-  estimate_.yield_stress = yield_stress_(B);
+  estimate_.yield_stress = yield_stress_(B) * yield_scale_;
   estimate_.velocity = velocity;
   estimate_.force = damper_.force(velocity, estimate_.yield_stress);
   return estimate_;
@@ -50,7 +50,7 @@ ObserverEstimate Observer::base_force(double velocity, double B) {
 
 ObserverEstimate Observer::force_with_effects(const PredictedMotion& now, double B, double coil_current) {
   estimate_.B = B;
-  estimate_.yield_stress = yield_stress_(estimate_.B) * effects_.yield_factor();
+  estimate_.yield_stress = yield_stress_(estimate_.B) * effects_.yield_factor() * yield_scale_;
   estimate_.velocity = now.velocity;
   const double fluid =
       effects_.fluid_force(damper_, estimate_.yield_stress, now.velocity) * effects_.force_factor(now.displacement);

@@ -61,6 +61,11 @@ class Observer {
 
   // A measured fluid temperature [degC] for the effects that use one (NaN: back to their model).
   void set_measured_temperature(double celsius) { effects_.set_measured_temperature(celsius); }
+  // A factor on the yield stress of Eq. 13 (so on the yield force of Eq. 12), 1 by default:
+  // force mode's load-cell correction of a drifting model (control::ForceScaleCorrection). The
+  // force inverse reads it from here, so the law and the estimate agree.
+  void set_yield_scale(double scale) { yield_scale_ = scale; }
+  [[nodiscard]] double yield_scale() const { return yield_scale_; }
 
   [[nodiscard]] const JilesAtherton& magnetics() const { return magnetics_; }
   [[nodiscard]] const ObserverEstimate& estimate() const { return estimate_; }
@@ -85,6 +90,7 @@ class Observer {
   VelocityFilter velocity_filter_;
   EffectChain effects_;
   ObserverEstimate estimate_;
+  double yield_scale_ = 1.0;
 };
 
 }  // namespace mrd::model

@@ -23,8 +23,10 @@ namespace {
   "enable,latched,recoveries"
 constexpr const char* kHeader = MRD_TELEMETRY_COLUMNS "\n";
 // Force mode: the demand the law used, Eq. 12's yield force at its target, the demand's check,
-// and the inverse's flags (docs/FORCE-CONTROL.md).
-constexpr const char* kForceHeader = MRD_TELEMETRY_COLUMNS ",demand_N,yield_force_N,demand,clipped,reached\n";
+// the inverse's flags, the load-cell correction's scale and its frozen periods
+// (docs/FORCE-CONTROL.md).
+constexpr const char* kForceHeader =
+    MRD_TELEMETRY_COLUMNS ",demand_N,yield_force_N,demand,clipped,reached,force_scale,load_cell_frozen\n";
 #undef MRD_TELEMETRY_COLUMNS
 
 // The force columns after the line `format` wrote (its '\n' replaced).
@@ -32,9 +34,9 @@ int append_force_columns(const TelemetryRecord& r, char* buf, std::size_t size, 
   if (length <= 0 || static_cast<std::size_t>(length) >= size) return length;
   const auto check = to_string(static_cast<control::SampleCheck>(r.demand_check));
   const int more = std::snprintf(buf + length - 1, size - static_cast<std::size_t>(length) + 1,
-                                 ",%.6g,%.6g,%.*s,%d,%d\n", r.demand, r.yield_force,
+                                 ",%.6g,%.6g,%.*s,%d,%d,%.6g,%u\n", r.demand, r.yield_force,
                                  static_cast<int>(check.size()), check.data(), r.clipped ? 1 : 0,
-                                 r.reached ? 1 : 0);
+                                 r.reached ? 1 : 0, r.force_scale, static_cast<unsigned>(r.load_cell_frozen));
   return more < 0 ? more : length - 1 + more;
 }
 }  // namespace

@@ -38,6 +38,10 @@ class SupervisorFeed {
       if (!ring_.push(SupervisorEvent{r.cycle, r.time, last_, to, why})) lost_.add();
     }
     last_ = to;
+    if (r.force_scale_at_bound) {
+      scale_at_bound_.store(r.force_scale, std::memory_order_relaxed);
+      scale_bound_hits_.add();
+    }
     state_.store(r.state, std::memory_order_release);
     latched_.store(r.latched, std::memory_order_release);
   }
@@ -48,6 +52,10 @@ class SupervisorFeed {
   }
   // Any thread: whether that state is a SAFE only an operator's clear (SIGUSR2) ends.
   [[nodiscard]] bool latched() const { return latched_.load(std::memory_order_acquire); }
+  // Any thread: how often force mode's load-cell correction took the scale onto a bound, and
+  // the scale it was held at the last time (for the journal line).
+  [[nodiscard]] std::uint64_t force_scale_bound_hits() const { return scale_bound_hits_.get(); }
+  [[nodiscard]] double force_scale_at_bound() const { return scale_at_bound_.load(std::memory_order_relaxed); }
   // Any thread: transitions the ring had no room for.
   [[nodiscard]] std::uint64_t lost() const { return lost_.get(); }
 
@@ -63,6 +71,8 @@ class SupervisorFeed {
   std::atomic<bool> latched_{false};
   control::SupervisorState last_ = control::SupervisorState::kInit;  // loop thread only
   SingleWriterCounter lost_;
+  SingleWriterCounter scale_bound_hits_;
+  std::atomic<double> scale_at_bound_{1.0};
 };
 
 }  // namespace mrd::runtime

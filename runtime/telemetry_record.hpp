@@ -32,6 +32,9 @@ struct TelemetryRecord {
   std::uint8_t demand_check = 0;   // SampleCheck of this period's demand
   bool clipped = false;            // the demand pushed with the motion or lay beyond the range
   bool reached = false;            // the inverse's J-A search met its tolerance
+  double force_scale = 0.0;        // the model's yield force scale (1 without a load cell)
+  std::uint32_t load_cell_frozen = 0;  // periods the load cell was stale or bad so far (saturates)
+  bool force_scale_at_bound = false;   // the scale reached a bound this period (journaled)
 };
 
 }  // namespace mrd::runtime

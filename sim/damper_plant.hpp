@@ -51,6 +51,9 @@ class DamperPlant {
   PlantReading step(double displacement, double velocity, double coil_current);
 
   [[nodiscard]] const model::Observer& physics() const { return physics_; }
+  // A fluid temperature [degC] imposed on the physics' temperature-dependent effects (a drift
+  // scripted by a run rather than heated into the fluid); NaN returns to their own model.
+  void set_fluid_temperature(double celsius) { physics_.set_measured_temperature(celsius); }
 
  private:
   // The physics without the sensor: the delay is the LVDT's, applied to its reading.

@@ -5,6 +5,7 @@
 // inverted. The controller's model is identified from noisy simulated measurements (default),
 // the plant's own (matched) or a documented perturbation of it (docs/FORCE-CONTROL.md).
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -38,6 +39,7 @@ mrd::tools::Json to_json(const CaseRun& run, std::string_view profile_name, cons
   j["profile"] = std::string(profile_name);
   j["profile_description"] = profile.description;
   j["coil_lag_ms"] = coil_lag_ms;
+  j["yield_drift_pct"] = 100.0 * (run.result.plant_yield_factor.empty() ? 0.0 : 1.0 - run.result.plant_yield_factor.back());
   j["desired_rms_N"] = run.result.desired_rms;
   j["reachable_fraction"] = run.result.reachable_fraction;
   j["strategies"] = mrd::tools::Json::array();
@@ -46,6 +48,7 @@ mrd::tools::Json to_json(const CaseRun& run, std::string_view profile_name, cons
                                {"rms_error_N", s.rms_error},
                                {"max_error_N", s.max_error},
                                {"rms_error_reachable_N", s.rms_error_reachable}});
+    if (!s.yield_scale.empty()) j["load_cell_final_scale"] = s.yield_scale.back();
   }
   j["notes"] = run.notes;
   return j;
@@ -57,12 +60,18 @@ bool write_trace(const std::string& path, const DemandProfile& profile, const Fo
   for (const auto& s : r.strategies) {
     const std::string name(mrd::tools::strategy_name(s.kind));
     out << ',' << name << "_kN," << name << "_A";
+    if (!s.yield_scale.empty()) out << ',' << name << "_scale";
   }
+  if (!r.plant_yield_factor.empty()) out << ",plant_yield_factor";
   out << '\n';
   for (std::size_t i = 0; i < profile.size(); ++i) {
     out << static_cast<double>(i) * profile.sample_period << ',' << profile.displacement[i] * 1e3 << ','
         << profile.velocity[i] * 1e3 << ',' << profile.force[i] * 1e-3;
-    for (const auto& s : r.strategies) out << ',' << s.delivered[i] * 1e-3 << ',' << s.current[i];
+    for (const auto& s : r.strategies) {
+      out << ',' << s.delivered[i] * 1e-3 << ',' << s.current[i];
+      if (!s.yield_scale.empty()) out << ',' << s.yield_scale[i];
+    }
+    if (!r.plant_yield_factor.empty()) out << ',' << r.plant_yield_factor[i];
     out << '\n';
   }
   return static_cast<bool>(out);
@@ -94,6 +103,23 @@ std::string plot_script(const std::string& csv, const std::string& png, const st
   return s + "unset multiplot\n";
 }
 
+// With --load-cell: inverse_ja's error and inverse_ja_load_cell's over the whole run, and the
+// correction's scale against the plant's drifting yield factor (columns as write_trace lays them
+// out: inverse_ja is the third strategy, inverse_ja_load_cell the fifth with its scale after).
+std::string load_cell_plot_script(const std::string& csv, const std::string& png, const std::string& title,
+                                  bool drifting) {
+  std::string s = "set terminal pngcairo size 1200,850 font ',10'\nset output '" + png +
+                  "'\nset datafile separator ','\nset grid\nset key left bottom\n"
+                  "set multiplot layout 2,1 title '" + title + "'\nset xlabel 'time [s]'\n";
+  s += "set ylabel 'delivered - desired [kN]'\nset title 'force error'\n"
+       "plot '" + csv + "' every ::1 using 1:($9-$4) with lines lc rgb '#d62728' title 'inverse\\_ja', "
+       "'' every ::1 using 1:($13-$4) with lines lc rgb '#1f77b4' title 'inverse\\_ja\\_load\\_cell'\n";
+  s += "set ylabel 'yield scale [-]'\nset title 'the model yield force scale'\nplot '" + csv +
+       "' every ::1 using 1:15 with lines lw 2 lc rgb '#1f77b4' title 'load-cell correction'";
+  if (drifting) s += ", '' every ::1 using 1:16 with lines lw 2 lc rgb '#888888' title 'plant yield stress / model'";
+  return s + "\nunset multiplot\n";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -107,6 +133,9 @@ int main(int argc, char** argv) {
   double force_noise = 50.0;
   double lqr_force_weight = mrd::tools::LqrWeights{}.force_weight;
   double pga_g = 0.3;
+  double drift_pct = 0.0;
+  bool load_cell = false;
+  double load_cell_tau = mrd::control::ForceScaleSettings{}.time_constant;
   std::string json_path, out_dir;
   bool no_plot = false;
   app.add_option("--profile", profile_choice, "desired-force profile")
@@ -126,6 +155,12 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1e-6, 1e6))->capture_default_str();
   app.add_option("--pga-g", pga_g, "structure profile: peak ground acceleration [g]")
       ->check(CLI::Range(0.01, 2.0))->capture_default_str();
+  app.add_option("--drift", drift_pct, "the plant's yield stress falls by PCT % over the run, as the fluid heats")
+      ->check(CLI::Range(0.0, 60.0))->capture_default_str();
+  app.add_flag("--load-cell", load_cell, "add inverse_ja_load_cell: inverse_ja with the load-cell correction of "
+                                         "its model's yield force");
+  app.add_option("--load-cell-tau", load_cell_tau, "the correction's time constant [s]")
+      ->check(CLI::Range(0.01, 1000.0))->capture_default_str();
   app.add_option("--json", json_path, "write the figures as JSON to FILE");
   app.add_option("--out", out_dir, "folder for the CSV trace and the PNG plots (none without it)");
   app.add_flag("--no-plot", no_plot, "with --out, skip the PNGs");
@@ -162,6 +197,9 @@ int main(int argc, char** argv) {
   options.limits = limits;
   options.force_noise_rms = force_noise;
   options.seed = static_cast<unsigned>(seed);
+  options.yield_drift = drift_pct / 100.0;
+  options.load_cell = load_cell;
+  options.load_cell_settings.time_constant = load_cell_tau;
   std::vector<CaseRun> runs;
   for (const std::string& name : cases) {
     CaseRun run;
@@ -222,7 +260,10 @@ int main(int argc, char** argv) {
       return mrd::cli::kIo;
     }
     for (const auto& run : runs) {
-      const std::string stem = out_dir + "/force_run_" + std::string(mrd::tools::profile_name(profile_kind)) + "_" + run.name;
+      // A drifting plant's files apart from the steady plant's.
+      const std::string drift = drift_pct > 0.0 ? "_drift" + std::to_string(static_cast<int>(std::lround(drift_pct))) : "";
+      const std::string stem =
+          out_dir + "/force_run_" + std::string(mrd::tools::profile_name(profile_kind)) + "_" + run.name + drift;
       if (!write_trace(stem + ".csv", profile, run.result)) {
         std::fprintf(stderr, "mrd-force-run: cannot write %s.csv\n", stem.c_str());
         return mrd::cli::kIo;
@@ -232,6 +273,17 @@ int main(int argc, char** argv) {
       const std::string title = run.name + " model, " + std::string(mrd::tools::profile_name(profile_kind)) + " profile" +
                                 (coil_lag_ms > 0.0 ? ", coil lag " + std::to_string(coil_lag_ms).substr(0, 4) + " ms" : "");
       const double from = std::min(2.0, duration - 1.0), to = std::min(from + 6.0, duration);
+      if (load_cell) {
+        const std::string png = stem + "_load_cell.png";
+        const std::string error = mrd::tools::run_gnuplot(
+            load_cell_plot_script(stem + ".csv", png, title + ", yield drift " + std::to_string(drift_pct).substr(0, 4) + " %",
+                                  drift_pct > 0.0));
+        if (error.empty()) {
+          std::printf("wrote %s\n", png.c_str());
+        } else {
+          std::fprintf(stderr, "mrd-force-run: no plot: %s\n", error.c_str());
+        }
+      }
       for (const bool against_time : {true, false}) {
         const std::string png = stem + (against_time ? "_force_time.png" : "_force_velocity.png");
         const std::string error =

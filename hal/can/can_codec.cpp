@@ -56,7 +56,7 @@ EncodeStatus write_le(double si, double unit, Frame& f) {
 
 // Every frame is {scaled integer in bytes 0.., a flag bit, the counter}; only the integer's
 // width, its unit and the flag's byte differ. Out is LvdtFrame, CurrentCommandFrame or
-// CurrentFeedbackFrame or ForceDemandFrame, all {double, bool, counter}.
+// CurrentFeedbackFrame, ForceDemandFrame or LoadCellFrame, all {double, bool, counter}.
 template <typename Int, typename Out>
 Decoded<Out> decode_payload(std::uint32_t id, std::span<const std::uint8_t> data,
                             std::uint32_t expected_id, RollingCounterCheck* counter, double unit,
@@ -141,6 +141,13 @@ Decoded<ForceDemandFrame> decode_demand(std::uint32_t id, std::span<const std::u
                                                         kLvdtFlagByte);
 }
 
+// Laid out as Force_Demand: a force at 0.1 N in bytes 0-3, the flag in byte 4.
+Decoded<LoadCellFrame> decode_load_cell(std::uint32_t id, std::span<const std::uint8_t> data,
+                                        std::uint32_t expected_id, RollingCounterCheck* counter) {
+  return decode_payload<std::int32_t, LoadCellFrame>(id, data, expected_id, counter, kNewtonsPerCount,
+                                                     kLvdtFlagByte);
+}
+
 Encoded encode_lvdt(std::uint32_t id, const LvdtFrame& f) {
   return encode_payload<std::int32_t>(id, f.displacement, f.sensor_fault, f.counter,
                                       kMetresPerCount, kLvdtFlagByte);
@@ -158,6 +165,10 @@ Encoded encode_feedback(std::uint32_t id, const CurrentFeedbackFrame& f) {
 
 Encoded encode_demand(std::uint32_t id, const ForceDemandFrame& f) {
   return encode_payload<std::int32_t>(id, f.demand, f.invalid, f.counter, kNewtonsPerCount, kLvdtFlagByte);
+}
+
+Encoded encode_load_cell(std::uint32_t id, const LoadCellFrame& f) {
+  return encode_payload<std::int32_t>(id, f.force, f.invalid, f.counter, kNewtonsPerCount, kLvdtFlagByte);
 }
 
 }  // namespace mrd::hal::can

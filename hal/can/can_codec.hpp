@@ -16,6 +16,7 @@ inline constexpr std::uint32_t kDefaultLvdtId = 0x110;
 inline constexpr std::uint32_t kDefaultCommandId = 0x210;
 inline constexpr std::uint32_t kDefaultFeedbackId = 0x211;
 inline constexpr std::uint32_t kDefaultDemandId = 0x120;  // force mode's demand
+inline constexpr std::uint32_t kDefaultLoadCellId = 0x130;  // force mode's optional measured force
 inline constexpr std::size_t kFrameLength = 8;
 
 // CRC-8 SAE J1850: polynomial 0x1D, init 0xFF, no reflection, final XOR 0xFF.
@@ -74,6 +75,14 @@ struct ForceDemandFrame {
   std::uint8_t counter = 0;
 };
 
+// Force mode's optional load cell: the damper force it measures (docs/FORCE-CONTROL.md,
+// "Load-cell feedback").
+struct LoadCellFrame {
+  double force = 0.0;    // N (the wire carries 0.1 N)
+  bool invalid = false;  // the load cell's amplifier says its value is unusable
+  std::uint8_t counter = 0;
+};
+
 template <typename T>
 struct Decoded {
   DecodeStatus status = DecodeStatus::kOk;
@@ -95,6 +104,8 @@ struct Decoded {
                                                             RollingCounterCheck* counter);
 [[nodiscard]] Decoded<ForceDemandFrame> decode_demand(std::uint32_t id, std::span<const std::uint8_t> data,
                                                       std::uint32_t expected_id, RollingCounterCheck* counter);
+[[nodiscard]] Decoded<LoadCellFrame> decode_load_cell(std::uint32_t id, std::span<const std::uint8_t> data,
+                                                      std::uint32_t expected_id, RollingCounterCheck* counter);
 
 enum class EncodeStatus : std::uint8_t { kOk, kNotFinite, kOutOfRange };
 struct Encoded {
@@ -106,5 +117,6 @@ struct Encoded {
 [[nodiscard]] Encoded encode_command(std::uint32_t id, const CurrentCommandFrame& f);
 [[nodiscard]] Encoded encode_feedback(std::uint32_t id, const CurrentFeedbackFrame& f);
 [[nodiscard]] Encoded encode_demand(std::uint32_t id, const ForceDemandFrame& f);
+[[nodiscard]] Encoded encode_load_cell(std::uint32_t id, const LoadCellFrame& f);
 
 }  // namespace mrd::hal::can

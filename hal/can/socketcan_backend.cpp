@@ -34,6 +34,7 @@ std::string_view to_string(CanEvent e) {
     case CanEvent::kLvdtFrames: return "lvdt_frames";
     case CanEvent::kFeedbackFrames: return "feedback_frames";
     case CanEvent::kDemandFrames: return "demand_frames";
+    case CanEvent::kLoadCellFrames: return "load_cell_frames";
     case CanEvent::kWrongDlc: return "wrong_dlc";
     case CanEvent::kBadChecksum: return "bad_checksum";
     case CanEvent::kRepeatedCounter: return "repeated_counter";
@@ -76,10 +77,11 @@ StartResult SocketCanBackend::start() {
   const unsigned ifindex = if_nametoindex(config_.interface.c_str());
   if (ifindex == 0) return fail(where + ": no such interface");
 
-  std::array<can_filter, 3> filters{exact_filter(config_.lvdt_id, config_.extended_ids)};
+  std::array<can_filter, 4> filters{exact_filter(config_.lvdt_id, config_.extended_ids)};
   std::size_t n_filters = 1;
   if (config_.use_feedback) filters[n_filters++] = exact_filter(config_.feedback_id, config_.extended_ids);
   if (config_.use_demand) filters[n_filters++] = exact_filter(config_.demand_id, config_.extended_ids);
+  if (config_.use_load_cell) filters[n_filters++] = exact_filter(config_.load_cell_id, config_.extended_ids);
   const socklen_t filter_bytes = static_cast<socklen_t>(sizeof(can_filter) * n_filters);
   const can_err_mask_t err_mask = kSubscribedErrors;
   if (setsockopt(fd, SOL_CAN_RAW, CAN_RAW_FILTER, filters.data(), filter_bytes) != 0 ||
@@ -123,6 +125,8 @@ void SocketCanBackend::stop() {
 std::optional<DisplacementSample> SocketCanBackend::latest() { return samples_.pop_latest(); }
 
 std::optional<DemandSample> SocketCanBackend::latest_demand() { return demands_.pop_latest(); }
+
+std::optional<LoadCellSample> SocketCanBackend::latest_load_cell() { return load_cell_.pop_latest(); }
 
 std::optional<CurrentReading> SocketCanBackend::measured() { return feedback_.take(); }
 
@@ -193,6 +197,8 @@ void SocketCanBackend::on_frame(const can_frame& frame) {
     on_feedback(data, id);
   } else if (config_.use_demand && id == config_.demand_id) {
     on_demand(data, id);
+  } else if (config_.use_load_cell && id == config_.load_cell_id) {
+    on_load_cell(data, id);
   } else {
     counters_.bump(CanEvent::kUnexpectedFrames);
   }
@@ -236,6 +242,13 @@ void SocketCanBackend::on_lvdt(std::span<const std::uint8_t> data, std::uint32_t
 void SocketCanBackend::on_demand(std::span<const std::uint8_t> data, std::uint32_t id) {
   const auto d = decode_demand(id, data, config_.demand_id, &demand_counter_);
   on_value_frame(d.status, d.value.demand, d.value.invalid, CanEvent::kDemandFrames, demand_sequence_, demands_);
+}
+
+// LoadCellInvalid is the amplifier's "sensor fault": a sample the loop must not use.
+void SocketCanBackend::on_load_cell(std::span<const std::uint8_t> data, std::uint32_t id) {
+  const auto d = decode_load_cell(id, data, config_.load_cell_id, &load_cell_counter_);
+  on_value_frame(d.status, d.value.force, d.value.invalid, CanEvent::kLoadCellFrames, load_cell_sequence_,
+                 load_cell_);
 }
 
 void SocketCanBackend::on_feedback(std::span<const std::uint8_t> data, std::uint32_t id) {

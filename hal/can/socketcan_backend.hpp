@@ -16,6 +16,7 @@
 #include "hal/displacement_source.hpp"
 #include "hal/event_counters.hpp"
 #include "hal/io_thread.hpp"
+#include "hal/load_cell_source.hpp"
 #include "hal/latest_mailbox.hpp"
 #include "hal/spsc_ring.hpp"
 #include "hal/status.hpp"
@@ -26,6 +27,7 @@ enum class CanEvent : std::uint8_t {
   kLvdtFrames,           // good LVDT frames (including those after a gap)
   kFeedbackFrames,       // good current-feedback frames
   kDemandFrames,         // good Force_Demand frames (force mode; including those after a gap)
+  kLoadCellFrames,       // good Load_Cell frames (force mode's optional load cell)
   kWrongDlc,
   kBadChecksum,
   kRepeatedCounter,
@@ -49,7 +51,10 @@ using CanCounters = EventCounters<CanEvent>::Snapshot;
 // blocks in recv() with SO_RCVTIMEO, decodes our ids and the error frames, and hands samples
 // to the loop through the SPSC ring. Transmission happens on the caller's thread: one
 // non-blocking send() per setpoint, no thread hop. Bus-off handling: see BusOffPolicy.
-class SocketCanBackend final : public DisplacementSource, public CurrentDriver, public DemandSource {
+class SocketCanBackend final : public DisplacementSource,
+                               public CurrentDriver,
+                               public DemandSource,
+                               public LoadCellSource {
  public:
   SocketCanBackend(SocketCanConfig config, const Clock& clock);
   ~SocketCanBackend() override;
@@ -68,6 +73,8 @@ class SocketCanBackend final : public DisplacementSource, public CurrentDriver, 
   [[nodiscard]] std::optional<DisplacementSample> latest() override;
   // Force_Demand frames as samples in N, judged as the LVDT's are (see on_value_frame).
   [[nodiscard]] std::optional<DemandSample> latest_demand() override;
+  // Load_Cell frames (with use_load_cell) as samples in N, judged as the demand's are.
+  [[nodiscard]] std::optional<LoadCellSample> latest_load_cell() override;
   // Sends one Coil_CurrentCommand frame now. kNotConnected before start(), kTxInhibited during
   // bus-off and its hold-off, kInvalidArgument when it does not fit, kIoError if send() fails.
   IoStatus write_setpoint(double amps) override;
@@ -89,6 +96,7 @@ class SocketCanBackend final : public DisplacementSource, public CurrentDriver, 
   void on_lvdt(std::span<const std::uint8_t> data, std::uint32_t id);
   void on_feedback(std::span<const std::uint8_t> data, std::uint32_t id);
   void on_demand(std::span<const std::uint8_t> data, std::uint32_t id);
+  void on_load_cell(std::span<const std::uint8_t> data, std::uint32_t id);
   // The one reaction of the sample channels (LVDT, demand) to a decoded frame.
   void on_value_frame(DecodeStatus status, double value, bool fault, CanEvent good,
                       std::uint32_t& sequence, SpscRing<Sample, 64>& ring);
@@ -103,14 +111,17 @@ class SocketCanBackend final : public DisplacementSource, public CurrentDriver, 
   RollingCounterCheck lvdt_counter_;
   RollingCounterCheck feedback_counter_;
   RollingCounterCheck demand_counter_;
+  RollingCounterCheck load_cell_counter_;
   std::uint32_t sequence_ = 0;
   std::uint32_t demand_sequence_ = 0;
+  std::uint32_t load_cell_sequence_ = 0;
 
   // Loop thread only.
   std::uint8_t tx_counter_ = 0;
 
   SpscRing<DisplacementSample, 64> samples_;
   SpscRing<DemandSample, 64> demands_;
+  SpscRing<LoadCellSample, 64> load_cell_;
   LatestMailbox<CurrentReading> feedback_;
   std::atomic<int> feedback_fault_{-1};  // -1 unknown, 0 ok, 1 fault
   std::atomic<bool> enable_{false};

@@ -26,6 +26,12 @@ ValidationReport SocketCanConfig::validate() const {
     r.check(demand_id != lvdt_id && demand_id != command_id && !(use_feedback && demand_id == feedback_id),
             "demand_id", "must differ from lvdt_id, command_id and feedback_id");
   }
+  if (use_load_cell) {
+    r.check(load_cell_id <= max_id, "load_cell_id", range);
+    r.check(load_cell_id != lvdt_id && load_cell_id != command_id && !(use_feedback && load_cell_id == feedback_id) &&
+                !(use_demand && load_cell_id == demand_id),
+            "load_cell_id", "must differ from lvdt_id, command_id, feedback_id and demand_id");
+  }
   r.check(receive_timeout > 0ms, "receive_timeout", "must be > 0");
   r.check(bus_off_hold_off >= 0ms, "bus_off_hold_off", "must be >= 0");
   return r;

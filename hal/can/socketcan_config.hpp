@@ -20,6 +20,10 @@ struct SocketCanConfig {
   // backends.demand = "can" (and only then is demand_id received and checked).
   bool use_demand = false;
   std::uint32_t demand_id = kDefaultDemandId;
+  // Force mode's optional Load_Cell frame. use_load_cell is set by the loader for
+  // backends.load_cell = "can", as use_demand is.
+  bool use_load_cell = false;
+  std::uint32_t load_cell_id = kDefaultLoadCellId;
   // SO_RCVTIMEO: the receive thread's longest block, so stop() returns within it.
   std::chrono::milliseconds receive_timeout{50};
   // Listen-only time after the controller is back from bus-off (see BusOffPolicy).

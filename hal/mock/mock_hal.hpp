@@ -6,6 +6,7 @@
 #include "hal/mock/mock_demand_source.hpp"
 #include "hal/mock/mock_digital_lines.hpp"
 #include "hal/mock/mock_displacement_source.hpp"
+#include "hal/mock/mock_load_cell_source.hpp"
 
 namespace mrd::hal::mock {
 
@@ -23,6 +24,7 @@ struct MockHal {
   MockCurrentDriver driver{clock, script};
   MockDigitalLines lines{clock, script};
   MockDemandSource demand{clock, script};  // force mode
+  MockLoadCellSource load_cell{clock};     // force mode's optional load cell
 };
 
 }  // namespace mrd::hal::mock

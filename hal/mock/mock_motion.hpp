@@ -33,6 +33,9 @@ class MockMotion {
     const double w = 2.0 * std::numbers::pi * frequency_;
     hal.lvdt.set_truth(amplitude_ * std::sin(w * t) + noise);
     hal.demand.set_demand(demand_damping_ * amplitude_ * w * std::cos(w * t));
+    // The mock load cell reads the demand: a rig that delivers exactly what is asked (a number
+    // for the wiring, as the demand is).
+    hal.load_cell.set_force(demand_damping_ * amplitude_ * w * std::cos(w * t));
   }
 
  private:

@@ -89,6 +89,8 @@ std::optional<DisplacementSample> ModbusBackend::latest() { return samples_.pop_
 
 std::optional<DemandSample> ModbusBackend::latest_demand() { return demands_.pop_latest(); }
 
+std::optional<LoadCellSample> ModbusBackend::latest_load_cell() { return load_cell_.pop_latest(); }
+
 IoStatus ModbusBackend::write_setpoint(double amps) {
   const EncodeResult encoded = encode_register(amps, config_.registers.setpoint);
   if (encoded.status != CodecStatus::kOk) return IoStatus::kInvalidArgument;
@@ -250,6 +252,13 @@ ModbusBackend::Outcome ModbusBackend::poll_once() {
   }
   if (map.has_demand) {
     if (const Outcome o = read_demand(); o != Outcome::kOk) return o;
+  }
+  if (map.has_load_cell) {
+    if (const Outcome o =
+            read_sample(map.load_cell_address, map.load_cell_kind, map.load_cell, load_cell_sequence_, load_cell_);
+        o != Outcome::kOk) {
+      return o;
+    }
   }
 
   if (!map.has_current_feedback) return written;

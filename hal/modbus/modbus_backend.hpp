@@ -12,6 +12,7 @@
 #include "hal/displacement_source.hpp"
 #include "hal/event_counters.hpp"
 #include "hal/io_thread.hpp"
+#include "hal/load_cell_source.hpp"
 #include "hal/latest_mailbox.hpp"
 #include "hal/modbus/modbus_config.hpp"
 #include "hal/spsc_ring.hpp"
@@ -49,7 +50,10 @@ using ModbusCounters = EventCounters<ModbusEvent>::Snapshot;
 // after a back-off that doubles from reconnect_min to reconnect_max and resets after the next
 // good transaction. A Modbus exception response is a device answer, not a link failure: it is
 // counted and the link kept. stop() returns within one response timeout.
-class ModbusBackend final : public DisplacementSource, public CurrentDriver, public DemandSource {
+class ModbusBackend final : public DisplacementSource,
+                            public CurrentDriver,
+                            public DemandSource,
+                            public LoadCellSource {
  public:
   ModbusBackend(ModbusConfig config, const Clock& clock);
   ~ModbusBackend() override;
@@ -66,6 +70,8 @@ class ModbusBackend final : public DisplacementSource, public CurrentDriver, pub
   // the outer controller stopped updating reads as fresh); with registers.demand_counter_address
   // one per poll that finds the counter changed, its sequence the counter's value.
   [[nodiscard]] std::optional<DemandSample> latest_demand() override;
+  // The load cell's registers (with registers.has_load_cell) in N, one sample per poll.
+  [[nodiscard]] std::optional<LoadCellSample> latest_load_cell() override;
   // Queues the newest setpoint for the I/O thread. kInvalidArgument when it cannot be encoded;
   // kNotConnected when queued but the link is down (it is written after reconnecting).
   IoStatus write_setpoint(double amps) override;
@@ -104,6 +110,7 @@ class ModbusBackend final : public DisplacementSource, public CurrentDriver, pub
 
   SpscRing<DisplacementSample, 64> samples_;
   SpscRing<DemandSample, 64> demands_;
+  SpscRing<LoadCellSample, 64> load_cell_;
   LatestMailbox<EncodeResult> setpoints_;
   LatestMailbox<CurrentReading> feedback_;
   std::optional<EncodeResult> pending_setpoint_;  // I/O thread only
@@ -112,6 +119,7 @@ class ModbusBackend final : public DisplacementSource, public CurrentDriver, pub
   // The counter's value at the last demand taken; kept over a reconnect, so that a demand
   // frozen across an outage is not taken as new. I/O thread only.
   std::optional<std::uint16_t> demand_counter_;
+  std::uint32_t load_cell_sequence_ = 0;          // I/O thread only
 
   std::atomic<bool> connected_{false};
   std::atomic<int> last_errno_{0};

@@ -31,6 +31,10 @@ ValidationReport RegisterMap::validate() const {
     r.check(demand_counter_address >= -1 && demand_counter_address <= kMaxAddress, "demand_counter_address",
             "must be -1 (none) or in 0..65535");
   }
+  if (has_load_cell) {
+    check_address(r, "load_cell_address", load_cell_address, load_cell);
+    r.merge(load_cell.validate(), "load_cell");
+  }
   return r;
 }
 

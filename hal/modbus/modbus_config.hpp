@@ -56,6 +56,14 @@ struct RegisterMap {
 
   [[nodiscard]] bool has_demand_counter() const { return has_demand && demand_counter_address >= 0; }
 
+  // Force mode's optional load cell [N], the force the device measures; read with the LVDT each
+  // poll. has_load_cell is set by the loader for backends.load_cell = "modbus". Input registers
+  // 4-5 by default, past the LVDT's two words and the current feedback's one.
+  bool has_load_cell = false;
+  int load_cell_address = 4;
+  RegisterKind load_cell_kind = RegisterKind::kInput;
+  RegisterFormat load_cell{RegisterType::kInt32, WordOrder::kHighFirst, ByteOrder::kNormal, 0.1, 0.0};  // 0.1 N/count
+
   [[nodiscard]] ValidationReport validate() const;
 };
 

@@ -168,6 +168,13 @@ void CanNode::send(double t, double lvdt, double coil_current, std::optional<dou
   published_[kTxErrors].store(tx_errors_, std::memory_order_relaxed);
 }
 
+void CanNode::send_load_cell(double force) {
+  if (!ids_.use_load_cell) return;
+  const auto f = hal::can::encode_load_cell(ids_.load_cell_id, {force, false, load_cell_counter_});
+  load_cell_counter_ = static_cast<std::uint8_t>((load_cell_counter_ + 1) & 0x0F);
+  if (f.status == hal::can::EncodeStatus::kOk) transmit(to_wire(f.frame, ids_.extended_ids));
+}
+
 void CanNode::run() {
   can_frame frame{};
   while (!thread_.stop_requested()) {

@@ -51,6 +51,9 @@ class CanNode {
   // `demand` [N] (none: the plant is not the outer controller) goes out as a Force_Demand
   // frame when the controller receives it (demand_frame).
   void send(double t, double lvdt, double coil_current, std::optional<double> demand, const ActiveFaults& faults);
+  // Loop side, after send(): the rig's measured force [N] as a Load_Cell frame when the
+  // controller receives one (force mode's load-cell feedback).
+  void send_load_cell(double force);
   // The newest command: setpoint [A] and DriverEnable; 0 A and off before the first.
   [[nodiscard]] double setpoint() const { return setpoint_.load(std::memory_order_relaxed); }
   [[nodiscard]] bool enabled() const { return enable_.load(std::memory_order_relaxed); }
@@ -80,6 +83,7 @@ class CanNode {
   std::uint8_t lvdt_counter_ = 0;
   std::uint8_t feedback_counter_ = 0;
   std::uint8_t demand_counter_ = 0;
+  std::uint8_t load_cell_counter_ = 0;
   double error_credit_ = 0.0;
   double last_t_ = 0.0;
   bool bus_off_sent_ = false;

@@ -103,7 +103,7 @@ hal::StartResult ModbusServer::start() {
   if (const auto report = layout_.validate(); !report.ok()) {
     return hal::StartResult::failure("modbus layout:\n" + report.to_string());
   }
-  const int registers = top_address(layout_.registers);
+  const int registers = std::max(top_address(layout_.registers), layout_.registers.load_cell_address + 2);
   map_ = modbus_mapping_new(0, 0, registers, registers);
   if (map_ == nullptr) return hal::StartResult::failure(errno_text("modbus server: no mapping"));
   std::string error;
@@ -171,6 +171,12 @@ void ModbusServer::publish(double lvdt, double coil_current, std::optional<doubl
                std::memory_order_relaxed);
 }
 
+void ModbusServer::publish_load_cell(double force) {
+  if (const auto e = encode_register(force, layout_.registers.load_cell); e.status == CodecStatus::kOk) {
+    load_cell_words_.store(pack(e), std::memory_order_relaxed);
+  }
+}
+
 ModbusServerCounters ModbusServer::counters() const {
   return {connections_.load(), requests_.load(),   answered_.load(), unanswered_.load(),
           exceptions_.load(),  setpoints_.load(), restarts_.load()};
@@ -191,6 +197,11 @@ void ModbusServer::fill_registers() {
     const std::uint64_t state = demand_state_.load(std::memory_order_relaxed);
     unpack(static_cast<std::uint32_t>(state), r.demand.type, table + r.demand_address);
     if (r.has_demand_counter()) table[r.demand_counter_address] = static_cast<std::uint16_t>(state >> 32);
+  }
+  if (r.has_load_cell) {
+    std::uint16_t* load_cell =
+        r.load_cell_kind == RegisterKind::kInput ? map_->tab_input_registers : map_->tab_registers;
+    unpack(load_cell_words_.load(std::memory_order_relaxed), r.load_cell.type, load_cell + r.load_cell_address);
   }
 }
 

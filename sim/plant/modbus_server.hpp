@@ -52,6 +52,9 @@ class ModbusServer {
   // when the controller reads them, and counts in its counter register when it has one;
   // demand_stale freezes both, demand_invalid writes the fault's value instead.
   void publish(double lvdt, double coil_current, std::optional<double> demand, const ActiveFaults& faults);
+  // Loop side: the rig's measured force [N] for the load-cell registers, when the controller
+  // reads them (force mode's load-cell feedback).
+  void publish_load_cell(double force);
   // The newest setpoint the controller wrote [A]; 0 before the first.
   [[nodiscard]] double setpoint() const { return setpoint_.load(std::memory_order_relaxed); }
   [[nodiscard]] ModbusServerCounters counters() const;
@@ -84,6 +87,7 @@ class ModbusServer {
   // The demand's words (low half) and its counter (bits 32-47) in one atomic, so that a reply
   // never pairs a new count with the value before it.
   std::atomic<std::uint64_t> demand_state_{0};
+  std::atomic<std::uint32_t> load_cell_words_{0};
   std::atomic<double> setpoint_{0.0};
   std::atomic<bool> stall_{false};
   std::atomic<bool> down_{false};

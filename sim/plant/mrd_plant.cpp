@@ -186,6 +186,9 @@ int run_plant(const mrd::plant::PlantConfig& config, mrd::plant::Rig& rig) {
         config.sends_demand() ? std::optional(config.demand_damping * s.reading.sensor_velocity) : std::nullopt;
     if (buses.modbus) buses.modbus->publish(s.lvdt, s.reading.coil_current, demand, s.faults);
     if (buses.can) buses.can->send(t, s.lvdt, s.reading.coil_current, demand, s.faults);
+    // The load cell, when the controller reads one from our buses: the rig's measured force.
+    if (buses.modbus) buses.modbus->publish_load_cell(s.reading.measured_force);
+    if (buses.can) buses.can->send_load_cell(s.reading.measured_force);
     log.write(s);
   };
   mrd::runtime::LoopStatistics stats;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <optional>
 
 #include <gtest/gtest.h>
 
@@ -25,7 +26,8 @@ class LoopRig {
       : hal_(std::make_unique<hal::mock::MockHal>(std::move(script))),
         loop_(std::make_unique<firmware::ControlLoop>(
             law, safety,
-            firmware::HalDevices{hal_->lvdt, hal_->driver, hal_->lines, &hal_->demand}, telemetry)) {}
+            firmware::HalDevices{hal_->lvdt, hal_->driver, hal_->lines, &hal_->demand, &hal_->load_cell},
+            telemetry)) {}
 
   // Runs cycle number `cycle_` at its release time; `skip` periods are lost before it.
   control::SupervisorState step(std::int64_t skip = 0) {
@@ -37,6 +39,9 @@ class LoopRig {
     hal_->lvdt.set_truth(0.030 * std::sin(w * t));
     // Force mode's demand: a dissipative c v on the same motion (read in force mode only).
     hal_->demand.set_demand(demand_damping_ * 0.030 * w * std::cos(w * t));
+    // Force mode's load cell (read with a load-cell law only): load_cell_gain_ times the demand,
+    // unless the test sets it itself.
+    if (load_cell_gain_) hal_->load_cell.set_force(*load_cell_gain_ * demand_damping_ * 0.030 * w * std::cos(w * t));
     loop_->step(now);
     ++cycle_;
     return loop_->state();
@@ -54,6 +59,16 @@ class LoopRig {
 
   // The demand's coefficient from the next cycle on; negative asks the damper to push.
   void set_demand_damping(double c) { demand_damping_ = c; }
+  // The load cell reads this share of the demand from the next cycle on: a damper that gives
+  // `gain` of what is asked, whatever the current (1 by default).
+  void set_load_cell_gain(double gain) { load_cell_gain_ = gain; }
+  // The test sets hal().load_cell's force itself before each step.
+  void set_load_cell_by_hand() { load_cell_gain_.reset(); }
+  // The LVDT's true motion at time t [s] (displacement [m], velocity [m/s]).
+  static double displacement_at(double t) { return 0.030 * std::sin(2.0 * std::numbers::pi * 0.5 * t); }
+  static double velocity_at(double t) {
+    return 0.030 * 2.0 * std::numbers::pi * 0.5 * std::cos(2.0 * std::numbers::pi * 0.5 * t);
+  }
   [[nodiscard]] std::int64_t cycle() const { return cycle_; }  // the next cycle to run
   hal::mock::MockHal& hal() { return *hal_; }
   firmware::ControlLoop& loop() { return *loop_; }
@@ -63,6 +78,7 @@ class LoopRig {
   std::unique_ptr<firmware::ControlLoop> loop_;
   std::int64_t cycle_ = 0;
   double demand_damping_ = kDemandDamping;
+  std::optional<double> load_cell_gain_ = 1.0;
 };
 
 // A fault scripted over cycles kFaultStart..kFaultEnd and the loop's reaction to it, in
@@ -73,6 +89,14 @@ inline const control::SupervisorConfig kLimits{};  // the documented defaults
 inline control::ControlLawConfig force_law() {
   control::ControlLawConfig law;
   law.mode = control::ControlMode::kForce;
+  return law;
+}
+
+// The same with the load-cell correction on, its time constant `tau` [s].
+inline control::ControlLawConfig force_law_with_load_cell(double tau = 1.0) {
+  control::ControlLawConfig law = force_law();
+  law.has_load_cell = true;
+  law.load_cell.time_constant = tau;
   return law;
 }
 constexpr std::int64_t kFaultStart = 1000;

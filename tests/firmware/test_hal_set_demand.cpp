@@ -37,6 +37,44 @@ TEST(HalSetDemand, TheModbusDemandIsTheModbusBackEndThatAlsoReadsTheLvdt) {
   EXPECT_EQ(modbus, dynamic_cast<mrd::hal::modbus::ModbusBackend*>(&devices.lvdt));
 }
 
+TEST(HalSetDemand, TheLoadCellIsTheBusBackEndOrTheMockTheConfigNames) {
+  const mrd::hal::MonotonicClock clock;
+  auto loaded = mrd::config::load_config_text(
+      "[control]\nmode = \"force\"\n[backends]\nlvdt = \"can\"\ndemand = \"can\"\nload_cell = \"can\"\n", "can.toml");
+  ASSERT_TRUE(loaded.ok()) << loaded.report();
+  {
+    mrd::firmware::HalSet hal(loaded.config, clock);  // not started
+    const auto devices = hal.devices();
+    ASSERT_NE(devices.load_cell, nullptr);
+    EXPECT_EQ(dynamic_cast<SocketCanBackend*>(devices.load_cell), dynamic_cast<SocketCanBackend*>(&devices.lvdt));
+    EXPECT_FALSE(devices.load_cell->latest_load_cell().has_value());
+  }
+  loaded = mrd::config::load_config_text(
+      "[control]\nmode = \"force\"\n[backends]\nlvdt = \"modbus\"\ndemand = \"modbus\"\nload_cell = \"modbus\"\n",
+      "modbus.toml");
+  ASSERT_TRUE(loaded.ok()) << loaded.report();
+  {
+    mrd::firmware::HalSet hal(loaded.config, clock);
+    const auto devices = hal.devices();
+    ASSERT_NE(devices.load_cell, nullptr);
+    EXPECT_EQ(dynamic_cast<mrd::hal::modbus::ModbusBackend*>(devices.load_cell),
+              dynamic_cast<mrd::hal::modbus::ModbusBackend*>(&devices.lvdt));
+  }
+  loaded = mrd::config::load_config_text("[control]\nmode = \"force\"\n[backends]\nload_cell = \"mock\"\n", "mock.toml");
+  ASSERT_TRUE(loaded.ok()) << loaded.report();
+  {
+    mrd::firmware::HalSet hal(loaded.config, clock);
+    const auto devices = hal.devices();
+    ASSERT_NE(devices.load_cell, nullptr);
+    EXPECT_NE(dynamic_cast<mrd::hal::mock::MockLoadCellSource*>(devices.load_cell), nullptr);
+  }
+  // Without the key (none), force mode has no load cell.
+  loaded = mrd::config::load_config_text("[control]\nmode = \"force\"\n", "none.toml");
+  ASSERT_TRUE(loaded.ok()) << loaded.report();
+  mrd::firmware::HalSet hal(loaded.config, clock);
+  EXPECT_EQ(hal.devices().load_cell, nullptr);
+}
+
 TEST(HalSetDemand, Table4ModeHasNoDemandChannel) {
   const auto loaded = mrd::config::load_config_text("[backends]\nlvdt = \"can\"\n", "table4.toml");
   ASSERT_TRUE(loaded.ok()) << loaded.report();

@@ -146,4 +146,29 @@ TEST(RealTime, ForceModeCycleDoesNotAllocateOnAnyDemandFaultPath) {
   EXPECT_GT(drained, 5000u);
 }
 
+TEST(RealTime, ForceModeLoadCellCorrectionDoesNotAllocateMovingFrozenOrAtItsBound) {
+  // The load-cell correction every period in RUN: moving, at its bound, frozen while the load
+  // cell is silent (stale) and while it reports a fault (bad), with telemetry into the ring.
+  mrd::runtime::TelemetryQueue telemetry(1024);
+  LoopRig rig({}, {}, &telemetry, mrd::test::force_law_with_load_cell(0.2));
+  rig.set_load_cell_gain(0.5);  // far below the model: the scale runs to its lower bound
+  for (int i = 0; i < 10; ++i) rig.step();
+  std::uint64_t drained = 0;
+  mrd::test::start_counting_allocations();
+  for (int i = 10; i < 6000; ++i) {
+    rig.hal().load_cell.set_silent(i >= 3000 && i < 3500);
+    rig.hal().load_cell.set_faulty(i >= 4000 && i < 4500);
+    rig.step();
+    if (i % 512 == 0) drained += telemetry.drain([](const mrd::runtime::TelemetryRecord&) {});
+  }
+  EXPECT_EQ(mrd::test::stop_counting_allocations(), 0u);
+  const auto* correction = rig.loop().law().force_scale_correction();
+  ASSERT_NE(correction, nullptr);
+  EXPECT_TRUE(correction->at_bound());
+  EXPECT_GT(correction->stale_periods(), 400u);
+  EXPECT_GT(correction->bad_samples(), 400u);
+  EXPECT_EQ(rig.loop().state(), SupervisorState::kRun) << "a stale or bad load cell is not a fault";
+  EXPECT_GT(drained, 5000u);
+}
+
 }  // namespace

@@ -174,6 +174,8 @@ TEST(TelemetryForceColumns, ForceModeAppendsItsColumnsAndTable4LinesAreUnchanged
   r.demand_check = static_cast<std::uint8_t>(mrd::control::SampleCheck::kStale);
   r.clipped = true;
   r.reached = false;
+  r.force_scale = 0.875;
+  r.load_cell_frozen = 12;
   char table4[512];
   char force[512];
   const int n4 = mrd::runtime::CsvTelemetryWriter::format(r, {}, table4, sizeof table4);
@@ -181,10 +183,11 @@ TEST(TelemetryForceColumns, ForceModeAppendsItsColumnsAndTable4LinesAreUnchanged
   ASSERT_GT(n4, 0);
   const std::string base(table4, static_cast<std::size_t>(n4));
   const std::string line(force, static_cast<std::size_t>(nf));
-  EXPECT_EQ(line, base.substr(0, base.size() - 1) + ",12345,9876.5,stale,1,0\n");
+  EXPECT_EQ(line, base.substr(0, base.size() - 1) + ",12345,9876.5,stale,1,0,0.875,12\n");
   const std::string header = mrd::runtime::CsvTelemetryWriter::header();
   EXPECT_EQ(std::string(mrd::runtime::CsvTelemetryWriter::force_header()),
-            header.substr(0, header.size() - 1) + ",demand_N,yield_force_N,demand,clipped,reached\n");
+            header.substr(0, header.size() - 1) +
+                ",demand_N,yield_force_N,demand,clipped,reached,force_scale,load_cell_frozen\n");
 }
 
 }  // namespace

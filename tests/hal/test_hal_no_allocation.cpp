@@ -56,6 +56,7 @@ TEST(HalRealTime, RingsMailboxesAndCodecsDoNotAllocate) {
                                       modbus::ByteOrder::kSwapped, 1e-6, 0.0};
   can::RollingCounterCheck counter;
   can::RollingCounterCheck demand_counter;
+  can::RollingCounterCheck load_cell_counter;
   double sink = 0.0;
   start_counting_allocations();
   for (int i = 0; i < kCycles; ++i) {
@@ -72,6 +73,11 @@ TEST(HalRealTime, RingsMailboxesAndCodecsDoNotAllocate) {
                                            {i * 0.1, false, static_cast<std::uint8_t>(i & 0xF)});
     sink += can::decode_demand(demand.frame.id, demand.frame.data, can::kDefaultDemandId, &demand_counter)
                 .value.demand;
+    const auto load_cell = can::encode_load_cell(can::kDefaultLoadCellId,
+                                                 {i * -0.1, false, static_cast<std::uint8_t>(i & 0xF)});
+    sink += can::decode_load_cell(load_cell.frame.id, load_cell.frame.data, can::kDefaultLoadCellId,
+                                  &load_cell_counter)
+                .value.force;
   }
   EXPECT_EQ(stop_counting_allocations(), 0u);
   EXPECT_TRUE(std::isfinite(sink));

@@ -79,4 +79,21 @@ TEST(SupervisorFeed, AFullRingDropsAndCountsTheLoopNeverWaits) {
   EXPECT_EQ(feed.state(), SupervisorState::kRun);  // the snapshot is never lost
 }
 
+TEST(SupervisorFeed, TheLoadCellScaleAtItsBoundIsCountedWithItsValueForTheJournal) {
+  SupervisorFeed feed;
+  EXPECT_EQ(feed.force_scale_bound_hits(), 0u);
+  TelemetryRecord r = record(1, SupervisorState::kRun);
+  r.force_scale = 0.9;
+  feed.publish(r);
+  EXPECT_EQ(feed.force_scale_bound_hits(), 0u);
+  r.force_scale = 0.7;
+  r.force_scale_at_bound = true;
+  feed.publish(r);
+  r.force_scale_at_bound = false;  // still at the bound: no new line
+  feed.publish(r);
+  EXPECT_EQ(feed.force_scale_bound_hits(), 1u);
+  EXPECT_EQ(feed.force_scale_at_bound(), 0.7);
+  EXPECT_TRUE(drain(feed).empty()) << "not a supervisor transition";
+}
+
 }  // namespace

@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <numbers>
+#include <optional>
 #include <random>
 
 #include "model/bingham_damper.hpp"
 #include "model/effects/coil_lag.hpp"
+#include "model/effects/thermal_drift.hpp"
 #include "model/observer.hpp"
 #include "model/target_curve.hpp"
 #include "sim/damper_plant.hpp"
@@ -26,6 +29,21 @@ std::pair<double, double> yield_stress_range(const model::DamperModel& damper, d
   const model::Observer observer(damper);
   const model::TargetCurve curve(observer.magnetics(), max_current);
   return {observer.yield_stress().zero_field_stress(), observer.yield_stress()(curve.B(max_current))};
+}
+
+// The drift: thermal_drift's linear yield law on a temperature the run scripts, rising from the
+// reference by kDriftSpan over the run; the viscosity is left alone (the correction is about the
+// yield force).
+constexpr double kDriftSpan = 50.0;  // [K]
+model::DamperModel with_yield_drift(model::DamperModel m, double fraction) {
+  if (fraction <= 0.0) return m;
+  auto& drift = m.effects.get<model::ThermalDriftEffect>();
+  drift.enabled = true;
+  drift.yield_law = model::TemperatureLaw::kLinear;
+  drift.yield_coefficient = fraction / kDriftSpan;
+  drift.viscosity_coefficient = 0.0;
+  drift.min_factor = 0.0;
+  return m;
 }
 
 }  // namespace
@@ -105,11 +123,31 @@ ForceRunResult run_force_tracking(const DemandProfile& profile, const ForceRunOp
   result.desired_rms = scored ? std::sqrt(sum_demand / static_cast<double>(scored)) : 0.0;
   result.reachable_fraction = scored ? static_cast<double>(reachable_scored) / static_cast<double>(scored) : 0.0;
 
-  for (const StrategyKind kind : kAllStrategies) {
-    sim::DamperPlant plant(options.plant, {.sample_period = dt, .force_noise_rms = options.force_noise_rms,
-                                           .seed = options.seed});
+  const model::DamperModel truth = with_yield_drift(options.plant, options.yield_drift);
+  const double reference = truth.effects.get<model::ThermalDriftEffect>().reference_temperature;
+  const double run_time = static_cast<double>(profile.size()) * dt;
+  const auto fluid_temperature = [&](std::size_t i) {
+    return reference + kDriftSpan * static_cast<double>(i) * dt / run_time;
+  };
+  if (options.yield_drift > 0.0) {
+    result.plant_yield_factor.reserve(profile.size());
+    for (std::size_t i = 0; i < profile.size(); ++i) {
+      result.plant_yield_factor.push_back(1.0 - options.yield_drift * static_cast<double>(i) * dt / run_time);
+    }
+  }
+  std::vector<StrategyKind> kinds(std::begin(kAllStrategies), std::end(kAllStrategies));
+  if (options.load_cell) kinds.push_back(StrategyKind::kInverseJaLoadCell);
+  const double force_range =
+      model::BinghamDamper(options.controller.geometry, options.controller.fluid.viscosity)
+          .yield_force(yield_stress_range(options.controller, options.limits.max_current).second);
+
+  for (const StrategyKind kind : kinds) {
+    sim::DamperPlant plant(truth, {.sample_period = dt, .force_noise_rms = options.force_noise_rms,
+                                   .seed = options.seed});
     model::Observer observer(options.controller, model::ObserverSettings{dt});
     const auto strategy = make_strategy(kind, observer, options.limits);
+    std::optional<control::ForceScaleCorrection> correction;
+    if (kind == StrategyKind::kInverseJaLoadCell) correction.emplace(options.load_cell_settings, force_range, dt);
     StrategyFigures f;
     f.kind = kind;
     f.delivered.reserve(profile.size());
@@ -117,13 +155,25 @@ ForceRunResult run_force_tracking(const DemandProfile& profile, const ForceRunOp
     double measured = 0.0, sum_sq = 0.0, sum_sq_reachable = 0.0;
     for (std::size_t i = 0; i < profile.size(); ++i) {
       const double x = profile.displacement[i], v = profile.velocity[i];
+      if (options.yield_drift > 0.0) plant.set_fluid_temperature(fluid_temperature(i));
       // The command of this period, from its demand; the plant holds it over the period and
       // its force at the end is what the demand is compared with (model::ForceInverse).
       const double command =
           strategy->command({.demand = {.force = profile.force[i], .velocity = v}, .measured_force = measured}, observer);
       const sim::PlantReading reading = plant.step(x, v, command);
-      observer.step({.displacement = x, .velocity = v, .coil_current = command});
+      const model::ObserverEstimate predicted = observer.step({.displacement = x, .velocity = v, .coil_current = command});
       measured = reading.measured_force;
+      if (correction) {
+        // The load cell's force at the end of the period against the observer's for the same
+        // instant; the next period's inverse and estimate use the moved scale.
+        correction->update({.status = control::LoadCellStatus::kFresh,
+                            .measured = measured,
+                            .predicted = predicted.force,
+                            .viscous = observer.damper().force(v, 0.0),
+                            .velocity = v});
+        observer.set_yield_scale(correction->scale());
+        f.yield_scale.push_back(correction->scale());
+      }
       f.delivered.push_back(reading.force);
       f.current.push_back(command);
       if (i < first) continue;

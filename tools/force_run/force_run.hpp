@@ -5,6 +5,7 @@
 #include <string_view>
 #include <vector>
 
+#include "control/force_scale_correction.hpp"
 #include "model/damper_model.hpp"
 #include "model/effects/effect_set.hpp"
 #include "model/hysteresis_compensator.hpp"
@@ -64,6 +65,7 @@ struct StrategyFigures {
   double rms_error_reachable = 0.0;  // the same over the samples the plant could deliver exactly [N]
   std::vector<double> delivered;     // the plant's force, every sample [N]
   std::vector<double> current;       // the command [A]
+  std::vector<double> yield_scale;   // inverse_ja_load_cell: the correction's scale, every sample
 };
 
 struct ForceRunOptions {
@@ -73,12 +75,19 @@ struct ForceRunOptions {
   double force_noise_rms = 50.0;  // the load cell [N] (the clipped law reads it)
   double settle = 1.0;            // [s] left out of the figures
   unsigned seed = 1;
+  // The plant's yield stress falls linearly by this fraction over the run, as the fluid heats
+  // (thermal_drift on a scripted temperature ramp; its viscosity kept): 0 for none.
+  double yield_drift = 0.0;
+  // Adds inverse_ja_load_cell: inverse_ja with the load-cell correction of its yield scale.
+  bool load_cell = false;
+  control::ForceScaleSettings load_cell_settings;
 };
 
 struct ForceRunResult {
   double desired_rms = 0.0;         // [N], scored samples
   double reachable_fraction = 0.0;  // of the scored samples, for the plant's anhysteretic range
   std::vector<StrategyFigures> strategies;
+  std::vector<double> plant_yield_factor;  // the drift: the plant's yield stress over the model's, every sample
 };
 
 ForceRunResult run_force_tracking(const DemandProfile& profile, const ForceRunOptions& options);

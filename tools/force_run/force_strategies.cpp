@@ -10,6 +10,7 @@ std::string_view strategy_name(StrategyKind kind) {
     case StrategyKind::kInverseBingham: return "inverse_bingham";
     case StrategyKind::kInverseJa: return "inverse_ja";
     case StrategyKind::kInverseJaLag: return "inverse_ja_lag";
+    case StrategyKind::kInverseJaLoadCell: return "inverse_ja_load_cell";
   }
   return "?";
 }
@@ -67,6 +68,7 @@ std::unique_ptr<ForceStrategy> make_strategy(StrategyKind kind, const model::Obs
     case StrategyKind::kInverseBingham: return std::make_unique<InverseBingham>(observer, limits);
     case StrategyKind::kInverseJa: return std::make_unique<InverseJa>(observer, limits, false);
     case StrategyKind::kInverseJaLag: return std::make_unique<InverseJa>(observer, limits, true);
+    case StrategyKind::kInverseJaLoadCell: return std::make_unique<InverseJa>(observer, limits, false);
   }
   return nullptr;
 }

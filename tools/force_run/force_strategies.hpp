@@ -13,7 +13,9 @@
 // only the controller's model, never the plant's.
 namespace mrd::tools {
 
-enum class StrategyKind { kClippedOnOff, kInverseBingham, kInverseJa, kInverseJaLag };
+// kInverseJaLoadCell (mrd-force-run --load-cell) is inverse_ja with control::ForceScaleCorrection
+// on the load cell: the run loop moves its observer's yield scale (force_run.cpp).
+enum class StrategyKind { kClippedOnOff, kInverseBingham, kInverseJa, kInverseJaLag, kInverseJaLoadCell };
 inline constexpr StrategyKind kAllStrategies[] = {StrategyKind::kClippedOnOff, StrategyKind::kInverseBingham,
                                                   StrategyKind::kInverseJa, StrategyKind::kInverseJaLag};
 std::string_view strategy_name(StrategyKind kind);

@@ -114,6 +114,10 @@ TelemetryLog parse_telemetry_csv(std::string_view text, const std::string& name)
       r.demand_check = std::string(f[20]);
       r.clipped = flag(21);
       r.reached = flag(22);
+      r.force_scale = number(23);
+      const std::uint64_t frozen = count(24);
+      if (frozen > std::numeric_limits<std::uint32_t>::max()) throw fail(columns[24], "more than 2^32 - 1");
+      r.load_cell_frozen = static_cast<std::uint32_t>(frozen);
     }
     log.rows.push_back(std::move(r));
   }

@@ -36,6 +36,8 @@ struct TelemetryRow {
   std::string demand_check;  // the demand's SampleCheck name
   bool clipped = false;      // the demand asked the damper to push: minimum force commanded
   bool reached = false;      // the inverse reached the demand within the period
+  double force_scale = 0.0;  // the load-cell correction's scale on the model's yield force (1 without)
+  std::uint32_t load_cell_frozen = 0;  // periods the load cell was stale or bad so far
 
   [[nodiscard]] bool in_control() const {
     return state == control::SupervisorState::kRun || state == control::SupervisorState::kDegraded;

@@ -196,4 +196,65 @@ TEST_F(ForgedBus, WithoutUseDemandTheDemandFrameIsUnexpected) {
   EXPECT_EQ(backend_.counters()[CanEvent::kDemandFrames], 0u);
 }
 
+// The Load_Cell frame (force mode's optional load cell) next to the demand on one bus: each
+// id to its own channel, and the demand's reaction to bad frames, LoadCellInvalid as the
+// amplifier's own fault flag.
+class ForgedLoadCellBus : public ForgedBusBase {
+ protected:
+  static SocketCanConfig load_cell_config() {
+    SocketCanConfig c;
+    c.use_demand = true;
+    c.use_load_cell = true;
+    return c;
+  }
+  ForgedLoadCellBus() : ForgedBusBase(load_cell_config()) {}
+  void send_load_cell_frame(std::span<const std::uint8_t> data) { send_frame(kDefaultLoadCellId, data); }
+};
+
+TEST_F(ForgedLoadCellBus, LoadCellFramesBecomeSamplesInNewtonsApartFromTheDemand) {
+  // 0x130 with bytes 0-3 = 43210 counts of 0.1 N (0x0000A8CA, little-endian) written by hand.
+  std::array<std::uint8_t, 8> hand{0xCA, 0xA8, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00};
+  hand[7] = crc8_sae_j1850(std::span(hand).first(7));
+  send_load_cell_frame(hand);
+  send_frame(kDefaultDemandId, encode_demand(kDefaultDemandId, {-100.0, false, 0}).frame.data);
+  ASSERT_TRUE(counted(CanEvent::kLoadCellFrames, 1));
+  ASSERT_TRUE(counted(CanEvent::kDemandFrames, 1));
+  auto s = backend_.latest_load_cell();
+  ASSERT_TRUE(s && s->usable());
+  EXPECT_DOUBLE_EQ(s->value, 4321.0);
+  EXPECT_EQ(s->sequence, 1u);
+  const auto demand = backend_.latest_demand();
+  ASSERT_TRUE(demand && demand->usable());
+  EXPECT_DOUBLE_EQ(demand->value, -100.0) << "the load cell is not the demand";
+  EXPECT_FALSE(backend_.latest_load_cell().has_value()) << "one sample per frame";
+
+  auto forged = encode_load_cell(kDefaultLoadCellId, {500.0, false, 1}).frame;
+  forged.data[1] ^= 0x04;  // a flipped bit in the value
+  send_load_cell_frame(forged.data);
+  ASSERT_TRUE(counted(CanEvent::kBadChecksum, 1));
+  s = backend_.latest_load_cell();
+  ASSERT_TRUE(s);
+  EXPECT_FALSE(s->usable());
+  EXPECT_TRUE(s->flags & mrd::hal::kSampleCorrupted);
+
+  send_load_cell_frame(encode_load_cell(kDefaultLoadCellId, {600.0, false, 0}).frame.data);  // counter 0 again
+  ASSERT_TRUE(counted(CanEvent::kRepeatedCounter, 1));
+  EXPECT_FALSE(backend_.latest_load_cell().has_value());
+
+  send_load_cell_frame(encode_load_cell(kDefaultLoadCellId, {-700.0, true, 1}).frame.data);  // LoadCellInvalid
+  ASSERT_TRUE(counted(CanEvent::kLoadCellFrames, 2));
+  s = backend_.latest_load_cell();
+  ASSERT_TRUE(s);
+  EXPECT_FALSE(s->usable());
+  EXPECT_TRUE(s->flags & mrd::hal::kSampleSensorFault);
+  EXPECT_EQ(s->sequence, 3u) << "one sample each but for the repeated counter";
+}
+
+TEST_F(ForgedBus, WithoutUseLoadCellTheLoadCellFrameIsUnexpected) {
+  send_frame(kDefaultLoadCellId, encode_load_cell(kDefaultLoadCellId, {100.0, false, 0}).frame.data);
+  ASSERT_TRUE(counted(CanEvent::kUnexpectedFrames, 1));
+  EXPECT_FALSE(backend_.latest_load_cell().has_value());
+  EXPECT_EQ(backend_.counters()[CanEvent::kLoadCellFrames], 0u);
+}
+
 }  // namespace

@@ -61,7 +61,7 @@ class DbcMatchesCodec : public ::testing::Test {
  protected:
   void SetUp() override {
     dbc = load_dbc();
-    ASSERT_EQ(dbc.size(), 4u) << "hal/can/mrd.dbc not found or not parsed";
+    ASSERT_EQ(dbc.size(), 5u) << "hal/can/mrd.dbc not found or not parsed";
     for (const auto& [id, message] : dbc) {
       EXPECT_EQ(message.dlc, static_cast<int>(kFrameLength));
       for (const auto& [name, s] : message.signals) EXPECT_TRUE(s.little_endian) << name;
@@ -88,6 +88,18 @@ TEST_F(DbcMatchesCodec, ForceDemandFrame) {
   EXPECT_EQ(physical(f, sig.at("DemandInvalid")), 1.0);
   EXPECT_EQ(physical(f, sig.at("RollingCounter")), 14.0);
   EXPECT_EQ(physical(f, sig.at("Checksum")), f.data[7]);
+}
+
+TEST_F(DbcMatchesCodec, LoadCellFrame) {
+  const Frame f = encode_load_cell(kDefaultLoadCellId, {27182.8, true, 3}).frame;
+  const auto& sig = dbc.at(kDefaultLoadCellId).signals;
+  EXPECT_NEAR(physical(f, sig.at("Force")), 27182.8, 1e-6);  // N
+  EXPECT_EQ(physical(f, sig.at("LoadCellInvalid")), 1.0);
+  EXPECT_EQ(physical(f, sig.at("RollingCounter")), 3.0);
+  EXPECT_EQ(physical(f, sig.at("Checksum")), f.data[7]);
+  const Frame ok = encode_load_cell(kDefaultLoadCellId, {-1234.5, false, 4}).frame;
+  EXPECT_NEAR(physical(ok, sig.at("Force")), -1234.5, 1e-6);
+  EXPECT_EQ(physical(ok, sig.at("LoadCellInvalid")), 0.0);
 }
 
 TEST_F(DbcMatchesCodec, CommandAndFeedbackFrames) {

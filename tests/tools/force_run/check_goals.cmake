@@ -1,6 +1,8 @@
 # Runs mrd-force-run and checks issue 18's goals in its JSON (docs/FORCE-CONTROL.md):
 #   GOAL=hysteresis: inverse_ja <= 0.5 inverse_bingham and < clipped_on_off (RMS error);
-#   GOAL=lag:        inverse_ja_lag <= 0.5 inverse_ja.
+#   GOAL=lag:        inverse_ja_lag <= 0.5 inverse_ja;
+#   GOAL=load_cell:  with --drift and --load-cell, inverse_ja_load_cell <= inverse_ja / 3 (the
+#                    load-cell feedback removes most of the yield drift's error).
 # cmake -DTOOL=... -DJSON=... -DGOAL=hysteresis|lag -DARGS=--duration,6 -P check_goals.cmake
 string(REPLACE "," ";" args "${ARGS}")
 execute_process(COMMAND ${TOOL} ${args} --json ${JSON} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -25,6 +27,9 @@ foreach(name clipped_on_off inverse_bingham inverse_ja inverse_ja_lag)
     message(FATAL_ERROR "no strategy ${name} in ${JSON}")
   endif()
 endforeach()
+if(GOAL STREQUAL "load_cell" AND NOT DEFINED rms_inverse_ja_load_cell)
+  message(FATAL_ERROR "no strategy inverse_ja_load_cell in ${JSON} (run with --load-cell)")
+endif()
 # CMake's math is integer; the figures are tens of newtons and up,
 # so whole newtons (times 2 for the halves) are exact enough.
 macro(to_int var value)
@@ -47,8 +52,17 @@ elseif(GOAL STREQUAL "lag")
   if(twice_ja_lag GREATER ja)
     message(FATAL_ERROR "inverse_ja_lag ${rms_inverse_ja_lag} N is more than half of inverse_ja ${rms_inverse_ja} N")
   endif()
+elseif(GOAL STREQUAL "load_cell")
+  to_int(ja_load_cell "${rms_inverse_ja_load_cell}")
+  math(EXPR thrice_ja_load_cell "3 * ${ja_load_cell}")
+  if(thrice_ja_load_cell GREATER ja)
+    message(FATAL_ERROR "inverse_ja_load_cell ${rms_inverse_ja_load_cell} N is more than a third of inverse_ja "
+                        "${rms_inverse_ja} N under the drift")
+  endif()
+  message("goal load_cell met: inverse_ja ${rms_inverse_ja}, inverse_ja_load_cell ${rms_inverse_ja_load_cell} N RMS")
+  return()
 else()
-  message(FATAL_ERROR "GOAL must be hysteresis or lag")
+  message(FATAL_ERROR "GOAL must be hysteresis, lag or load_cell")
 endif()
 message("goal ${GOAL} met: clipped_on_off ${rms_clipped_on_off}, inverse_bingham ${rms_inverse_bingham}, "
         "inverse_ja ${rms_inverse_ja}, inverse_ja_lag ${rms_inverse_ja_lag} N RMS")

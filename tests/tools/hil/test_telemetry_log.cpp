@@ -41,6 +41,8 @@ std::string written_file(bool force_columns, mrd::hal::Timestamp start) {
     r.demand_check = static_cast<std::uint8_t>(mrd::control::SampleCheck::kStale);
     r.clipped = i == 1;
     r.reached = true;
+    r.force_scale = 1.0 - 0.125 * i;
+    r.load_cell_frozen = static_cast<std::uint32_t>(7 * i);
     q.offer(r);
   }
   writer.stop();
@@ -70,6 +72,8 @@ TEST(TelemetryLog, TheWritersFileCarriesItsOriginAndReadsBackInBothModes) {
       EXPECT_TRUE(log.rows[1].clipped);
       EXPECT_FALSE(log.rows[2].clipped);
       EXPECT_TRUE(log.rows[0].reached);
+      EXPECT_DOUBLE_EQ(log.rows[2].force_scale, 0.75);
+      EXPECT_EQ(log.rows[1].load_cell_frozen, 7u);
     } else {
       EXPECT_EQ(log.rows[2].demand, 0.0);
       EXPECT_TRUE(log.rows[2].demand_check.empty());
@@ -101,7 +105,7 @@ TEST(TelemetryLog, AForeignHeaderOrARaggedRowNamesTheFileAndLine) {
     ADD_FAILURE() << "a table4 row under the force header was read";
   } catch (const mrd::record::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("f.csv:3:"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("expected 23 fields, got 18"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("expected 25 fields, got 18"), std::string::npos) << e.what();
   }
 }
 
@@ -130,7 +134,7 @@ TEST(TelemetryLog, CountsFlagsChecksAndTheOriginLineAreCheckedNotCast) {
   EXPECT_EQ(telemetry_error(header + "0,0.000000,1.0000,fine,0,0,0,0,0,0,0,0,INIT,none,0,0,0,0\n"),
             "t.csv:2: column 'sample': unknown sample check");
   const std::string force = CsvTelemetryWriter::force_header();
-  EXPECT_EQ(telemetry_error(force + "0,0.000000,1.0000,fresh,0,0,0,0,0,0,0,0,INIT,none,0,0,0,0,5,6,late,0,1\n"),
+  EXPECT_EQ(telemetry_error(force + "0,0.000000,1.0000,fresh,0,0,0,0,0,0,0,0,INIT,none,0,0,0,0,5,6,late,0,1,1,0\n"),
             "t.csv:2: column 'demand': unknown demand check");
   EXPECT_EQ(telemetry_error(header + "# time_s 0 is CLOCK_MONOTONIC 12,5 s\n" + good),
             "t.csv:2: a time-origin line must read '# time_s 0 is CLOCK_MONOTONIC <seconds> s'");

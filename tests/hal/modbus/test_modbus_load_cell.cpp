@@ -1,0 +1,86 @@
+// Force mode's optional load cell over Modbus: a register pair read with the LVDT each poll
+// (modbus.registers.load_cell_*), next to the demand's, as samples in N.
+#include <gtest/gtest.h>
+
+#include <optional>
+
+#include "hal/modbus/modbus_backend.hpp"
+#include "tests/hal/modbus/modbus_test_server.hpp"
+#include "tests/hal/test_wait.hpp"
+
+namespace {
+
+using mrd::hal::LoadCellSample;
+using mrd::hal::MonotonicClock;
+using mrd::hal::modbus::ModbusBackend;
+using mrd::hal::modbus::ModbusEvent;
+using mrd::test::ModbusTestServer;
+using mrd::test::wait_for;
+using mrd::test::kLvdtAddress;
+
+TEST(ModbusLoadCell, ReadsTheLoadCellRegistersAsSamplesInNewtonsApartFromTheDemand) {
+  constexpr int kLoadCellAddress = 44;
+  constexpr int kDemandAddress = 40;
+  MonotonicClock clock;
+  ModbusTestServer server;
+  ASSERT_TRUE(server.listening());
+  server.set_input_registers(kLvdtAddress, {0x0000, 1000});
+  server.set_input_registers(kLoadCellAddress, {0x0000, 0xA8CA});    // 43210 counts of 0.1 N
+  server.set_holding_registers(kDemandAddress, {0xFFFF, 0xCFC7});    // -12345 counts
+  auto config = mrd::test::client_config(server.port());
+  config.registers.has_demand = true;
+  config.registers.demand_address = kDemandAddress;
+  config.registers.has_load_cell = true;
+  config.registers.load_cell_address = kLoadCellAddress;
+  ModbusBackend backend(config, clock);
+  ASSERT_TRUE(backend.start().ok);
+
+  std::optional<LoadCellSample> f;
+  ASSERT_TRUE(wait_for([&] { return (f = backend.latest_load_cell()).has_value(); }));
+  EXPECT_TRUE(f->usable());
+  EXPECT_DOUBLE_EQ(f->value, 4321.0);
+  std::optional<mrd::hal::DemandSample> d;
+  ASSERT_TRUE(wait_for([&] { return (d = backend.latest_demand()).has_value(); }));
+  EXPECT_DOUBLE_EQ(d->value, -1234.5) << "the load cell is not the demand";
+
+  server.set_input_registers(kLoadCellAddress, {0xFFFF, 0xD8F0});  // -10000 counts: -1000 N
+  ASSERT_TRUE(wait_for([&] { return (f = backend.latest_load_cell()) && f->value < 0.0; }));
+  EXPECT_DOUBLE_EQ(f->value, -1000.0);
+  const std::uint32_t before = f->sequence;
+  ASSERT_TRUE(wait_for([&] { return (f = backend.latest_load_cell()).has_value(); }));
+  EXPECT_GT(f->sequence, before) << "one new sample per poll";
+}
+
+TEST(ModbusLoadCell, AValueThatDoesNotDecodeIsACorruptedSample) {
+  constexpr int kLoadCellAddress = 44;
+  MonotonicClock clock;
+  ModbusTestServer server;
+  ASSERT_TRUE(server.listening());
+  server.set_input_registers(kLvdtAddress, {0x0000, 1000});
+  server.set_input_registers(kLoadCellAddress, {0x7FC0, 0x0000});  // NaN as float32
+  auto config = mrd::test::client_config(server.port());
+  config.registers.has_load_cell = true;
+  config.registers.load_cell_address = kLoadCellAddress;
+  config.registers.load_cell.type = mrd::hal::modbus::RegisterType::kFloat32;
+  config.registers.load_cell.scale = 1.0;
+  ModbusBackend backend(config, clock);
+  ASSERT_TRUE(backend.start().ok);
+  std::optional<LoadCellSample> f;
+  ASSERT_TRUE(wait_for([&] { return (f = backend.latest_load_cell()).has_value(); }));
+  EXPECT_FALSE(f->usable());
+  EXPECT_TRUE(f->flags & mrd::hal::kSampleCorrupted);
+  EXPECT_GE(backend.counters()[ModbusEvent::kDecodeErrors], 1u);
+}
+
+TEST(ModbusLoadCell, WithoutHasLoadCellNoLoadCellIsRead) {
+  MonotonicClock clock;
+  ModbusTestServer server;
+  ASSERT_TRUE(server.listening());
+  server.set_input_registers(kLvdtAddress, {0x0000, 1000});
+  ModbusBackend backend(mrd::test::client_config(server.port()), clock);
+  ASSERT_TRUE(backend.start().ok);
+  ASSERT_TRUE(wait_for([&] { return backend.latest().has_value(); }));
+  EXPECT_FALSE(backend.latest_load_cell().has_value());
+}
+
+}  // namespace
