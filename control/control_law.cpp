@@ -15,7 +15,8 @@ ValidationReport validate(const ControlLawConfig& config) {
   report.require_positive("observer.sample_period", config.observer.sample_period);
   report.require_positive("observer.velocity_cutoff_frequency",
                           config.observer.velocity_cutoff_frequency);
-  if (config.has_load_cell) report.merge(validate(config.load_cell), "load_cell");
+  // Always: a bad value in the file is an error even while no load cell reads it.
+  report.merge(validate(config.load_cell), "load_cell");
   if (report.ok() && config.limits.min_current >= config.limits.max_current) {
     report.error("limits.min_current", "must be below limits.max_current");
   }

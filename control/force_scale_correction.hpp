@@ -48,7 +48,8 @@ enum class ScaleUpdate : std::uint8_t {
 //
 //   s* = s (F_measured - c0 v) / (F_model - c0 v),
 //
-// by 1 - exp(-T / time_constant) of the way (a first-order filter in the time spent gated in),
+// by 1 - exp(-dt / time_constant) of the way, dt the time since the previous fresh sample (a
+// first-order filter in seconds gated in, whatever the load cell's rate),
 // and stays in [1 - max_correction, 1 + max_correction]. The gate: both yield parts,
 // |F_measured - c0 v| and |F_model - c0 v|, above min_force_fraction of the force range, of the
 // same sign, and |v| above min_speed; elsewhere the ratio is noise over a small number. A stale or bad load cell freezes
@@ -63,23 +64,27 @@ class ForceScaleCorrection {
   [[nodiscard]] double scale() const { return scale_; }
   // At 1 - max or 1 + max now.
   [[nodiscard]] bool at_bound() const { return at_bound_; }
-  // The last update took the scale onto a bound (the loop journals it once per arrival).
+  // The last update took the scale onto a bound (the loop journals it once per arrival; the
+  // next arrival counts after the scale came back inside by a tenth of max_correction).
   [[nodiscard]] bool reached_bound() const { return reached_bound_; }
   [[nodiscard]] std::uint64_t stale_periods() const { return stale_periods_; }
   [[nodiscard]] std::uint64_t bad_samples() const { return bad_samples_; }
   [[nodiscard]] std::uint64_t moves() const { return moves_; }
 
  private:
-  double gain_;       // 1 - exp(-T / time_constant)
+  double sample_period_;  // T [s]
+  double time_constant_;  // tau [s]
   double lower_;      // 1 - max_correction
   double upper_;      // 1 + max_correction
   double min_force_;  // [N]
   double min_speed_;  // [m/s]
+  double rearm_margin_;  // how far inside the bounds the scale must come before a new arrival is said
   int max_age_periods_;
   double scale_ = 1.0;
   int periods_since_fresh_ = 0;
   bool at_bound_ = false;
   bool reached_bound_ = false;
+  bool armed_ = true;  // the next arrival at a bound is said
   std::uint64_t stale_periods_ = 0;
   std::uint64_t bad_samples_ = 0;
   std::uint64_t moves_ = 0;

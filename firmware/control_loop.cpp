@@ -126,8 +126,12 @@ const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
   // Force mode's demand: the last good one, held while demands are missing or bad.
   const double demand = force_mode ? demand_checker_.held_value() : kNotComputed;
   if (d.in_control) {
-    // The load cell corrects the model's yield force scale only while the law drives the coil.
-    law_.correct_force_scale(load_cell, load_cell_force);
+    // The load cell corrects the model's yield force scale only while the law drives the coil,
+    // and only against an estimate made on this period's fresh LVDT sample: on a held or
+    // extrapolated displacement the model's force is not the damper's, and the scale would
+    // learn the sensor's fault.
+    law_.correct_force_scale(check == control::SampleCheck::kFresh ? load_cell : control::LoadCellStatus::kNone,
+                             load_cell_force);
     command = law_.command(demand);
     if (!std::isfinite(command.current)) d = supervisor_.veto(control::Trigger::kCommandNotFinite, now);
   }

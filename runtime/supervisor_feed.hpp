@@ -40,6 +40,8 @@ class SupervisorFeed {
     last_ = to;
     if (r.force_scale_at_bound) {
       scale_at_bound_.store(r.force_scale, std::memory_order_relaxed);
+      // The scale before the count: a reader that sees the new count sees this scale.
+      std::atomic_thread_fence(std::memory_order_release);
       scale_bound_hits_.add();
     }
     state_.store(r.state, std::memory_order_release);
@@ -54,7 +56,12 @@ class SupervisorFeed {
   [[nodiscard]] bool latched() const { return latched_.load(std::memory_order_acquire); }
   // Any thread: how often force mode's load-cell correction took the scale onto a bound, and
   // the scale it was held at the last time (for the journal line).
-  [[nodiscard]] std::uint64_t force_scale_bound_hits() const { return scale_bound_hits_.get(); }
+  [[nodiscard]] std::uint64_t force_scale_bound_hits() const {
+    const std::uint64_t hits = scale_bound_hits_.get();
+    std::atomic_thread_fence(std::memory_order_acquire);  // pairs with publish(): the scale read next
+    return hits;
+  }
+  // Read after force_scale_bound_hits(): at least as new as the hit that count includes.
   [[nodiscard]] double force_scale_at_bound() const { return scale_at_bound_.load(std::memory_order_relaxed); }
   // Any thread: transitions the ring had no room for.
   [[nodiscard]] std::uint64_t lost() const { return lost_.get(); }
@@ -73,6 +80,7 @@ class SupervisorFeed {
   SingleWriterCounter lost_;
   SingleWriterCounter scale_bound_hits_;
   std::atomic<double> scale_at_bound_{1.0};
+  static_assert(std::atomic<double>::is_always_lock_free, "the loop publishes the scale without a lock");
 };
 
 }  // namespace mrd::runtime

@@ -116,7 +116,7 @@ std::string load_cell_plot_script(const std::string& csv, const std::string& png
        "'' every ::1 using 1:($13-$4) with lines lc rgb '#1f77b4' title 'inverse\\_ja\\_load\\_cell'\n";
   s += "set ylabel 'yield scale [-]'\nset title 'the model yield force scale'\nplot '" + csv +
        "' every ::1 using 1:15 with lines lw 2 lc rgb '#1f77b4' title 'load-cell correction'";
-  if (drifting) s += ", '' every ::1 using 1:16 with lines lw 2 lc rgb '#888888' title 'plant yield stress / model'";
+  if (drifting) s += ", '' every ::1 using 1:16 with lines lw 2 lc rgb '#888888' title 'plant yield stress / its undrifted value'";
   return s + "\nunset multiplot\n";
 }
 

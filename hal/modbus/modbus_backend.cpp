@@ -3,6 +3,7 @@
 #include <modbus/modbus.h>
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <cerrno>
 #include <string>
 
@@ -253,29 +254,40 @@ ModbusBackend::Outcome ModbusBackend::poll_once() {
   if (map.has_demand) {
     if (const Outcome o = read_demand(); o != Outcome::kOk) return o;
   }
+  if (map.has_current_feedback) {
+    if (const Outcome o = read_current_feedback(); o != Outcome::kOk) return o;
+  }
+  // Last, and never at the cost of the rest: a device that refuses the load cell's registers
+  // leaves the LVDT, demand and readback read (a refusal there would starve the readback and
+  // trip SAFE); the correction gets a corrupted sample and freezes, which is not a fault.
   if (map.has_load_cell) {
-    if (const Outcome o =
-            read_sample(map.load_cell_address, map.load_cell_kind, map.load_cell, load_cell_sequence_, load_cell_);
-        o != Outcome::kOk) {
-      return o;
+    const Outcome o =
+        read_sample(map.load_cell_address, map.load_cell_kind, map.load_cell, load_cell_sequence_, load_cell_);
+    if (o == Outcome::kLinkFailed) return o;
+    if (o == Outcome::kDeviceRefused) {
+      const Sample refused{std::numeric_limits<double>::quiet_NaN(), clock_.now(), ++load_cell_sequence_,
+                           kSampleCorrupted};
+      if (!load_cell_.try_push(refused)) counters_.bump(ModbusEvent::kSamplesDropped);
     }
   }
+  return written;
+}
 
-  if (!map.has_current_feedback) return written;
+ModbusBackend::Outcome ModbusBackend::read_current_feedback() {
+  const RegisterMap& map = config_.registers;
   std::array<std::uint16_t, 2> words{};
   const std::size_t m = word_count(map.current_feedback.type);
-  if (const Outcome o = read_words(map.current_feedback_address, map.current_feedback_kind, m,
-                                   words.data());
+  if (const Outcome o = read_words(map.current_feedback_address, map.current_feedback_kind, m, words.data());
       o != Outcome::kOk) {
     return o;
   }
   const DecodeResult current = decode_register({words.data(), m}, map.current_feedback);
   if (current.status != CodecStatus::kOk) {
     counters_.bump(ModbusEvent::kDecodeErrors);
-    return written;
+    return Outcome::kOk;
   }
   feedback_.publish({current.value, clock_.now()});
-  return written;
+  return Outcome::kOk;
 }
 
 }  // namespace mrd::hal::modbus

@@ -91,6 +91,7 @@ class ModbusBackend final : public DisplacementSource,
 
   void run();
   Outcome poll_once();
+  Outcome read_current_feedback();
   Outcome write_pending_setpoint();
   Outcome read_words(int address, RegisterKind kind, std::size_t count, std::uint16_t* out);
   Outcome classify_failure(ModbusEvent counter);

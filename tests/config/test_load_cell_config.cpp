@@ -59,6 +59,13 @@ TEST(LoadCellConfig, InTable4ModeNoLoadCellIsOpened) {
   EXPECT_FALSE(c.config.can.use_load_cell);
 }
 
+// A bad value is an error even where no load cell reads it (table4 mode): the file is wrong.
+TEST(LoadCellConfig, BadSettingsAreRefusedEvenWithoutALoadCell) {
+  const LoadedConfig c = load_config_text("[force.load_cell]\ntime_constant = -1.0\n", "unused.toml");
+  EXPECT_FALSE(c.ok());
+  EXPECT_NE(c.report().find("unused.toml:2: force.load_cell.time_constant"), std::string::npos) << c.report();
+}
+
 TEST(LoadCellConfig, BadLoadCellSettingsNameFileLineAndKey) {
   const LoadedConfig c = load_config_text(R"(
 [control]
@@ -84,7 +91,7 @@ max_age = 0
   const std::string report = d.report();
   EXPECT_NE(report.find("bad.toml:7: force.load_cell.time_constant: must be a finite value > 0"), std::string::npos)
       << report;
-  EXPECT_NE(report.find("bad.toml:8: force.load_cell.max_correction: must lie in [0, 0.9)"), std::string::npos)
+  EXPECT_NE(report.find("bad.toml:8: force.load_cell.max_correction: must be in (0, 0.9]"), std::string::npos)
       << report;
   EXPECT_NE(report.find("bad.toml:9: force.load_cell.min_force_fraction: must lie in [0, 1)"), std::string::npos)
       << report;

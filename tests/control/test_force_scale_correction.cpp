@@ -94,6 +94,43 @@ TEST(ForceScaleCorrection, ReachesSixtyThreePercentAfterOneTimeConstantGatedIn) 
   }
 }
 
+// A load cell slower than the loop (one sample in 10 periods, 100 Hz under 1 kHz; max_age
+// above its period) moves the scale on the same time scale: tau is seconds, not samples.
+TEST(ForceScaleCorrection, TheTimeConstantIsInSecondsWhateverTheLoadCellsRate) {
+  ForceScaleSettings s;
+  s.time_constant = 1.0;
+  s.max_age_periods = 12;
+  Rig rig(0.8, s);
+  const double threshold = 1.0 - 0.632 * (1.0 - 0.8);
+  int periods = 0;
+  while (rig.correction.scale() > threshold && periods < 100000) {
+    rig.step(0.1, 1.0, periods % 10 == 9 ? LoadCellStatus::kFresh : LoadCellStatus::kNone);
+    ++periods;
+  }
+  // Within one sample's spacing of tau (the scale moves in steps of 10 ms).
+  EXPECT_NEAR(periods * kPeriod, 1.0, 0.011);
+  EXPECT_EQ(rig.correction.stale_periods(), 0u) << "a sample every 10 periods is not stale at max_age 12";
+}
+
+// A plant whose ratio sits right at the bound, with noise: the scale leaves the bound and comes
+// back many times, but its arrival is said once until it has come well inside again.
+TEST(ForceScaleCorrection, NoiseAtTheBoundSaysTheArrivalOnce) {
+  ForceScaleSettings s;
+  s.time_constant = 0.2;
+  Rig rig(0.7, s, 800.0);
+  int reached = 0;
+  int arrivals = 0;
+  bool was_at_bound = false;
+  for (int i = 0; i < 20000; ++i) {
+    rig.step(0.1, 1.0);
+    reached += rig.correction.reached_bound();
+    arrivals += rig.correction.at_bound() && !was_at_bound;
+    was_at_bound = rig.correction.at_bound();
+  }
+  EXPECT_GT(arrivals, 5) << "the noise should lift the scale off the bound now and then";
+  EXPECT_EQ(reached, 1);
+}
+
 TEST(ForceScaleCorrection, NeverLeavesItsBoundsAndReportsReachingOne) {
   for (const double factor : {0.5, 1.6}) {
     ForceScaleSettings s;
@@ -183,6 +220,14 @@ TEST(ForceScaleCorrection, SettingsAreValidated) {
   EXPECT_NE(r.to_string().find("time_constant"), std::string::npos);
   EXPECT_NE(r.to_string().find("max_correction"), std::string::npos);
   EXPECT_NE(r.to_string().find("max_age_periods"), std::string::npos);
+}
+
+TEST(ForceScaleCorrection, NoCorrectionAtAllIsRefusedNotABoundReachedAtOnce) {
+  ForceScaleSettings s;
+  s.max_correction = 0.0;
+  const auto r = validate(s);
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.to_string().find("max_correction"), std::string::npos) << r.to_string();
 }
 
 }  // namespace

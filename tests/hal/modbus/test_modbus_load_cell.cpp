@@ -83,4 +83,39 @@ TEST(ModbusLoadCell, WithoutHasLoadCellNoLoadCellIsRead) {
   EXPECT_FALSE(backend.latest_load_cell().has_value());
 }
 
+// A device that refuses the load cell's registers (exception: past its map) still serves the
+// LVDT and the current readback every poll, and the load cell reads as corrupted samples: a
+// refused load cell freezes the correction, it must not starve the readback (readback_lost ->
+// SAFE).
+TEST(ModbusLoadCell, ARefusedLoadCellLeavesTheLvdtAndTheReadbackFlowing) {
+  using mrd::test::kFeedbackAddress;
+  MonotonicClock clock;
+  ModbusTestServer server;
+  ASSERT_TRUE(server.listening());
+  server.set_input_registers(kLvdtAddress, {0x0000, 1000});
+  server.set_input_registers(kFeedbackAddress, {0x0000, 1234});
+  auto config = mrd::test::client_config(server.port());
+  config.registers.has_current_feedback = true;
+  config.registers.current_feedback_address = kFeedbackAddress;
+  config.registers.current_feedback_kind = mrd::hal::modbus::RegisterKind::kInput;
+  config.registers.has_load_cell = true;
+  config.registers.load_cell_address = ModbusTestServer::kRegisters;  // past the device's map
+  ModbusBackend backend(config, clock);
+  ASSERT_TRUE(backend.start().ok);
+
+  std::optional<LoadCellSample> f;
+  ASSERT_TRUE(wait_for([&] { return (f = backend.latest_load_cell()).has_value(); }));
+  EXPECT_FALSE(f->usable());
+  EXPECT_TRUE(f->flags & mrd::hal::kSampleCorrupted);
+  // Polls go on past the refusal: new LVDT samples and readings keep coming.
+  std::optional<mrd::hal::DisplacementSample> first;
+  ASSERT_TRUE(wait_for([&] { return (first = backend.latest()).has_value(); }));
+  ASSERT_TRUE(wait_for([&] {
+    const auto next = backend.latest();
+    return next && next->sequence > first->sequence + 3;
+  })) << "reads ok " << backend.counters()[ModbusEvent::kReadsOk];
+  ASSERT_TRUE(wait_for([&] { return backend.measured().has_value(); }));
+  EXPECT_TRUE(backend.connected()) << "a refused register is not a lost link";
+}
+
 }  // namespace
