@@ -40,9 +40,9 @@ class SupervisorFeed {
     last_ = to;
     if (r.force_scale_at_bound) {
       scale_at_bound_.store(r.force_scale, std::memory_order_relaxed);
-      // The scale before the count: a reader that sees the new count sees this scale.
-      std::atomic_thread_fence(std::memory_order_release);
-      scale_bound_hits_.add();
+      // The count is published after the scale (release): a reader that sees the new count
+      // (acquire) sees this scale. One writer: a load and a store, no locked add.
+      scale_bound_hits_.store(scale_bound_hits_.load(std::memory_order_relaxed) + 1, std::memory_order_release);
     }
     state_.store(r.state, std::memory_order_release);
     latched_.store(r.latched, std::memory_order_release);
@@ -57,9 +57,7 @@ class SupervisorFeed {
   // Any thread: how often force mode's load-cell correction took the scale onto a bound, and
   // the scale it was held at the last time (for the journal line).
   [[nodiscard]] std::uint64_t force_scale_bound_hits() const {
-    const std::uint64_t hits = scale_bound_hits_.get();
-    std::atomic_thread_fence(std::memory_order_acquire);  // pairs with publish(): the scale read next
-    return hits;
+    return scale_bound_hits_.load(std::memory_order_acquire);  // pairs with publish(): the scale read next
   }
   // Read after force_scale_bound_hits(): at least as new as the hit that count includes.
   [[nodiscard]] double force_scale_at_bound() const { return scale_at_bound_.load(std::memory_order_relaxed); }
@@ -78,7 +76,7 @@ class SupervisorFeed {
   std::atomic<bool> latched_{false};
   control::SupervisorState last_ = control::SupervisorState::kInit;  // loop thread only
   SingleWriterCounter lost_;
-  SingleWriterCounter scale_bound_hits_;
+  std::atomic<std::uint64_t> scale_bound_hits_{0};
   std::atomic<double> scale_at_bound_{1.0};
   static_assert(std::atomic<double>::is_always_lock_free, "the loop publishes the scale without a lock");
 };
