@@ -88,6 +88,21 @@ void BM_ObserverStepAllEffects(benchmark::State& state) {
 }
 BENCHMARK(BM_ObserverStepAllEffects);
 
+// The same step for a damper whose every shape differs from the paper's (docs/MODEL.md, "Shapes
+// of another damper"): a yield exponent and ceiling, a Herschel-Bulkley fluid, an atan-like sign
+// and seal friction, what mrd-residual may write into a config.
+void BM_ObserverStepOtherShapes(benchmark::State& state) {
+  mrd::model::DamperModel m;
+  m.fluid.field_exponent = 0.9;
+  m.fluid.saturation_induction = 1.2;
+  m.fluid.saturation_shape = 0.5;
+  m.fluid.flow_index = 0.7;
+  m.geometry.sign_shape = -0.6;
+  m.geometry.seal_friction = 300.0;
+  run_observer_steps(state, m);
+}
+BENCHMARK(BM_ObserverStepOtherShapes);
+
 void BM_CompensatorStep(benchmark::State& state) {
   const mrd::model::DamperModel m;
   mrd::model::JilesAtherton core(m.jiles_atherton, m.circuit, m.integration);

@@ -142,11 +142,17 @@ void read_damper(TomlReader& in, model::DamperModel& d) {
   in.get("damper.fluid.volume_fraction", d.fluid.volume_fraction);
   in.get("damper.fluid.particle_diameter", d.fluid.particle_diameter);
   in.get("damper.fluid.particle_saturation", d.fluid.particle_saturation);
+  in.get("damper.fluid.field_exponent", d.fluid.field_exponent);
+  in.get("damper.fluid.flow_index", d.fluid.flow_index);
+  in.get("damper.fluid.saturation_induction", d.fluid.saturation_induction);
+  in.get("damper.fluid.saturation_shape", d.fluid.saturation_shape);
   in.get("damper.geometry.piston_area", d.geometry.piston_area);
   in.get("damper.geometry.pole_length", d.geometry.pole_length);
   in.get("damper.geometry.gap", d.geometry.gap);
   in.get("damper.geometry.piston_diameter", d.geometry.piston_diameter);
   in.get("damper.geometry.sign_velocity_scale", d.geometry.sign_velocity_scale);
+  in.get("damper.geometry.sign_shape", d.geometry.sign_shape);
+  in.get("damper.geometry.seal_friction", d.geometry.seal_friction);
   read_effects(in, d.effects);
 }
 

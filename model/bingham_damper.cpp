@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "model/saturating_shape.hpp"
+
 namespace mrd::model {
 
 ValidationReport validate(const DamperGeometry& g) {
@@ -12,30 +14,42 @@ ValidationReport validate(const DamperGeometry& g) {
   report.require_positive("gap", g.gap);
   report.require_positive("piston_diameter", g.piston_diameter);
   report.require_positive("sign_velocity_scale", g.sign_velocity_scale);
+  report.require_in_range("sign_shape", g.sign_shape, -1.0, 1.0, false);
+  report.require_non_negative("seal_friction", g.seal_friction);
   if (report.ok() && g.gap >= 0.5 * g.piston_diameter) {
     report.error("gap", "must be much smaller than the piston radius (Eq. 12 assumes a thin gap)");
   }
   return report;
 }
 
-BinghamDamper::BinghamDamper(const DamperGeometry& g, double viscosity)
+BinghamDamper::BinghamDamper(const DamperGeometry& g, double viscosity, double flow_index)
     : yield_gain_(3.0 * g.piston_area * g.pole_length / g.gap),
       viscous_coefficient_(12.0 * viscosity * g.pole_length * g.piston_area * g.piston_area /
                            (std::numbers::pi * g.piston_diameter * g.gap * g.gap * g.gap)),
-      inv_sign_velocity_(1.0 / g.sign_velocity_scale) {}
+      inv_sign_velocity_(1.0 / g.sign_velocity_scale),
+      sign_shape_(g.sign_shape),
+      flow_index_(flow_index),
+      seal_friction_(g.seal_friction) {}
 
-double BinghamDamper::sign_term(double velocity) const { return std::tanh(velocity * inv_sign_velocity_); }
+double BinghamDamper::sign_term(double velocity) const {
+  return saturating_shape(velocity * inv_sign_velocity_, sign_shape_);
+}
+
+double BinghamDamper::viscous_force(double velocity) const {
+  if (flow_index_ == 1.0) return viscous_coefficient_ * velocity;  // Eq. 12
+  const double ratio = std::fabs(velocity) * (1.0 / kFlowReferenceVelocity);
+  return std::copysign(viscous_coefficient_ * kFlowReferenceVelocity * std::pow(ratio, flow_index_), velocity);
+}
 
 double BinghamDamper::force(double velocity, double yield_stress) const {
   // Eq. 12 with the regularised sgn of Eq. 11.
-  return yield_gain_ * yield_stress * std::tanh(velocity * inv_sign_velocity_) +
-         viscous_coefficient_ * velocity;
+  return sliding_force(yield_stress) * sign_term(velocity) + viscous_force(velocity);
 }
 
 double BinghamDamper::yield_stress_for(double force, double velocity) const {
   const double sign = sign_term(velocity);
-  if (sign == 0.0) return std::fabs(force) / yield_gain_;
-  return (force - viscous_coefficient_ * velocity) / (yield_gain_ * sign);  // Eq. 12 for tau_y
+  if (sign == 0.0) return (std::fabs(force) - seal_friction_) / yield_gain_;
+  return (force - viscous_force(velocity)) / (yield_gain_ * sign) - seal_friction_ / yield_gain_;  // Eq. 12 for tau_y
 }
 
 }  // namespace mrd::model

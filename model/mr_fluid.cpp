@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "model/compile_time_fit.hpp"
+#include "model/saturating_shape.hpp"
 
 namespace mrd::model {
 
@@ -17,6 +18,11 @@ ValidationReport validate(const MrFluid& fluid) {
   report.require_in_range("volume_fraction", fluid.volume_fraction, 0.0, 0.74, false);
   report.require_positive("particle_diameter", fluid.particle_diameter);
   report.require_positive("particle_saturation", fluid.particle_saturation);
+  report.require_in_range("field_exponent", fluid.field_exponent, 0.2, 1.5, false);
+  if (fluid.saturation_induction != 0.0)
+    report.require_in_range("saturation_induction", fluid.saturation_induction, 0.02, 50.0, false);
+  report.require_in_range("saturation_shape", fluid.saturation_shape, -1.0, 1.0, false);
+  report.require_in_range("flow_index", fluid.flow_index, 0.3, 2.0, false);
   if (report.ok() && fluid.particle_diameter > 1e-3) {
     report.error("particle_diameter", "must be given in metres (MR particles are 0.1-100 um)");
   }
@@ -27,11 +33,16 @@ YieldStress::YieldStress(const MrFluid& fluid)
     : field_gain_(146960.0 * std::pow(fluid.volume_fraction, 1.706) *
                   std::pow(fluid.particle_diameter * 1e6, 0.2) *  // m -> um, the fit's unit
                   std::pow(fluid.particle_saturation, 0.8)),
-      offset_(1083.2 * fluid.volume_fraction - 287.03) {}
+      offset_(1083.2 * fluid.volume_fraction - 287.03),
+      exponent_(fluid.field_exponent),
+      paper_exponent_(fluid.field_exponent == kEq13FieldExponent),
+      saturation_(fluid.saturation_induction),
+      saturated_power_(saturation_ > 0.0 ? std::pow(saturation_, exponent_) : 0.0),
+      saturation_shape_(fluid.saturation_shape) {}
 
 namespace {
 
-constexpr double kEq13Exponent = 0.5811;
+constexpr double kEq13Exponent = kEq13FieldExponent;
 constexpr int kPowerCoefficients = 8;  // degree 7
 constexpr int kMinBinaryExponent = -32;
 constexpr int kMaxBinaryExponent = 31;
@@ -88,13 +99,25 @@ double eq13_field_power(double abs_B) {
 }
 
 double YieldStress::operator()(double B) const {
-  return std::max(0.0, field_gain_ * eq13_field_power(std::fabs(B)) + offset_);  // Eq. 13
+  const double abs_B = std::fabs(B);
+  const double power = paper_exponent_ ? eq13_field_power(abs_B) : std::pow(abs_B, exponent_);
+  if (saturation_ > 0.0) {
+    // (B / B_s)^n = B^n / B_s^n
+    const double bent = saturated_power_ * saturating_shape(power / saturated_power_, saturation_shape_);
+    return std::max(0.0, field_gain_ * bent + offset_);
+  }
+  return std::max(0.0, field_gain_ * power + offset_);  // Eq. 13
 }
 
 double YieldStress::induction(double tau) const {
   const double field_part = tau - offset_;  // Eq. 13: the B^0.5811 term alone
   if (!(field_part > 0.0) || !(tau > 0.0)) return 0.0;  // also NaN
-  return std::pow(field_part / field_gain_, 1.0 / kEq13Exponent);
+  if (saturation_ > 0.0) {
+    // Past the ceiling no B gives more: the least B within 1e-12 of it.
+    const double share = std::min(field_part / (field_gain_ * saturated_power_), 1.0 - 1e-12);
+    return saturation_ * std::pow(saturating_shape_inverse(share, saturation_shape_), 1.0 / exponent_);
+  }
+  return std::pow(field_part / field_gain_, 1.0 / exponent_);
 }
 
 }  // namespace mrd::model

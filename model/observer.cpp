@@ -8,7 +8,7 @@ Observer::Observer(const DamperModel& model, const ObserverSettings& settings)
     : sample_period_(settings.sample_period),
       magnetics_(model.jiles_atherton, model.circuit, model.integration),
       yield_stress_(model.fluid),
-      damper_(model.geometry, model.fluid.viscosity),
+      damper_(model.geometry, model.fluid.viscosity, model.fluid.flow_index),
       velocity_filter_(settings.sample_period, settings.velocity_cutoff_frequency),
       effects_(model.effects, settings.sample_period) {}
 

@@ -36,7 +36,7 @@ Table4RunResult run_table4(const Table4RunOptions& options) {
   control::ControlLaw law(options.controller);
   sim::DamperPlant plant(options.plant, options.lvdt_noise_rms, options.seed);
   const model::YieldStress yield_stress(options.plant.fluid);
-  const model::BinghamDamper bingham(options.plant.geometry, options.plant.fluid.viscosity);
+  const model::BinghamDamper bingham(options.plant.geometry, options.plant.fluid.viscosity, options.plant.fluid.flow_index);
 
   Table4RunResult result;
   result.trace.reserve(static_cast<std::size_t>(samples));

@@ -97,19 +97,19 @@ IdentifiedController identify_controller(const model::DamperModel& plant, const 
 
   const FitSeries series = simulated_force_run(plant, limits, options);
   const SeriesScales scales = series_scales(series);
-  FittedModel fit = fit_space(base_space(start, start, scales, FieldGain::kKept), series, nullptr, options.seed);
+  FittedModel fit = fit_space(base_space(start, start, scales, Magnetics::kKept), series, nullptr, options.seed);
   if (lag.enabled(plant.effects)) {
     // The lag on the first fit, then the base again with the lag in: the first fit's force
     // scale and viscous term leaned to make up for the lag it did not have.
     fit = fit_space(effect_space(lag, fit.model, scales), series, nullptr, options.seed + 1);
-    const ParameterSpace joint = combine(base_space(fit.model, fit.model, scales, FieldGain::kKept),
+    const ParameterSpace joint = combine(base_space(fit.model, fit.model, scales, Magnetics::kKept),
                                          effect_space(lag, fit.model, scales));
     Point from(joint.bounds.lower.size());
-    from << base_coordinates(fit.model, scales, FieldGain::kKept), effect_coordinates(lag, fit.model, scales);
+    from << base_coordinates(fit.model, fit.model, scales, Magnetics::kKept), effect_coordinates(lag, fit.model, scales);
     fit = refine_space(joint, series, from, 200);
     out.notes.push_back(formatted("coil lag: tau %.2f ms", coil_lag_time_constant(fit.model) * 1e3));
   }
-  const model::BinghamDamper fitted(fit.model.geometry, fit.model.fluid.viscosity);
+  const model::BinghamDamper fitted(fit.model.geometry, fit.model.fluid.viscosity, fit.model.fluid.flow_index);
   const model::BinghamDamper truth(plant.geometry, plant.fluid.viscosity);
   out.notes.push_back(formatted("Bingham: yield gain 3 Ap L / hd %.4f of the plant's, c0 %.4f of it, v_s %.3g mm/s",
                                 fitted.yield_force(1.0) / truth.yield_force(1.0),

@@ -50,7 +50,7 @@ model::DamperModel with_yield_drift(model::DamperModel m, double fraction) {
 
 ReachableForce reachable_force(const model::DamperModel& damper, double min_yield_stress, double max_yield_stress,
                                double desired, double velocity) {
-  const model::BinghamDamper bingham(damper.geometry, damper.fluid.viscosity);
+  const model::BinghamDamper bingham(damper.geometry, damper.fluid.viscosity, damper.fluid.flow_index);
   const double needed = bingham.yield_stress_for(desired, velocity);
   const double tau = std::clamp(needed, min_yield_stress, max_yield_stress);
   // At v = 0 the fluid holds any force up to its yield force (BinghamDamper::yield_stress_for).

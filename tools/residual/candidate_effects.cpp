@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "tools/residual/residual_structure.hpp"
 
@@ -61,38 +64,125 @@ SeriesScales series_scales(const FitSeries& s) {
   return out;
 }
 
-ParameterSpace base_space(const model::DamperModel& origin, const model::DamperModel& start,
-                          const SeriesScales& scales, FieldGain gain) {
-  ParameterSpace space;
-  space.name = "base";
-  space.origin = origin;
-  const double v_lo = std::log10(1e-3 * scales.speed);
-  const double v_hi = std::log10(0.5 * scales.speed);
-  if (scales.current_varies && gain == FieldGain::kFitted) {
-    const auto g = field_gain_range(start);
-    space.parameters = {"log10 field gain [turns/m]", "log10 sign velocity [m/s]"};
-    space.bounds = make_bounds({g, {v_lo, v_hi}});
-    space.edit = [](model::DamperModel m, const Point& p) {
-      set_field_gain(m, p[0]);
-      m.geometry.sign_velocity_scale = std::pow(10.0, p[1]);
-      return m;
-    };
-  } else {
-    space.parameters = {"log10 sign velocity [m/s]"};
-    space.bounds = make_bounds({{v_lo, v_hi}});
-    space.edit = [](model::DamperModel m, const Point& p) {
-      m.geometry.sign_velocity_scale = std::pow(10.0, p[0]);
-      return m;
-    };
+namespace {
+
+// One base coordinate: its name for reports, its physical range in search units, and where it
+// lives in the model.
+struct BaseCoordinate {
+  std::string name;
+  bool changes_induction;
+  std::pair<double, double> range;
+  double (*get)(const model::DamperModel&);
+  void (*set)(model::DamperModel&, double);
+};
+
+double k_over_a(const model::DamperModel& m) { return std::log10(m.jiles_atherton.k / m.jiles_atherton.a); }
+
+std::vector<BaseCoordinate> base_coordinate_table(const model::DamperModel& start, const SeriesScales& scales,
+                                                  Magnetics magnetics) {
+  std::vector<BaseCoordinate> out;
+  magnetics = free_magnetics(scales, magnetics);
+  if (magnetics != Magnetics::kKept) {
+    out.push_back({"log10 field gain [turns/m]", true, field_gain_range(start),
+                   [](const model::DamperModel& m) { return std::log10(m.circuit.turns / m.circuit.effective_length); },
+                   [](model::DamperModel& m, double v) { set_field_gain(m, v); }});
   }
+  if (magnetics == Magnetics::kMaterial) {
+    // Soft irons to hard steels: k / a from 0.05 to 20, c over its whole meaning, and the mean
+    // field short of the anhysteretic's fold (alpha Ms / 3a < 1, docs/MODEL.md).
+    out.push_back({"log10 J-A k/a", true, {std::log10(0.05), std::log10(20.0)}, k_over_a,
+                   [](model::DamperModel& m, double v) { m.jiles_atherton.k = m.jiles_atherton.a * std::pow(10.0, v); }});
+    out.push_back({"J-A c", true, {0.01, 0.95}, [](const model::DamperModel& m) { return m.jiles_atherton.c; },
+                   [](model::DamperModel& m, double v) { m.jiles_atherton.c = v; }});
+    out.push_back({"J-A alpha Ms/3a", true, {0.0, 0.85},
+                   [](const model::DamperModel& m) { return m.jiles_atherton.mean_field_gain(); },
+                   [](model::DamperModel& m, double v) {
+                     m.jiles_atherton.alpha = v * 3.0 * m.jiles_atherton.a / m.jiles_atherton.Ms;
+                   }});
+  }
+  if (scales.current_varies) {
+    // Power laws of MR fluids' yield stress in B run from about 0.3 to 1.2 (Eq. 13: 0.5811).
+    out.push_back({"yield exponent of B", false, {0.25, 1.25}, [](const model::DamperModel& m) { return m.fluid.field_exponent; },
+                   [](model::DamperModel& m, double v) { m.fluid.field_exponent = v; }});
+    // The yield stress's ceiling, from 0.05 T (it bends early: a force record fixes B only up to
+    // the scale that a and Ms share) to 30 T (a plain power law over any induction a core
+    // reaches); a model without one starts at the top.
+    out.push_back({"log10 yield saturation B_s [T]", false, {std::log10(0.05), std::log10(30.0)},
+                   [](const model::DamperModel& m) {
+                     return m.fluid.saturation_induction > 0.0 ? std::log10(m.fluid.saturation_induction) : std::log10(30.0);
+                   },
+                   [](model::DamperModel& m, double v) { m.fluid.saturation_induction = std::pow(10.0, v); }});
+    out.push_back({"yield saturation shape (-1 slow, 0 tanh, 1 knee)", false, {-1.0, 1.0},
+                   [](const model::DamperModel& m) { return m.fluid.saturation_shape; },
+                   [](model::DamperModel& m, double v) { m.fluid.saturation_shape = v; }});
+  }
+  // The sign velocity: from 0.1 % of the run's speed to 15 % of it and at most 50 mm/s, so that
+  // the yield term cannot take the viscous term's place (a v_s near the speed makes s(v) linear).
+  const double v_lo = std::log10(std::max(1e-3 * scales.speed, 1e-6));
+  const double v_hi = std::log10(std::max(std::min(0.15 * scales.speed, 0.05), 2e-6));
+  out.push_back({"log10 sign velocity [m/s]", false, {v_lo, v_hi},
+                 [](const model::DamperModel& m) { return std::log10(m.geometry.sign_velocity_scale); },
+                 [](model::DamperModel& m, double v) { m.geometry.sign_velocity_scale = std::pow(10.0, v); }});
+  out.push_back({"sign shape (-1 atan, 0 tanh, 1 knee)", false, {-1.0, 1.0},
+                 [](const model::DamperModel& m) { return m.geometry.sign_shape; },
+                 [](model::DamperModel& m, double v) { m.geometry.sign_shape = v; }});
+  out.push_back({"flow index n", false, {0.5, 1.5}, [](const model::DamperModel& m) { return m.fluid.flow_index; },
+                 [](model::DamperModel& m, double v) { m.fluid.flow_index = v; }});
+  return out;
+}
+
+}  // namespace
+
+Magnetics free_magnetics(const SeriesScales& scales, Magnetics wanted) {
+  return scales.current_varies ? wanted : Magnetics::kKept;
+}
+
+namespace {
+
+ParameterSpace space_of(const std::vector<BaseCoordinate>& table, const model::DamperModel& origin, std::string name) {
+  ParameterSpace space;
+  space.name = std::move(name);
+  space.origin = origin;
+  const auto n = static_cast<Eigen::Index>(table.size());
+  space.bounds = Bounds{Point(n), Point(n)};
+  std::vector<void (*)(model::DamperModel&, double)> setters;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const BaseCoordinate& c = table[static_cast<std::size_t>(i)];
+    space.parameters.push_back(c.name);
+    space.bounds.lower[i] = c.range.first;
+    space.bounds.upper[i] = c.range.second;
+    setters.push_back(c.set);
+  }
+  space.edit = [setters](model::DamperModel m, const Point& p) {
+    for (std::size_t i = 0; i < setters.size(); ++i) setters[i](m, p[static_cast<Eigen::Index>(i)]);
+    return m;
+  };
   return space;
 }
 
-Point base_coordinates(const model::DamperModel& m, const SeriesScales& scales, FieldGain gain) {
-  const double v = std::log10(m.geometry.sign_velocity_scale);
-  if (!scales.current_varies || gain == FieldGain::kKept) return Point::Constant(1, v);
-  Point p(2);
-  p << std::log10(m.circuit.turns / m.circuit.effective_length), v;
+}  // namespace
+
+ParameterSpace base_space(const model::DamperModel& origin, const model::DamperModel& start,
+                          const SeriesScales& scales, Magnetics magnetics) {
+  return space_of(base_coordinate_table(start, scales, magnetics), origin, "base");
+}
+
+ParameterSpace magnetic_space(const model::DamperModel& origin, const model::DamperModel& start,
+                              const SeriesScales& scales) {
+  std::vector<BaseCoordinate> table = base_coordinate_table(start, scales, Magnetics::kMaterial);
+  std::erase_if(table, [](const BaseCoordinate& c) { return !c.changes_induction; });
+  return space_of(table, origin, "magnetics");
+}
+
+Point base_coordinates(const model::DamperModel& m, const model::DamperModel& start, const SeriesScales& scales,
+                       Magnetics magnetics) {
+  const std::vector<BaseCoordinate> table = base_coordinate_table(start, scales, magnetics);
+  Point p(static_cast<Eigen::Index>(table.size()));
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    // A model outside a range (a config's prior) starts on its edge.
+    const double v = table[i].get(m);
+    p[static_cast<Eigen::Index>(i)] = std::clamp(v, table[i].range.first, table[i].range.second);
+  }
   return p;
 }
 

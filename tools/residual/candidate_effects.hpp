@@ -20,19 +20,34 @@ struct SeriesScales : model::RunScales {
 };
 SeriesScales series_scales(const FitSeries& series);
 
-// The base model's free parameters, set on `origin` (the config's damper, or the default):
-//   log10 of the field gain N / Le [turns/m] (Eq. 9: how fast the current walks up the
-//     material's B-H curve), within 1.5 decades of the origin's, only when the current varies;
-//   log10 of the sign regularisation velocity v_s [m/s] of Eq. 11.
-// With the linear terms (force scale, viscous coefficient) this is the lumped equivalent the
-// docs describe: the J-A material's shape is kept, its scale in current and force is fitted.
-// With FieldGain::kKept the gain stays the origin's, so every point shares the origin's B.
-enum class FieldGain { kFitted, kKept };
+// The base model's free parameters, set on `origin` (the config's damper, or the default), each
+// inside its documented physical range (docs/CLOSING-THE-LOOP.md, "The base fit"):
+//   log10 of the field gain N / Le [turns/m] (Eq. 9), within 1.5 decades of the starting coil's;
+//   the J-A material's shape (Eq. 1-10): log10 k / a, c and alpha Ms / (3 a);
+//   Eq. 13's exponent of B;
+//   log10 of the sign velocity v_s [m/s] and the sign shape (Eq. 11's regularised sgn);
+//   the Herschel-Bulkley flow index n of the viscous term.
+// The force scale, viscous coefficient and seal friction are the linear terms. From a force
+// record only the material's shape is identifiable: a is tied to the field gain (only H / a
+// enters) and Ms to the force scale (B ~ mu0 Ms at the knee); both keep the origin's values.
+// What a run determines decides which coordinates are free (Magnetics): the field and the
+// material only when the current varies; with kKept every point shares the origin's B.
+enum class Magnetics {
+  kMaterial,  // the field gain and the J-A material's shape
+  kGain,      // the field gain alone
+  kKept,      // neither: the origin's B
+};
 ParameterSpace base_space(const model::DamperModel& origin, const model::DamperModel& start,
-                          const SeriesScales& scales, FieldGain gain = FieldGain::kFitted);
+                          const SeriesScales& scales, Magnetics magnetics = Magnetics::kGain);
+// The field gain and the J-A material alone (the coordinates of base_space that change B; none
+// when the current does not vary), the rest of `origin` kept: base_space's first coordinates.
+ParameterSpace magnetic_space(const model::DamperModel& origin, const model::DamperModel& start,
+                              const SeriesScales& scales);
 // The base coordinates of `model` in that space.
-Point base_coordinates(const model::DamperModel& model, const SeriesScales& scales,
-                       FieldGain gain = FieldGain::kFitted);
+Point base_coordinates(const model::DamperModel& model, const model::DamperModel& start,
+                       const SeriesScales& scales, Magnetics magnetics = Magnetics::kGain);
+// What base_space frees for this run: kept fields stay kept.
+Magnetics free_magnetics(const SeriesScales& scales, Magnetics wanted);
 
 // The field gain alone, the rest of `origin` kept (its effects' linear parameters refitted
 // among the linear terms): the magnetic step of a refinement that otherwise shares B.

@@ -95,23 +95,31 @@ ResidualRms residual_rms(const FitSeries& series, const std::vector<double>& pre
 
 namespace {
 
-// At most the base's two columns and this many of the effects'.
-constexpr int kMaxLinearColumns = 8;
+// At most the base's three columns and the effects'.
+constexpr int kMaxLinearColumns = 9;
 using NormalMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxLinearColumns, kMaxLinearColumns>;
 using NormalVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxLinearColumns, 1>;
 
-int column_count(const LinearEffects& effects) {
-  int n = 2;
+int base_column_count(const std::optional<model::BinghamDamper>& shapes) { return shapes ? 3 : 2; }
+
+int column_count(const LinearEffects& effects, const std::optional<model::BinghamDamper>& shapes) {
+  int n = base_column_count(shapes);
   for (const model::EffectInfo* e : effects) n += static_cast<int>(e->linear.size());
   return n;
 }
 
 // Columns of the linear fit at sample i.
 void fill_columns(const FitSeries& s, const std::vector<double>& predicted, const LinearEffects& effects,
-                  std::size_t i, double* column) {
+                  const std::optional<model::BinghamDamper>& shapes, std::size_t i, double* column) {
   column[0] = predicted[i];
-  column[1] = s.velocity[i];
-  int c = 2;
+  int c = 1;
+  if (shapes) {
+    const double c0 = shapes->viscous_coefficient();
+    column[c++] = c0 > 0.0 ? shapes->viscous_force(s.velocity[i]) / c0 : s.velocity[i];
+    column[c++] = shapes->sign_term(s.velocity[i]);
+  } else {
+    column[c++] = s.velocity[i];
+  }
   for (const model::EffectInfo* e : effects) {
     for (const model::LinearColumn kind : e->linear) {
       column[c++] = kind == model::LinearColumn::kConstant ? 1.0 : s.displacement[i];
@@ -130,13 +138,18 @@ struct NonNegative {
   double present;
 };
 
-std::vector<NonNegative> non_negative_columns(const LinearEffects& effects, const model::EffectSet* present) {
+std::vector<NonNegative> non_negative_columns(const LinearEffects& effects, const model::DamperModel* present,
+                                             const std::optional<model::BinghamDamper>& shapes) {
   std::vector<NonNegative> out;
   if (present == nullptr) return out;
-  int c = 2;
+  if (shapes) {
+    out.push_back({1, shapes->viscous_coefficient()});
+    out.push_back({2, shapes->seal_friction()});
+  }
+  int c = base_column_count(shapes);
   for (const model::EffectInfo* e : effects) {
     double values[kMaxLinearColumns] = {};
-    e->linear_values(*present, std::span<double>(values, e->linear.size()));
+    e->linear_values(present->effects, std::span<double>(values, e->linear.size()));
     for (std::size_t k = 0; k < e->linear.size(); ++k, ++c) {
       if (!e->linear_non_negative.empty() && e->linear_non_negative[k]) out.push_back({c, values[k]});
     }
@@ -168,21 +181,23 @@ NormalVector solve_holding(const NormalMatrix& normal, const NormalVector& rhs, 
 }  // namespace
 
 LinearTerms fit_linear_terms(const FitSeries& series, const std::vector<double>& predicted,
-                             const LinearEffects& effects, const model::EffectSet* present) {
-  const int n = column_count(effects);
+                             const LinearEffects& effects, const model::DamperModel* present) {
+  std::optional<model::BinghamDamper> shapes;
+  if (present != nullptr) shapes.emplace(present->geometry, present->fluid.viscosity, present->fluid.flow_index);
+  const int n = column_count(effects, shapes);
   NormalMatrix normal = NormalMatrix::Zero(n, n);
   NormalVector rhs = NormalVector::Zero(n);
   double column[kMaxLinearColumns];
   for (std::size_t i = 0; i < series.size(); ++i) {
     if (series.validation[i] != 0) continue;
-    fill_columns(series, predicted, effects, i, column);
+    fill_columns(series, predicted, effects, shapes, i, column);
     for (int r = 0; r < n; ++r) {
       rhs[r] += column[r] * series.force[i];
       for (int c = 0; c < n; ++c) normal(r, c) += column[r] * column[c];
     }
   }
   // A light ridge keeps the solve defined when a column is all zero (no force predicted at all).
-  const std::vector<NonNegative> signed_columns = non_negative_columns(effects, present);
+  const std::vector<NonNegative> signed_columns = non_negative_columns(effects, present, shapes);
   std::vector<NonNegative> held;
   NormalVector solution = solve_holding(normal, rhs, held);
   // Active set: hold each parameter that the solve drives negative, until none is.
@@ -201,22 +216,25 @@ LinearTerms fit_linear_terms(const FitSeries& series, const std::vector<double>&
   LinearTerms t;
   t.force_scale = std::max(solution[0], 0.0);
   t.extra_viscous = solution[1];
+  const int first = base_column_count(shapes);
+  if (shapes) t.extra_friction = solution[2];
   t.effects = effects;
-  t.coefficients.assign(solution.data() + 2, solution.data() + n);
+  t.coefficients.assign(solution.data() + first, solution.data() + n);
+  t.shapes = shapes;
   return t;
 }
 
 double linear_fit_rms(const FitSeries& series, const std::vector<double>& predicted,
                       const LinearTerms& t) {
-  const int n = column_count(t.effects);
-  double coefficients[kMaxLinearColumns] = {t.force_scale, t.extra_viscous};
-  std::copy(t.coefficients.begin(), t.coefficients.end(), coefficients + 2);
+  const int n = column_count(t.effects, t.shapes);
+  double coefficients[kMaxLinearColumns] = {t.force_scale, t.extra_viscous, t.extra_friction};
+  std::copy(t.coefficients.begin(), t.coefficients.end(), coefficients + base_column_count(t.shapes));
   double sum = 0.0;
   std::size_t count = 0;
   for (std::size_t i = 0; i < series.size(); ++i) {
     if (series.validation[i] != 0) continue;
     double column[kMaxLinearColumns];
-    fill_columns(series, predicted, t.effects, i, column);
+    fill_columns(series, predicted, t.effects, t.shapes, i, column);
     double f = 0.0;
     for (int c = 0; c < n; ++c) f += coefficients[c] * column[c];
     const double r = series.force[i] - f;
@@ -235,6 +253,7 @@ model::DamperModel apply_linear_terms(model::DamperModel m, const LinearTerms& t
   const double target = std::max(a * c0 + t.extra_viscous, 1e-6 * a * c0);
   const model::BinghamDamper scaled(m.geometry, m.fluid.viscosity);
   m.fluid.viscosity *= target / scaled.viscous_coefficient();
+  m.geometry.seal_friction = std::max(a * m.geometry.seal_friction + t.extra_friction, 0.0);
   for (const model::EffectInfo& e : model::effect_infos()) e.scale_force(m.effects, a);
   std::size_t c = 0;
   for (const model::EffectInfo* e : t.effects) {
@@ -251,7 +270,7 @@ double fitness_at(const ParameterSpace& space, const FitSeries& series, const Po
   const model::DamperModel model = space.build(theta);
   if (!model::validate(model).ok()) return 1e300;
   predict_force(model, series, buffer, space.induction.get());
-  const LinearTerms terms = fit_linear_terms(series, buffer, space.linear, &model.effects);
+  const LinearTerms terms = fit_linear_terms(series, buffer, space.linear, &model);
   const double rms = linear_fit_rms(series, buffer, terms);
   return std::isfinite(rms) ? rms : 1e300;
 }
@@ -289,7 +308,7 @@ FittedModel finish(const ParameterSpace& space, const FitSeries& series, const P
   std::vector<double> force;
   const model::DamperModel model = space.build(theta);
   predict_force(model, series, force, space.induction.get());
-  out.linear = fit_linear_terms(series, force, space.linear, &model.effects);
+  out.linear = fit_linear_terms(series, force, space.linear, &model);
   out.fitting_rms = linear_fit_rms(series, force, out.linear);
   out.model = apply_linear_terms(model, out.linear);
   return out;

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -50,30 +51,36 @@ struct ResidualRms {
 ResidualRms residual_rms(const FitSeries& series, const std::vector<double>& predicted);
 
 // Terms fitted by least squares on the fitting samples on top of a model's force F_m:
-//   F = a F_m + b v [+ c_j column_j for the linear columns of `effects`]
+//   F = a F_m + b u(v) [+ f s(v)] [+ c_j column_j for the linear columns of `effects`]
 // a rescales the yield and viscous forces together (the damper's size), b corrects the
-// viscous coefficient, and an effect whose parameters enter the force linearly (a gas
-// spring's F0 + k x) has them solved here too (its descriptor's kLinear). They make the search
-// over the nonlinear parameters cheap: each trial point costs one observer pass.
+// viscous coefficient (u(v) the viscous force per unit c0: v for Bingham, the Herschel-Bulkley
+// shape otherwise), f the seal friction along the model's sign term s(v), and an effect whose
+// parameters enter the force linearly (a gas spring's F0 + k x) has them solved here too (its
+// descriptor's kLinear). They make the search over the nonlinear parameters cheap: each trial
+// point costs one observer pass.
 using LinearEffects = std::vector<const model::EffectInfo*>;
 struct LinearTerms {
   double force_scale = 1.0;    // a [-], >= 0
-  double extra_viscous = 0.0;  // b [N s/m]
+  double extra_viscous = 0.0;  // b [N s/m]; a c0 + b >= 0
+  double extra_friction = 0.0;  // f [N]; a F_s + f >= 0 (only with the model's shapes)
   LinearEffects effects;
   std::vector<double> coefficients;  // c_j, the effects' columns in order
+  // The model's viscous and sign shapes; without them the columns are F_m, v and the effects'.
+  std::optional<model::BinghamDamper> shapes;
 };
-// With `present` (the effects of the model that predicted the force), a coefficient whose
-// parameter must stay >= 0 (the descriptor's kLinearNonNegative) is held where it makes that
-// parameter 0 when the unconstrained solve would make it negative: a physical fit of the
-// others, not a rejected one.
+// With `present` (the model that predicted the force), the base columns take its viscous and
+// sign shapes, and a coefficient whose parameter must stay >= 0 (the viscous coefficient, the
+// seal friction, and an effect's kLinearNonNegative) is held where it makes that parameter 0
+// when the unconstrained solve would make it negative: a physical fit of the others, not a
+// rejected one.
 LinearTerms fit_linear_terms(const FitSeries& series, const std::vector<double>& predicted,
-                             const LinearEffects& effects, const model::EffectSet* present = nullptr);
+                             const LinearEffects& effects, const model::DamperModel* present = nullptr);
 // F_fit - (a F_m + ...) as above, over the fitting samples: the search's fitness [N RMS].
 double linear_fit_rms(const FitSeries& series, const std::vector<double>& predicted,
                       const LinearTerms& terms);
 
 // The model the terms describe: the pole length times a (yield and viscous force scale with
-// it), the viscosity set so that c0 becomes a c0 + b, force-valued effect parameters times a
+// it), the viscosity set so that c0 becomes a c0 + b, the seal friction a F_s + f, force-valued effect parameters times a
 // (each descriptor's scale_force), and the effects' coefficients added. The observer then
 // predicts a F_m + b v + ... exactly for the base model, and closely with effects on
 // (some effects scale b v too); the reports always evaluate the model itself, never this

@@ -16,20 +16,35 @@ struct ModelParameter {
 };
 
 // What the base fit identifies (residual_search.cpp, describe_base): the force scale as the pole
-// length, the viscous coefficient as the viscosity, the sign velocity and, last, the field gain
-// as the coil's turns.
-constexpr std::array<ModelParameter, 4> kParameters = {{
+// length, the viscous coefficient as the viscosity, the seal friction and the sign and flow
+// shapes; then, where the current varies, the field gain as the coil's turns and Eq. 13's
+// exponent; last, where the material is free, the J-A shape (a and Ms are tied to the field gain
+// and the force scale, so they have none of their own).
+constexpr std::size_t kAlways = 6;
+constexpr std::size_t kWithGain = 10;
+constexpr std::array<ModelParameter, 13> kParameters = {{
     {"geometry.pole_length", "m", [](model::DamperModel& m) -> double& { return m.geometry.pole_length; }},
     {"fluid.viscosity", "Pa s", [](model::DamperModel& m) -> double& { return m.fluid.viscosity; }},
+    {"geometry.seal_friction", "N", [](model::DamperModel& m) -> double& { return m.geometry.seal_friction; }},
     {"geometry.sign_velocity_scale", "m/s", [](model::DamperModel& m) -> double& { return m.geometry.sign_velocity_scale; }},
+    {"geometry.sign_shape", "-", [](model::DamperModel& m) -> double& { return m.geometry.sign_shape; }},
+    {"fluid.flow_index", "-", [](model::DamperModel& m) -> double& { return m.fluid.flow_index; }},
     {"circuit.turns", "-", [](model::DamperModel& m) -> double& { return m.circuit.turns; }},
+    {"fluid.field_exponent", "-", [](model::DamperModel& m) -> double& { return m.fluid.field_exponent; }},
+    {"fluid.saturation_induction", "T", [](model::DamperModel& m) -> double& { return m.fluid.saturation_induction; }},
+    {"fluid.saturation_shape", "-", [](model::DamperModel& m) -> double& { return m.fluid.saturation_shape; }},
+    {"jiles_atherton.k", "A/m", [](model::DamperModel& m) -> double& { return m.jiles_atherton.k; }},
+    {"jiles_atherton.c", "-", [](model::DamperModel& m) -> double& { return m.jiles_atherton.c; }},
+    {"jiles_atherton.alpha", "-", [](model::DamperModel& m) -> double& { return m.jiles_atherton.alpha; }},
 }};
 
 }  // namespace
 
 std::vector<ParameterEstimate> model_uncertainty(const model::DamperModel& fitted, const FitSeries& series,
-                                                 bool field_gain) {
-  const std::size_t count = field_gain ? kParameters.size() : kParameters.size() - 1;
+                                                 Magnetics freed) {
+  const std::size_t count = freed == Magnetics::kMaterial ? kParameters.size()
+                            : freed == Magnetics::kGain   ? kWithGain
+                                                          : kAlways;
   std::vector<double> x;
   model::DamperModel probe = fitted;
   for (std::size_t j = 0; j < count; ++j) x.push_back(kParameters[j].field(probe));

@@ -206,11 +206,17 @@ std::string updated_config(std::string_view config_text, const ResidualResult& r
   set("fluid", "volume_fraction", m.fluid.volume_fraction);
   set("fluid", "particle_diameter", m.fluid.particle_diameter);
   set("fluid", "particle_saturation", m.fluid.particle_saturation);
+  set("fluid", "field_exponent", m.fluid.field_exponent);
+  set("fluid", "flow_index", m.fluid.flow_index);
+  set("fluid", "saturation_induction", m.fluid.saturation_induction);
+  set("fluid", "saturation_shape", m.fluid.saturation_shape);
   set("geometry", "piston_area", m.geometry.piston_area);
   set("geometry", "pole_length", m.geometry.pole_length);
   set("geometry", "gap", m.geometry.gap);
   set("geometry", "piston_diameter", m.geometry.piston_diameter);
   set("geometry", "sign_velocity_scale", m.geometry.sign_velocity_scale);
+  set("geometry", "sign_shape", m.geometry.sign_shape);
+  set("geometry", "seal_friction", m.geometry.seal_friction);
   toml::table effects = toml::parse(config::effects_toml(m.effects));
   damper.insert_or_assign("effects", *effects["damper"]["effects"].as_table());
   toml::table values;

@@ -35,18 +35,42 @@ std::vector<std::string> describe_base(const ParameterSpace& space, const Fitted
                                        const model::DamperModel& start) {
   std::vector<std::string> lines;
   const model::DamperModel& m = fit.model;
-  const model::BinghamDamper damper(m.geometry, m.fluid.viscosity);
+  const model::BinghamDamper damper(m.geometry, m.fluid.viscosity, m.fluid.flow_index);
   lines.push_back(format("force scale %.4g of the starting damper (pole length %.4g m)",
                          fit.linear.force_scale, m.geometry.pole_length));
-  lines.push_back(format("viscous coefficient c0 %.4g N s/m (viscosity %.4g Pa s)",
-                         damper.viscous_coefficient(), m.fluid.viscosity));
-  lines.push_back(format("sign velocity v_s %.4g m/s", m.geometry.sign_velocity_scale));
-  if (space.bounds.dimension() == 2)
-    lines.push_back(format("field gain %.4g turns/m (%.4g x the starting coil's)",
-                           m.circuit.turns / m.circuit.effective_length,
-                           m.circuit.turns / start.circuit.turns));
-  else
-    lines.push_back("field gain kept: the current does not vary, so it cannot be identified");
+  lines.push_back(format("viscous coefficient c0 %.4g N s/m (viscosity %.4g Pa s), flow index n %.3g",
+                         damper.viscous_coefficient(), m.fluid.viscosity, m.fluid.flow_index));
+  lines.push_back(format("seal friction %.4g N", m.geometry.seal_friction));
+  lines.push_back(format("sign velocity v_s %.4g m/s, sign shape %.3g (-1 atan, 0 tanh, 1 knee)",
+                         m.geometry.sign_velocity_scale, m.geometry.sign_shape));
+  const bool gain = std::ranges::find(space.parameters, std::string("log10 field gain [turns/m]")) != space.parameters.end();
+  const bool material = std::ranges::find(space.parameters, std::string("J-A c")) != space.parameters.end();
+  if (gain) {
+    lines.push_back(format("field gain %.4g turns/m (%.4g x the starting coil's), yield exponent of B %.4g, "
+                           "yield saturation B_s %.3g T (shape %.3g)",
+                           m.circuit.turns / m.circuit.effective_length, m.circuit.turns / start.circuit.turns,
+                           m.fluid.field_exponent, m.fluid.saturation_induction, m.fluid.saturation_shape));
+  } else {
+    lines.push_back("field gain, J-A material and yield exponent kept: the current does not vary, so they cannot be identified");
+  }
+  if (material) {
+    const model::JilesAthertonParams& ja = m.jiles_atherton;
+    lines.push_back(format("J-A material: k %.4g A/m, c %.3g, alpha %.4g (alpha Ms/3a %.3g); a %.4g A/m and Ms %.4g A/m "
+                           "kept from the start (a force record fixes only H/a and the force scale)",
+                           ja.k, ja.c, ja.alpha, ja.mean_field_gain(), ja.a, ja.Ms));
+    if (!(start.jiles_atherton == model::JilesAthertonParams{}))
+      lines.push_back(format("the config's J-A material (a prior): k %.4g A/m, c %.3g, alpha %.4g",
+                             start.jiles_atherton.k, start.jiles_atherton.c, start.jiles_atherton.alpha));
+  }
+  // A coordinate on its range's edge: the run asks for more than the physical range allows.
+  const Point theta = fit.theta;
+  for (Eigen::Index i = 0; i < theta.size() && i < space.bounds.dimension(); ++i) {
+    const double span = space.bounds.upper[i] - space.bounds.lower[i];
+    if (theta[i] <= space.bounds.lower[i] + 1e-3 * span || theta[i] >= space.bounds.upper[i] - 1e-3 * span)
+      lines.push_back(format("%s at the edge of its physical range [%.3g, %.3g]",
+                             space.parameters[static_cast<std::size_t>(i)].c_str(), space.bounds.lower[i],
+                             space.bounds.upper[i]));
+  }
   return lines;
 }
 
@@ -82,29 +106,30 @@ FittedModel refine_jointly(const model::DamperModel& origin, const Effects& effe
       std::ranges::any_of(model::effect_infos(), [&](const model::EffectInfo& e) {
         return e.changes_induction && e.enabled(origin.effects);
       });
-  const FieldGain gain = shapes_induction ? FieldGain::kFitted : FieldGain::kKept;
+  const Magnetics gain = free_magnetics(scales, shapes_induction ? Magnetics::kGain : Magnetics::kKept);
   FittedModel fit;
   fit.model = origin;
   fit.theta = effect_start;
   for (const RefinePass& pass : passes) {
     ParameterSpace joint = base_space(fit.model, start, scales, gain);
     for (const model::EffectInfo* e : effects) joint = combine(joint, effect_space(*e, fit.model, scales));
-    if (gain == FieldGain::kKept) {
+    if (gain == Magnetics::kKept) {
       // A new trace only when the gain step moved the magnetics.
       if (!induction || !induction->serves(fit.model))
         induction = std::make_shared<const InductionTrace>(fit.model, series);
       joint.induction = induction;
     }
-    const Point base = base_coordinates(fit.model, scales, gain);
+    const Point base = base_coordinates(fit.model, start, scales, gain);
     Point from(joint.bounds.dimension());
     from << base, fit.theta;
     const auto dimension = static_cast<int>(joint.bounds.dimension());
     fit = refine_space(joint, series, from, 10 + pass.evaluations_per_coordinate * dimension, pass.step);
     evaluations += fit.evaluations;
     fit.theta = fit.theta.tail(fit.theta.size() - base.size()).eval();
-    if (gain == FieldGain::kKept && pass.gain_evaluations > 0 && scales.current_varies) {
+    if (gain == Magnetics::kKept && pass.gain_evaluations > 0 && scales.current_varies) {
       const Point effects_theta = fit.theta;
-      fit = refine_space(field_gain_space(fit.model, start), series, base_coordinates(fit.model, scales).head(1),
+      fit = refine_space(field_gain_space(fit.model, start), series,
+                         base_coordinates(fit.model, start, scales, Magnetics::kGain).head(1),
                          pass.gain_evaluations, pass.step);
       evaluations += fit.evaluations;
       fit.theta = effects_theta;
@@ -153,16 +178,65 @@ struct Search {
   }
 };
 
-// Step 2: the base model, a swarm on the windows and Nelder-Mead on the whole fitting series.
-FittedModel fit_base_model(Search& s, ParameterSpace& space) {
+// Nelder-Mead from `from`, restarted from its best while that still pays: a simplex in eight
+// coordinates collapses along the ridges that the material's shape and the yield law share.
+FittedModel refine_with_restarts(Search& s, const ParameterSpace& space, const FitSeries& series, const Point& from) {
+  const auto dimension = static_cast<int>(space.bounds.dimension());
+  FittedModel best = refine_space(space, series, from, 20 + 30 * dimension, 0.05);
+  s.evaluations += best.evaluations;
+  for (int restart = 0; restart < 2; ++restart) {
+    const FittedModel again = refine_space(space, series, best.theta, 20 + 30 * dimension, 0.05);
+    s.evaluations += again.evaluations;
+    const bool paid = again.fitting_rms < (1.0 - 1e-3) * best.fitting_rms;
+    if (again.fitting_rms < best.fitting_rms) best = again;
+    if (!paid) break;
+  }
+  return best;
+}
+
+// The effects of `model` whose parameters enter the force linearly: refitted among the linear
+// terms while the base moves.
+LinearEffects linear_effects_of(const model::DamperModel& model) {
+  LinearEffects out;
+  for (const model::EffectInfo& e : model::effect_infos()) {
+    if (!e.linear.empty() && e.enabled(model.effects)) out.push_back(&e);
+  }
+  return out;
+}
+
+// The base identified on `origin` (its effects kept, their linear parameters refitted among the
+// linear terms): the improved PSO over every base coordinate on the windows, J-A's sub-steps
+// capped at 64 a sample while it explores (a trial at 30x the field gain and a twentieth of the
+// pinning would otherwise take 600x the sub-steps of the origin); Nelder-Mead with restarts on the
+// windows from the swarm's best and, with `from_origin`, from the origin's coordinates (the
+// config's damper, a prior, or a model already fitted); then Nelder-Mead on the whole fitting series from the better. `space` is
+// the whole space.
+FittedModel identify_base(Search& s, const model::DamperModel& origin, ParameterSpace& space, bool from_origin) {
   const model::DamperModel& start = s.options.start;
-  if (s.options.progress != nullptr) s.options.progress->report({.stage = "base fit"});
-  space = base_space(start, start, s.scales);
+  space = base_space(origin, start, s.scales, Magnetics::kMaterial);
+  space.linear = linear_effects_of(origin);
+  ParameterSpace exploring = space;
+  exploring.origin.integration.max_substeps = std::min(exploring.origin.integration.max_substeps, 64);
   const FittedModel swarm =
-      fit_space(space, s.swarm_series, &s.pool, s.seed++, 2 * s.options.evaluations_per_parameter);
-  const FittedModel base = refine_space(space, s.fit_series, swarm.theta, 60, 0.02);
-  s.evaluations += swarm.evaluations + base.evaluations;
-  return base;
+      fit_space(exploring, s.swarm_series, &s.pool, s.seed++, 2 * s.options.evaluations_per_parameter);
+  s.evaluations += swarm.evaluations;
+  FittedModel best = refine_with_restarts(s, space, s.swarm_series, swarm.theta);
+  if (from_origin) {
+    const FittedModel local =
+        refine_with_restarts(s, space, s.swarm_series, base_coordinates(origin, start, s.scales, Magnetics::kMaterial));
+    if (local.fitting_rms < best.fitting_rms) best = local;
+  }
+  if (s.swarm_series.size() == s.fit_series.size()) return best;
+  const auto dimension = static_cast<int>(space.bounds.dimension());
+  const FittedModel whole = refine_space(space, s.fit_series, best.theta, 20 + 15 * dimension, 0.01);
+  s.evaluations += whole.evaluations;
+  return whole;
+}
+
+// Step 2: the base model from the start's damper.
+FittedModel fit_base_model(Search& s, ParameterSpace& space) {
+  if (s.options.progress != nullptr) s.options.progress->report({.stage = "base fit"});
+  return identify_base(s, s.options.start, space, true);
 }
 
 // The candidates: the options' names (default: every effect), less those the start declares.
@@ -306,11 +380,17 @@ Effects ambiguous_with_winner(Round& round, const Effects& candidates, std::size
 // together), so the next round's candidates are not credited with what a longer refinement of
 // this one would have found. Kept only if it validates at least as well: the polish minimises
 // the fitting error.
+//
+// First the base is identified again with the effects in (identify_base): a base fitted without
+// an effect bends its material, yield law and shapes to stand in for it, and the joint
+// refinement alone, which keeps the magnetics, cannot climb back from there.
 model::DamperModel polish_accepted(Search& s, const model::DamperModel& accepted, const Effects& effects,
                                    double& validation) {
+  ParameterSpace space;
+  const model::DamperModel rebased = identify_base(s, accepted, space, true).model;
   std::int64_t spent = 0;
   const model::DamperModel polished =
-      refine_jointly(accepted, effects, effect_coordinates(effects, accepted, s.scales),
+      refine_jointly(rebased, effects, effect_coordinates(effects, rebased, s.scales),
                      {{20, 0.02, 20}, {20, 0.005}, {20, 0.005}}, s.options.start, s.scales, s.fit_series, spent)
           .model;
   s.evaluations += spent;
@@ -682,7 +762,7 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   for (std::size_t i = 0; i < full.size(); ++i) kept[i] = full.validation[i] != FitSeries::kExcluded;
   result.fit_before_percent = nrmse_fit_percent(full.force, result.predicted_before, kept);
   result.fit_after_percent = nrmse_fit_percent(full.force, result.predicted_after, kept);
-  result.parameters = model_uncertainty(result.final_model, s.fit_series, base_fit_space.bounds.dimension() == 2);
+  result.parameters = model_uncertainty(result.final_model, s.fit_series, free_magnetics(s.scales, Magnetics::kMaterial));
   result.unexplained = describe(result.structure_after);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return result;

@@ -25,7 +25,7 @@ TEST(ModelFit, LinearTermsAreTheModelTheyDescribe) {
   std::vector<double> f, scaled;
   predict_force(base, s, f);
   // The gas spring's F0 and k are linear columns (its descriptor's kLinear).
-  const LinearTerms t{0.37, 2500.0, {mrd::model::find_effect("gas_spring")}, {120.0, 4000.0}};
+  const LinearTerms t{0.37, 2500.0, 0.0, {mrd::model::find_effect("gas_spring")}, {120.0, 4000.0}};
   predict_force(apply_linear_terms(base, t), s, scaled);
   double worst = 0.0, largest = 0.0;
   for (std::size_t i = 0; i < s.size(); ++i) {

@@ -1,0 +1,141 @@
+// The base model's shapes beyond the paper's (docs/MODEL.md, "Shapes of another damper"): each
+// against an analytic limit or a closed form it must meet, not against its own code.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "model/bingham_damper.hpp"
+#include "model/mr_fluid.hpp"
+#include "model/saturating_shape.hpp"
+
+namespace {
+
+using mrd::model::BinghamDamper;
+using mrd::model::DamperGeometry;
+using mrd::model::MrFluid;
+using mrd::model::saturating_shape;
+using mrd::model::YieldStress;
+
+double slope_at_rest(double shape) {
+  const double h = 1e-6;
+  return (saturating_shape(h, shape) - saturating_shape(-h, shape)) / (2.0 * h);
+}
+
+TEST(SignShape, EveryShapeIsOddWithSlopeOneAtRestAndReachesOne) {
+  for (const double q : {-1.0, -0.4, 0.0, 0.3, 1.0}) {
+    EXPECT_NEAR(slope_at_rest(q), 1.0, 1e-6) << q;
+    for (const double x : {0.05, 0.7, 3.0}) EXPECT_DOUBLE_EQ(saturating_shape(-x, q), -saturating_shape(x, q));
+    EXPECT_NEAR(saturating_shape(1e5, q), 1.0, 1e-4) << q;
+    EXPECT_LE(std::fabs(saturating_shape(2.0, q)), 1.0);
+  }
+}
+
+TEST(SignShape, HoldsTanhAtanAndTheKneeAtItsMarks) {
+  // tanh at 0: at x = 3 it is 0.99505 (the 99.5 % point at three scales).
+  EXPECT_NEAR(saturating_shape(3.0, 0.0), 0.995055, 1e-6);
+  // atan at -1: its tail 1 - s(x) approaches 4 / (pi^2 x), an algebraic 1/x decay that tanh has not.
+  const double x = 1000.0;
+  EXPECT_NEAR((1.0 - saturating_shape(x, -1.0)) * std::numbers::pi * std::numbers::pi * x / 4.0, 1.0, 1e-3);
+  EXPECT_LT(1.0 - saturating_shape(20.0, 0.0), 1e-15);
+  // The knee at +1: linear to within 0.1 % up to x = 0.5, flat to within 0.1 % from x = 2.5.
+  EXPECT_NEAR(saturating_shape(0.5, 1.0) / 0.5, 1.0, 1e-3);
+  EXPECT_NEAR(saturating_shape(2.5, 1.0), 1.0, 1e-3);
+  EXPECT_LT(saturating_shape(0.5, 0.0) / 0.5, 0.95);  // tanh is already bending there
+}
+
+TEST(SignShape, IsMonotoneInTheShapeBetweenTheForms) {
+  // At x = 1.5 the knee is nearly flat, tanh at 0.905, atan lower: the blend moves between them.
+  double previous = -1.0;
+  for (double q = -1.0; q <= 1.0; q += 0.25) {
+    const double s = saturating_shape(1.5, q);
+    EXPECT_GT(s, previous) << q;
+    previous = s;
+  }
+}
+
+TEST(HerschelBulkley, IsBinghamAtIndexOneAndAPowerLawOtherwise) {
+  const DamperGeometry g;
+  const BinghamDamper bingham(g, 2.25);
+  const BinghamDamper thinning(g, 2.25, 0.6);
+  const double c0 = bingham.viscous_coefficient();
+  EXPECT_DOUBLE_EQ(bingham.viscous_force(0.037), c0 * 0.037);
+  // At the reference velocity every index gives c0 v_ref; doubling v multiplies the force by 2^n.
+  EXPECT_NEAR(thinning.viscous_force(mrd::model::kFlowReferenceVelocity), c0 * mrd::model::kFlowReferenceVelocity,
+              1e-9 * c0);
+  EXPECT_NEAR(thinning.viscous_force(0.08) / thinning.viscous_force(0.04), std::pow(2.0, 0.6), 1e-12);
+  EXPECT_DOUBLE_EQ(thinning.viscous_force(-0.05), -thinning.viscous_force(0.05));
+  // Shear thinning: more force than Bingham below v_ref, less above.
+  EXPECT_GT(thinning.viscous_force(0.01), bingham.viscous_force(0.01));
+  EXPECT_LT(thinning.viscous_force(0.5), bingham.viscous_force(0.5));
+}
+
+TEST(SealFriction, AddsAConstantForceAgainstTheMotionAndInvertsWithTheYieldStress) {
+  DamperGeometry g;
+  g.seal_friction = 120.0;
+  const BinghamDamper with(g, 2.25);
+  const BinghamDamper without(DamperGeometry{}, 2.25);
+  // At 0 A and well past v_s the difference is the friction; against the motion both ways.
+  EXPECT_NEAR(with.force(0.1, 0.0) - without.force(0.1, 0.0), 120.0, 1e-9);
+  EXPECT_NEAR(with.force(-0.1, 0.0) - without.force(-0.1, 0.0), -120.0, 1e-9);
+  for (const double tau : {0.0, 5e3, 4e4}) {
+    for (const double v : {-0.2, -0.003, 0.0005, 0.05}) {
+      EXPECT_NEAR(with.yield_stress_for(with.force(v, tau), v), tau, 1e-6 * (tau + 1.0)) << v << " " << tau;
+    }
+  }
+}
+
+TEST(YieldExponent, FollowsItsPowerLawAboveTheOffsetAndInverts) {
+  MrFluid fluid;
+  fluid.field_exponent = 0.9;
+  const YieldStress tau(fluid);
+  const double offset = tau.zero_field_stress();
+  EXPECT_NEAR((tau(0.8) - offset) / (tau(0.4) - offset), std::pow(2.0, 0.9), 1e-12);
+  EXPECT_NEAR(tau.induction(tau(0.63)), 0.63, 1e-12);
+  // The paper's exponent takes the tabulated power and agrees with std::pow.
+  const YieldStress paper{MrFluid{}};
+  MrFluid nearly;
+  nearly.field_exponent = std::nextafter(mrd::model::kEq13FieldExponent, 1.0);
+  EXPECT_NEAR(paper(0.7), YieldStress(nearly)(0.7), 1e-9 * paper(0.7));
+}
+
+TEST(YieldSaturation, IsThePowerLawBelowBsAndACeilingAboveAndInverts) {
+  MrFluid power;
+  power.field_exponent = 1.0;
+  MrFluid bent = power;
+  bent.saturation_induction = 0.8;
+  const YieldStress plain(power), saturating(bent);
+  const double offset = plain.zero_field_stress();
+  const double gain = plain(1.0) - offset;  // [Pa / T] at n = 1
+  // n = 1: the tanh law tau = gain B_s tanh(B / B_s), exactly.
+  for (const double B : {0.01, 0.4, 0.8, 1.6}) {
+    EXPECT_NEAR(saturating(B) - offset, gain * 0.8 * std::tanh(B / 0.8), 1e-9 * gain) << B;
+  }
+  // Far below B_s the power law; far above, the ceiling gain B_s^n.
+  EXPECT_NEAR((saturating(0.008) - offset) / (plain(0.008) - offset), 1.0, 1e-4);
+  EXPECT_NEAR(saturating(40.0) - offset, gain * 0.8, 1e-9 * gain);
+  EXPECT_NEAR(saturating.induction(saturating(0.9)), 0.9, 1e-9);
+  // Above the ceiling no B gives the stress: the answer is finite and gives the ceiling.
+  const double beyond = saturating.induction(offset + 2.0 * gain * 0.8);
+  EXPECT_TRUE(std::isfinite(beyond));
+  EXPECT_NEAR(saturating(beyond) - offset, gain * 0.8, 1e-6 * gain);
+}
+
+TEST(ShapeParameters, OutsideTheirPhysicalRangesAreErrorsNamingTheField) {
+  MrFluid fluid;
+  fluid.field_exponent = 3.0;
+  fluid.flow_index = 0.1;
+  fluid.saturation_induction = 0.01;
+  const auto r = mrd::model::validate(fluid);
+  EXPECT_TRUE(r.mentions("saturation_induction"));
+  EXPECT_TRUE(r.mentions("field_exponent"));
+  EXPECT_TRUE(r.mentions("flow_index"));
+  DamperGeometry g;
+  g.sign_shape = 1.5;
+  g.seal_friction = -1.0;
+  const auto q = mrd::model::validate(g);
+  EXPECT_TRUE(q.mentions("sign_shape"));
+  EXPECT_TRUE(q.mentions("seal_friction"));
+}
+
+}  // namespace
