@@ -38,7 +38,9 @@ struct ForceInverseOptions {
 // there by the end of the period (Eq. 1-10, HysteresisCompensator::current_for) -> the command
 // that makes that current flow through the coil lag. Bounded by the driver's range and slew.
 // Worst case: HysteresisCompensator's (2 + max_iterations integrations of Eq. 10 over one
-// period's reachable current) plus one pow; no heap, no exceptions, no I/O.
+// period's reachable current) plus one pow, and for a fluid whose yield stress saturates with a
+// blended knee (0 < |saturation_shape| < 1) the bisection of saturating_shape_inverse, at most
+// 200 evaluations of the shape; no heap, no exceptions, no I/O.
 class ForceInverse {
  public:
   // The inverse of `observer`'s model; step() must be given that observer, after its step.

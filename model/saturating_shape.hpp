@@ -9,8 +9,9 @@ namespace mrd::model {
 // the yield stress's saturation in B (MrFluid::saturation_shape) take their shape from it.
 double saturating_shape(double x, double q);
 
-// The x >= 0 with saturating_shape(x, q) = y, for 0 <= y < 1 (bisection to the last bits; no
-// heap, at most 200 steps). y >= 1 has no answer: it returns +infinity.
+// The x >= 0 with saturating_shape(x, q) = y, for 0 <= y < 1: closed forms at q = -1, 0 and +1,
+// a bisection to the last bits between (no heap, at most 164 evaluations). y >= 1 has no answer:
+// it returns +infinity.
 double saturating_shape_inverse(double y, double q);
 
 }  // namespace mrd::model

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "model/bingham_damper.hpp"
@@ -52,6 +53,23 @@ TEST(SignShape, IsMonotoneInTheShapeBetweenTheForms) {
     EXPECT_GT(s, previous) << q;
     previous = s;
   }
+}
+
+TEST(SignShape, InverseRoundTripsEveryShapeAndRefusesTheCeiling) {
+  EXPECT_NEAR(mrd::model::saturating_shape_inverse(std::tanh(0.8), 0.0), 0.8, 1e-12);
+  // atan's closed-form inverse at q = -1: x = (2 / pi) tan(pi y / 2).
+  EXPECT_NEAR(mrd::model::saturating_shape_inverse(0.9, -1.0), 2.0 / std::numbers::pi * std::tan(0.45 * std::numbers::pi),
+              1e-9);
+  for (const double q : {-0.5, 0.4, 1.0}) {
+    for (const double x : {0.01, 0.9, 3.0}) {
+      EXPECT_NEAR(mrd::model::saturating_shape_inverse(saturating_shape(x, q), q), x, 1e-9 * (1.0 + x)) << q << " " << x;
+    }
+  }
+  EXPECT_TRUE(std::isinf(mrd::model::saturating_shape_inverse(1.0, 0.5)));
+  // The knee is written in 1/x beyond 1: no overflow to 0 or NaN at the ends of the doubles.
+  EXPECT_EQ(saturating_shape(1e300, 1.0), 1.0);
+  EXPECT_EQ(saturating_shape(-std::numeric_limits<double>::infinity(), 1.0), -1.0);
+  EXPECT_EQ(mrd::model::saturating_shape_inverse(0.0, 0.5), 0.0);
 }
 
 TEST(HerschelBulkley, IsBinghamAtIndexOneAndAPowerLawOtherwise) {
@@ -119,6 +137,25 @@ TEST(YieldSaturation, IsThePowerLawBelowBsAndACeilingAboveAndInverts) {
   const double beyond = saturating.induction(offset + 2.0 * gain * 0.8);
   EXPECT_TRUE(std::isfinite(beyond));
   EXPECT_NEAR(saturating(beyond) - offset, gain * 0.8, 1e-6 * gain);
+}
+
+TEST(YieldSaturation, AtAnotherExponentBendsAtBsToThePowerNAndInvertsThroughTheBlend) {
+  MrFluid bent;
+  bent.field_exponent = 0.8;
+  bent.saturation_induction = 0.9;
+  bent.saturation_shape = 0.5;
+  const YieldStress tau(bent);
+  MrFluid plain_fluid;
+  plain_fluid.field_exponent = 0.8;
+  const YieldStress plain(plain_fluid);
+  const double offset = plain.zero_field_stress();
+  const double gain = plain(1.0) - offset;  // [Pa / T^0.8]
+  // The ceiling is gain B_s^0.8 (not gain B_s), reached far above B_s.
+  EXPECT_NEAR(tau(500.0) - offset, gain * std::pow(0.9, 0.8), 1e-6 * gain);
+  // At B = B_s: (B / B_s)^n = 1, the blend of tanh(1) and the knee's 1 / 2^(1/8) half and half.
+  EXPECT_NEAR(tau(0.9) - offset, gain * std::pow(0.9, 0.8) * (0.5 * std::tanh(1.0) + 0.5 / std::pow(2.0, 0.125)),
+              1e-9 * gain);
+  for (const double B : {0.05, 0.6, 1.4}) EXPECT_NEAR(tau.induction(tau(B)), B, 1e-9) << B;
 }
 
 TEST(ShapeParameters, OutsideTheirPhysicalRangesAreErrorsNamingTheField) {

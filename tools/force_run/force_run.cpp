@@ -54,7 +54,7 @@ ReachableForce reachable_force(const model::DamperModel& damper, double min_yiel
   const double needed = bingham.yield_stress_for(desired, velocity);
   const double tau = std::clamp(needed, min_yield_stress, max_yield_stress);
   // At v = 0 the fluid holds any force up to its yield force (BinghamDamper::yield_stress_for).
-  const double force = velocity == 0.0 ? std::copysign(bingham.yield_force(tau), desired) : bingham.force(velocity, tau);
+  const double force = velocity == 0.0 ? std::copysign(bingham.sliding_force(tau), desired) : bingham.force(velocity, tau);
   return {force, needed >= min_yield_stress && needed <= max_yield_stress};
 }
 

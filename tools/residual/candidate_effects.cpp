@@ -105,13 +105,15 @@ std::vector<BaseCoordinate> base_coordinate_table(const model::DamperModel& star
     out.push_back({"yield exponent of B", false, {0.25, 1.25}, [](const model::DamperModel& m) { return m.fluid.field_exponent; },
                    [](model::DamperModel& m, double v) { m.fluid.field_exponent = v; }});
     // The yield stress's ceiling, from 0.05 T (it bends early: a force record fixes B only up to
-    // the scale that a and Ms share) to 30 T (a plain power law over any induction a core
-    // reaches); a model without one starts at the top.
+    // the scale that a and Ms share) to the top, 30 T, which is none (Eq. 13's plain power law).
     out.push_back({"log10 yield saturation B_s [T]", false, {std::log10(0.05), std::log10(30.0)},
                    [](const model::DamperModel& m) {
                      return m.fluid.saturation_induction > 0.0 ? std::log10(m.fluid.saturation_induction) : std::log10(30.0);
                    },
-                   [](model::DamperModel& m, double v) { m.fluid.saturation_induction = std::pow(10.0, v); }});
+                   [](model::DamperModel& m, double v) {
+                     // The top of the range is no saturation at all, so the paper's law is a point of it.
+                     m.fluid.saturation_induction = v >= std::log10(30.0) - 1e-9 ? 0.0 : std::pow(10.0, v);
+                   }});
     out.push_back({"yield saturation shape (-1 slow, 0 tanh, 1 knee)", false, {-1.0, 1.0},
                    [](const model::DamperModel& m) { return m.fluid.saturation_shape; },
                    [](model::DamperModel& m, double v) { m.fluid.saturation_shape = v; }});

@@ -100,23 +100,40 @@ constexpr int kMaxLinearColumns = 9;
 using NormalMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxLinearColumns, kMaxLinearColumns>;
 using NormalVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxLinearColumns, 1>;
 
-int base_column_count(const std::optional<model::BinghamDamper>& shapes) { return shapes ? 3 : 2; }
+// The base columns: F_m, the viscous shape and, with shapes and a friction column, the sign term.
+struct BaseColumns {
+  const std::optional<model::BinghamDamper>& shapes;
+  bool friction;
+  [[nodiscard]] bool has_friction() const { return shapes && friction; }
+};
 
-int column_count(const LinearEffects& effects, const std::optional<model::BinghamDamper>& shapes) {
-  int n = base_column_count(shapes);
+int base_column_count(const BaseColumns& base) { return base.has_friction() ? 3 : 2; }
+
+// At a constant current the model's force is (yield + friction) s(v) + c0 u(v): the force scale
+// and a friction column would be the same direction, split by the ridge and not by the data.
+bool current_varies(const FitSeries& s) {
+  if (s.current.empty()) return false;
+  const auto [lo, hi] = std::minmax_element(s.current.begin(), s.current.end());
+  const double largest = std::max(std::fabs(*lo), std::fabs(*hi));
+  return largest > 0.0 && (*hi - *lo) > 0.05 * largest;
+}
+
+int column_count(const LinearEffects& effects, const BaseColumns& base) {
+  int n = base_column_count(base);
   for (const model::EffectInfo* e : effects) n += static_cast<int>(e->linear.size());
   return n;
 }
 
 // Columns of the linear fit at sample i.
 void fill_columns(const FitSeries& s, const std::vector<double>& predicted, const LinearEffects& effects,
-                  const std::optional<model::BinghamDamper>& shapes, std::size_t i, double* column) {
+                  const BaseColumns& base, std::size_t i, double* column) {
+  const std::optional<model::BinghamDamper>& shapes = base.shapes;
   column[0] = predicted[i];
   int c = 1;
   if (shapes) {
     const double c0 = shapes->viscous_coefficient();
     column[c++] = c0 > 0.0 ? shapes->viscous_force(s.velocity[i]) / c0 : s.velocity[i];
-    column[c++] = shapes->sign_term(s.velocity[i]);
+    if (base.friction) column[c++] = shapes->sign_term(s.velocity[i]);
   } else {
     column[c++] = s.velocity[i];
   }
@@ -139,14 +156,15 @@ struct NonNegative {
 };
 
 std::vector<NonNegative> non_negative_columns(const LinearEffects& effects, const model::DamperModel* present,
-                                             const std::optional<model::BinghamDamper>& shapes) {
+                                             const BaseColumns& base) {
+  const std::optional<model::BinghamDamper>& shapes = base.shapes;
   std::vector<NonNegative> out;
   if (present == nullptr) return out;
   if (shapes) {
     out.push_back({1, shapes->viscous_coefficient()});
-    out.push_back({2, shapes->seal_friction()});
+    if (base.friction) out.push_back({2, shapes->seal_friction()});
   }
-  int c = base_column_count(shapes);
+  int c = base_column_count(base);
   for (const model::EffectInfo* e : effects) {
     double values[kMaxLinearColumns] = {};
     e->linear_values(present->effects, std::span<double>(values, e->linear.size()));
@@ -184,20 +202,21 @@ LinearTerms fit_linear_terms(const FitSeries& series, const std::vector<double>&
                              const LinearEffects& effects, const model::DamperModel* present) {
   std::optional<model::BinghamDamper> shapes;
   if (present != nullptr) shapes.emplace(present->geometry, present->fluid.viscosity, present->fluid.flow_index);
-  const int n = column_count(effects, shapes);
+  const BaseColumns base{shapes, current_varies(series)};
+  const int n = column_count(effects, base);
   NormalMatrix normal = NormalMatrix::Zero(n, n);
   NormalVector rhs = NormalVector::Zero(n);
   double column[kMaxLinearColumns];
   for (std::size_t i = 0; i < series.size(); ++i) {
     if (series.validation[i] != 0) continue;
-    fill_columns(series, predicted, effects, shapes, i, column);
+    fill_columns(series, predicted, effects, base, i, column);
     for (int r = 0; r < n; ++r) {
       rhs[r] += column[r] * series.force[i];
       for (int c = 0; c < n; ++c) normal(r, c) += column[r] * column[c];
     }
   }
   // A light ridge keeps the solve defined when a column is all zero (no force predicted at all).
-  const std::vector<NonNegative> signed_columns = non_negative_columns(effects, present, shapes);
+  const std::vector<NonNegative> signed_columns = non_negative_columns(effects, present, base);
   std::vector<NonNegative> held;
   NormalVector solution = solve_holding(normal, rhs, held);
   // Active set: hold each parameter that the solve drives negative, until none is.
@@ -216,8 +235,9 @@ LinearTerms fit_linear_terms(const FitSeries& series, const std::vector<double>&
   LinearTerms t;
   t.force_scale = std::max(solution[0], 0.0);
   t.extra_viscous = solution[1];
-  const int first = base_column_count(shapes);
-  if (shapes) t.extra_friction = solution[2];
+  const int first = base_column_count(base);
+  if (base.has_friction()) t.extra_friction = solution[2];
+  t.friction_column = base.friction;
   t.effects = effects;
   t.coefficients.assign(solution.data() + first, solution.data() + n);
   t.shapes = shapes;
@@ -226,15 +246,16 @@ LinearTerms fit_linear_terms(const FitSeries& series, const std::vector<double>&
 
 double linear_fit_rms(const FitSeries& series, const std::vector<double>& predicted,
                       const LinearTerms& t) {
-  const int n = column_count(t.effects, t.shapes);
+  const BaseColumns base{t.shapes, t.friction_column};
+  const int n = column_count(t.effects, base);
   double coefficients[kMaxLinearColumns] = {t.force_scale, t.extra_viscous, t.extra_friction};
-  std::copy(t.coefficients.begin(), t.coefficients.end(), coefficients + base_column_count(t.shapes));
+  std::copy(t.coefficients.begin(), t.coefficients.end(), coefficients + base_column_count(base));
   double sum = 0.0;
   std::size_t count = 0;
   for (std::size_t i = 0; i < series.size(); ++i) {
     if (series.validation[i] != 0) continue;
     double column[kMaxLinearColumns];
-    fill_columns(series, predicted, t.effects, t.shapes, i, column);
+    fill_columns(series, predicted, t.effects, base, i, column);
     double f = 0.0;
     for (int c = 0; c < n; ++c) f += coefficients[c] * column[c];
     const double r = series.force[i] - f;

@@ -67,9 +67,11 @@ struct LinearTerms {
   std::vector<double> coefficients;  // c_j, the effects' columns in order
   // The model's viscous and sign shapes; without them the columns are F_m, v and the effects'.
   std::optional<model::BinghamDamper> shapes;
+  bool friction_column = true;  // with the shapes: false at a constant current
 };
-// With `present` (the model that predicted the force), the base columns take its viscous and
-// sign shapes, and a coefficient whose parameter must stay >= 0 (the viscous coefficient, the
+// With `present` (the model that predicted the force), the viscous column takes its shape and,
+// where the current varies, the friction column its sign term (at a constant current the
+// friction and the force scale are one direction), and a coefficient whose parameter must stay >= 0 (the viscous coefficient, the
 // seal friction, and an effect's kLinearNonNegative) is held where it makes that parameter 0
 // when the unconstrained solve would make it negative: a physical fit of the others, not a
 // rejected one.

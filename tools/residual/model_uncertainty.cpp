@@ -16,19 +16,19 @@ struct ModelParameter {
 };
 
 // What the base fit identifies (residual_search.cpp, describe_base): the force scale as the pole
-// length, the viscous coefficient as the viscosity, the seal friction and the sign and flow
-// shapes; then, where the current varies, the field gain as the coil's turns and Eq. 13's
-// exponent; last, where the material is free, the J-A shape (a and Ms are tied to the field gain
+// length, the viscous coefficient as the viscosity, the sign and flow shapes; then, where the
+// current varies, the seal friction (at a constant current it and the force scale are one
+// direction), the field gain as the coil's turns and the yield law; last, where the material is free, the J-A shape (a and Ms are tied to the field gain
 // and the force scale, so they have none of their own).
-constexpr std::size_t kAlways = 6;
+constexpr std::size_t kAlways = 5;
 constexpr std::size_t kWithGain = 10;
 constexpr std::array<ModelParameter, 13> kParameters = {{
     {"geometry.pole_length", "m", [](model::DamperModel& m) -> double& { return m.geometry.pole_length; }},
     {"fluid.viscosity", "Pa s", [](model::DamperModel& m) -> double& { return m.fluid.viscosity; }},
-    {"geometry.seal_friction", "N", [](model::DamperModel& m) -> double& { return m.geometry.seal_friction; }},
     {"geometry.sign_velocity_scale", "m/s", [](model::DamperModel& m) -> double& { return m.geometry.sign_velocity_scale; }},
     {"geometry.sign_shape", "-", [](model::DamperModel& m) -> double& { return m.geometry.sign_shape; }},
     {"fluid.flow_index", "-", [](model::DamperModel& m) -> double& { return m.fluid.flow_index; }},
+    {"geometry.seal_friction", "N", [](model::DamperModel& m) -> double& { return m.geometry.seal_friction; }},
     {"circuit.turns", "-", [](model::DamperModel& m) -> double& { return m.circuit.turns; }},
     {"fluid.field_exponent", "-", [](model::DamperModel& m) -> double& { return m.fluid.field_exponent; }},
     {"fluid.saturation_induction", "T", [](model::DamperModel& m) -> double& { return m.fluid.saturation_induction; }},

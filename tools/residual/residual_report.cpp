@@ -119,6 +119,11 @@ std::string residual_summary(const std::vector<record::RecordedRun>& runs, const
   out += format("after: RMS %.4g N, max %.4g N (%.1f%% of before)\n", r.after.all, r.after.max,
                 r.before.all > 0.0 ? 100.0 * r.after.all / r.before.all : 0.0);
   out += "unexplained: " + r.unexplained + "\n";
+  if (!r.parameters.empty()) {
+    out += "final model's base parameters (value, standard deviation; nan: the run does not determine it):\n";
+    for (const ParameterEstimate& p : r.parameters)
+      out += format("  %-30s %12.4g +- %-10.2g %s\n", p.name.c_str(), p.value, p.standard_deviation, p.unit.c_str());
+  }
   out += format("analysed %zu samples in %.2f s (%lld observer passes over the fitting series)\n", r.samples,
                 r.seconds, static_cast<long long>(r.evaluations));
   return out;

@@ -66,7 +66,8 @@ std::vector<std::string> describe_base(const ParameterSpace& space, const Fitted
   const Point theta = fit.theta;
   for (Eigen::Index i = 0; i < theta.size() && i < space.bounds.dimension(); ++i) {
     const double span = space.bounds.upper[i] - space.bounds.lower[i];
-    if (theta[i] <= space.bounds.lower[i] + 1e-3 * span || theta[i] >= space.bounds.upper[i] - 1e-3 * span)
+    const bool none_at_top = space.parameters[static_cast<std::size_t>(i)].starts_with("log10 yield saturation");
+    if (theta[i] <= space.bounds.lower[i] + 1e-3 * span || (!none_at_top && theta[i] >= space.bounds.upper[i] - 1e-3 * span))
       lines.push_back(format("%s at the edge of its physical range [%.3g, %.3g]",
                              space.parameters[static_cast<std::size_t>(i)].c_str(), space.bounds.lower[i],
                              space.bounds.upper[i]));

@@ -90,6 +90,9 @@ TEST(BaseFit, AConstantCurrentRunKeepsTheMagneticsItCannotSee) {
   EXPECT_EQ(r.base.jiles_atherton, start.jiles_atherton);
   EXPECT_EQ(r.base.circuit, start.circuit);
   EXPECT_EQ(r.base.fluid.field_exponent, start.fluid.field_exponent);
+  // At a constant current the friction and the force scale are one direction: the friction
+  // stays the prior's, the scale takes the yield and friction together.
+  EXPECT_EQ(r.base.geometry.seal_friction, start.geometry.seal_friction);
   bool said = false;
   for (const std::string& line : r.base_parameters) said = said || line.find("cannot be identified") != std::string::npos;
   EXPECT_TRUE(said) << residual_summary({run}, r);

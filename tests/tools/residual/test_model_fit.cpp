@@ -37,6 +37,42 @@ TEST(ModelFit, LinearTermsAreTheModelTheyDescribe) {
   EXPECT_LT(worst, 1e-9 * largest);
 }
 
+// The same for a Herschel-Bulkley fluid with seal friction: the viscous correction multiplies the
+// fluid's own shape c0 v_ref |v / v_ref|^n / c0, written out here from the definition, and the
+// friction the sign term; and the fit finds the terms back from a force made that way.
+TEST(ModelFit, LinearTermsCarryTheFlowIndexAndTheSealFriction) {
+  const FitSeries s = table4_series();
+  mrd::model::DamperModel base;
+  base.fluid.flow_index = 0.7;
+  base.geometry.seal_friction = 50.0;
+  std::vector<double> f, scaled;
+  predict_force(base, s, f);
+  LinearTerms t{0.6, 3000.0, 30.0, {}, {}};
+  t.shapes.emplace(base.geometry, base.fluid.viscosity, base.fluid.flow_index);
+  predict_force(apply_linear_terms(base, t), s, scaled);
+  double worst = 0.0, largest = 0.0;
+  std::vector<double> made(s.size());
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const double v = s.velocity[i];
+    const double shape = std::copysign(0.1 * std::pow(std::fabs(v) / 0.1, 0.7), v);
+    made[i] = 0.6 * f[i] + 3000.0 * shape + 30.0 * std::tanh(v / base.geometry.sign_velocity_scale);
+    worst = std::max(worst, std::fabs(scaled[i] - made[i]));
+    largest = std::max(largest, std::fabs(made[i]));
+  }
+  EXPECT_LT(worst, 1e-9 * largest);
+  EXPECT_NEAR(apply_linear_terms(base, t).geometry.seal_friction, 0.6 * 50.0 + 30.0, 1e-12);
+  FitSeries from_made = s;
+  from_made.force = made;
+  const LinearTerms back = fit_linear_terms(from_made, f, {}, &base);
+  EXPECT_NEAR(back.force_scale, 0.6, 1e-6);
+  EXPECT_NEAR(back.extra_viscous, 3000.0, 1e-3);
+  EXPECT_NEAR(back.extra_friction, 30.0, 1e-4);
+  // A friction the solve would make negative (a F_s + f < 0) is held at 0.
+  for (std::size_t i = 0; i < s.size(); ++i) from_made.force[i] = made[i] - 200.0 * std::tanh(s.velocity[i] / 1e-3);
+  const LinearTerms held = fit_linear_terms(from_made, f, {}, &base);
+  EXPECT_NEAR(held.force_scale * 50.0 + held.extra_friction, 0.0, 1e-9);
+}
+
 // B from a trace serves a model with the same magnetics (here, more viscosity and a gas
 // spring), bit for bit; a changed field gain or coil lag is not served.
 TEST(ModelFit, InductionTraceServesOnlyTheSameMagnetics) {
