@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <string>
 
 #include "model/compile_time_fit.hpp"
 #include "model/saturating_shape.hpp"
@@ -19,8 +21,12 @@ ValidationReport validate(const MrFluid& fluid) {
   report.require_positive("particle_diameter", fluid.particle_diameter);
   report.require_positive("particle_saturation", fluid.particle_saturation);
   report.require_in_range("field_exponent", fluid.field_exponent, 0.2, 1.5, false);
-  if (fluid.saturation_induction != 0.0)
-    report.require_in_range("saturation_induction", fluid.saturation_induction, 0.02, 50.0, false);
+  const double b_s = fluid.saturation_induction;
+  if (b_s != 0.0 && !(b_s >= 0.02 && b_s <= 50.0)) {
+    char got[32];
+    std::snprintf(got, sizeof got, "%g", b_s);
+    report.error("saturation_induction", std::string("must be 0 (no saturation) or lie in [0.02, 50] T, got ") + got);
+  }
   report.require_in_range("saturation_shape", fluid.saturation_shape, -1.0, 1.0, false);
   report.require_in_range("flow_index", fluid.flow_index, 0.3, 2.0, false);
   if (report.ok() && fluid.particle_diameter > 1e-3) {
