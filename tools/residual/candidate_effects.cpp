@@ -43,8 +43,7 @@ SeriesScales series_scales(const FitSeries& s) {
   out.speed = std::max(percentile_abs(s.velocity, 0.99), 1e-6);
   out.measured_temperature = !s.temperature.empty();
   const double largest = percentile_abs(s.current, 1.0);
-  const auto [lo, hi] = std::minmax_element(s.current.begin(), s.current.end());
-  out.current_varies = largest > 0.0 && (*hi - *lo) > 0.05 * largest;
+  out.current_varies = current_varies(s);
   std::size_t steps = 0;
   for (std::size_t r = 0; r < s.run_starts.size(); ++r) {
     const std::size_t from = s.run_starts[r];
@@ -70,7 +69,6 @@ namespace {
 // lives in the model.
 struct BaseCoordinate {
   std::string name;
-  bool changes_induction;
   std::pair<double, double> range;
   double (*get)(const model::DamperModel&);
   void (*set)(model::DamperModel&, double);
@@ -83,18 +81,18 @@ std::vector<BaseCoordinate> base_coordinate_table(const model::DamperModel& star
   std::vector<BaseCoordinate> out;
   magnetics = free_magnetics(scales, magnetics);
   if (magnetics != Magnetics::kKept) {
-    out.push_back({"log10 field gain [turns/m]", true, field_gain_range(start),
+    out.push_back({"log10 field gain [turns/m]", field_gain_range(start),
                    [](const model::DamperModel& m) { return std::log10(m.circuit.turns / m.circuit.effective_length); },
                    [](model::DamperModel& m, double v) { set_field_gain(m, v); }});
   }
   if (magnetics == Magnetics::kMaterial) {
     // Soft irons to hard steels: k / a from 0.05 to 20, c over its whole meaning, and the mean
     // field short of the anhysteretic's fold (alpha Ms / 3a < 1, docs/MODEL.md).
-    out.push_back({"log10 J-A k/a", true, {std::log10(0.05), std::log10(20.0)}, k_over_a,
+    out.push_back({"log10 J-A k/a", {std::log10(0.05), std::log10(20.0)}, k_over_a,
                    [](model::DamperModel& m, double v) { m.jiles_atherton.k = m.jiles_atherton.a * std::pow(10.0, v); }});
-    out.push_back({"J-A c", true, {0.01, 0.95}, [](const model::DamperModel& m) { return m.jiles_atherton.c; },
+    out.push_back({"J-A c", {0.01, 0.95}, [](const model::DamperModel& m) { return m.jiles_atherton.c; },
                    [](model::DamperModel& m, double v) { m.jiles_atherton.c = v; }});
-    out.push_back({"J-A alpha Ms/3a", true, {0.0, 0.85},
+    out.push_back({"J-A alpha Ms/3a", {0.0, 0.85},
                    [](const model::DamperModel& m) { return m.jiles_atherton.mean_field_gain(); },
                    [](model::DamperModel& m, double v) {
                      m.jiles_atherton.alpha = v * 3.0 * m.jiles_atherton.a / m.jiles_atherton.Ms;
@@ -102,11 +100,11 @@ std::vector<BaseCoordinate> base_coordinate_table(const model::DamperModel& star
   }
   if (scales.current_varies) {
     // Power laws of MR fluids' yield stress in B run from about 0.3 to 1.2 (Eq. 13: 0.5811).
-    out.push_back({"yield exponent of B", false, {0.25, 1.25}, [](const model::DamperModel& m) { return m.fluid.field_exponent; },
+    out.push_back({"yield exponent of B", {0.25, 1.25}, [](const model::DamperModel& m) { return m.fluid.field_exponent; },
                    [](model::DamperModel& m, double v) { m.fluid.field_exponent = v; }});
     // The yield stress's ceiling, from 0.05 T (it bends early: a force record fixes B only up to
     // the scale that a and Ms share) to the top, 30 T, which is none (Eq. 13's plain power law).
-    out.push_back({"log10 yield saturation B_s [T]", false, {std::log10(0.05), std::log10(30.0)},
+    out.push_back({"log10 yield saturation B_s [T]", {std::log10(0.05), std::log10(30.0)},
                    [](const model::DamperModel& m) {
                      return m.fluid.saturation_induction > 0.0 ? std::log10(m.fluid.saturation_induction) : std::log10(30.0);
                    },
@@ -114,7 +112,7 @@ std::vector<BaseCoordinate> base_coordinate_table(const model::DamperModel& star
                      // The top of the range is no saturation at all, so the paper's law is a point of it.
                      m.fluid.saturation_induction = v >= std::log10(30.0) - 1e-9 ? 0.0 : std::pow(10.0, v);
                    }});
-    out.push_back({"yield saturation shape (-1 slow, 0 tanh, 1 knee)", false, {-1.0, 1.0},
+    out.push_back({"yield saturation shape (-1 slow, 0 tanh, 1 knee)", {-1.0, 1.0},
                    [](const model::DamperModel& m) { return m.fluid.saturation_shape; },
                    [](model::DamperModel& m, double v) { m.fluid.saturation_shape = v; }});
   }
@@ -122,13 +120,13 @@ std::vector<BaseCoordinate> base_coordinate_table(const model::DamperModel& star
   // the yield term cannot take the viscous term's place (a v_s near the speed makes s(v) linear).
   const double v_lo = std::log10(std::max(1e-3 * scales.speed, 1e-6));
   const double v_hi = std::log10(std::max(std::min(0.15 * scales.speed, 0.05), 2e-6));
-  out.push_back({"log10 sign velocity [m/s]", false, {v_lo, v_hi},
+  out.push_back({"log10 sign velocity [m/s]", {v_lo, v_hi},
                  [](const model::DamperModel& m) { return std::log10(m.geometry.sign_velocity_scale); },
                  [](model::DamperModel& m, double v) { m.geometry.sign_velocity_scale = std::pow(10.0, v); }});
-  out.push_back({"sign shape (-1 atan, 0 tanh, 1 knee)", false, {-1.0, 1.0},
+  out.push_back({"sign shape (-1 atan, 0 tanh, 1 knee)", {-1.0, 1.0},
                  [](const model::DamperModel& m) { return m.geometry.sign_shape; },
                  [](model::DamperModel& m, double v) { m.geometry.sign_shape = v; }});
-  out.push_back({"flow index n", false, {0.5, 1.5}, [](const model::DamperModel& m) { return m.fluid.flow_index; },
+  out.push_back({"flow index n", {0.5, 1.5}, [](const model::DamperModel& m) { return m.fluid.flow_index; },
                  [](model::DamperModel& m, double v) { m.fluid.flow_index = v; }});
   return out;
 }
@@ -139,11 +137,11 @@ Magnetics free_magnetics(const SeriesScales& scales, Magnetics wanted) {
   return scales.current_varies ? wanted : Magnetics::kKept;
 }
 
-namespace {
-
-ParameterSpace space_of(const std::vector<BaseCoordinate>& table, const model::DamperModel& origin, std::string name) {
+ParameterSpace base_space(const model::DamperModel& origin, const model::DamperModel& start,
+                          const SeriesScales& scales, Magnetics magnetics) {
+  const std::vector<BaseCoordinate> table = base_coordinate_table(start, scales, magnetics);
   ParameterSpace space;
-  space.name = std::move(name);
+  space.name = "base";
   space.origin = origin;
   const auto n = static_cast<Eigen::Index>(table.size());
   space.bounds = Bounds{Point(n), Point(n)};
@@ -160,20 +158,6 @@ ParameterSpace space_of(const std::vector<BaseCoordinate>& table, const model::D
     return m;
   };
   return space;
-}
-
-}  // namespace
-
-ParameterSpace base_space(const model::DamperModel& origin, const model::DamperModel& start,
-                          const SeriesScales& scales, Magnetics magnetics) {
-  return space_of(base_coordinate_table(start, scales, magnetics), origin, "base");
-}
-
-ParameterSpace magnetic_space(const model::DamperModel& origin, const model::DamperModel& start,
-                              const SeriesScales& scales) {
-  std::vector<BaseCoordinate> table = base_coordinate_table(start, scales, Magnetics::kMaterial);
-  std::erase_if(table, [](const BaseCoordinate& c) { return !c.changes_induction; });
-  return space_of(table, origin, "magnetics");
 }
 
 Point base_coordinates(const model::DamperModel& m, const model::DamperModel& start, const SeriesScales& scales,

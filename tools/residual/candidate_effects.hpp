@@ -15,7 +15,7 @@ namespace mrd::tools {
 // What the searches need to know of the series to set their ranges: the scales the effects'
 // descriptors read (model::RunScales), and what the current does.
 struct SeriesScales : model::RunScales {
-  bool current_varies = false;  // over the series, more than 5 % of its largest |value|
+  bool current_varies = false;  // tools::current_varies(series)
   bool current_steps = false;   // within a run: fast changes, so a coil lag shows
 };
 SeriesScales series_scales(const FitSeries& series);
@@ -39,10 +39,6 @@ enum class Magnetics {
 };
 ParameterSpace base_space(const model::DamperModel& origin, const model::DamperModel& start,
                           const SeriesScales& scales, Magnetics magnetics = Magnetics::kGain);
-// The field gain and the J-A material alone (the coordinates of base_space that change B; none
-// when the current does not vary), the rest of `origin` kept: base_space's first coordinates.
-ParameterSpace magnetic_space(const model::DamperModel& origin, const model::DamperModel& start,
-                              const SeriesScales& scales);
 // The base coordinates of `model` in that space.
 Point base_coordinates(const model::DamperModel& model, const model::DamperModel& start,
                        const SeriesScales& scales, Magnetics magnetics = Magnetics::kGain);

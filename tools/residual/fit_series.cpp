@@ -161,4 +161,11 @@ FitSeries spread_windows(const FitSeries& series, std::size_t max_samples, std::
   return out;
 }
 
+bool current_varies(const FitSeries& s) {
+  if (s.current.empty()) return false;
+  const auto [lo, hi] = std::minmax_element(s.current.begin(), s.current.end());
+  const double largest = std::max(std::fabs(*lo), std::fabs(*hi));
+  return largest > 0.0 && (*hi - *lo) > 0.05 * largest;
+}
+
 }  // namespace mrd::tools

@@ -77,6 +77,10 @@ FitSeries spread_windows(const FitSeries& series, std::size_t max_samples, std::
 FitSeries without_excluded(const FitSeries& series, const std::vector<double>& per_sample,
                            std::vector<double>& kept_values);
 
+// Whether the coil current moves over the series by more than 5 % of its largest |value|: what
+// decides whether a run can show the magnetics at all.
+bool current_varies(const FitSeries& series);
+
 // The factor that brings the series to at most `max_samples`.
 std::size_t decimation_factor(const FitSeries& series, std::size_t max_samples);
 

@@ -109,14 +109,6 @@ struct BaseColumns {
 
 int base_column_count(const BaseColumns& base) { return base.has_friction() ? 3 : 2; }
 
-// At a constant current the model's force is (yield + friction) s(v) + c0 u(v): the force scale
-// and a friction column would be the same direction, split by the ridge and not by the data.
-bool current_varies(const FitSeries& s) {
-  if (s.current.empty()) return false;
-  const auto [lo, hi] = std::minmax_element(s.current.begin(), s.current.end());
-  const double largest = std::max(std::fabs(*lo), std::fabs(*hi));
-  return largest > 0.0 && (*hi - *lo) > 0.05 * largest;
-}
 
 int column_count(const LinearEffects& effects, const BaseColumns& base) {
   int n = base_column_count(base);
@@ -202,6 +194,8 @@ LinearTerms fit_linear_terms(const FitSeries& series, const std::vector<double>&
                              const LinearEffects& effects, const model::DamperModel* present) {
   std::optional<model::BinghamDamper> shapes;
   if (present != nullptr) shapes.emplace(present->geometry, present->fluid.viscosity, present->fluid.flow_index);
+  // At a constant current the model's force is (yield + friction) s(v) + c0 u(v): the force
+  // scale and a friction column would be one direction, split by the ridge and not the data.
   const BaseColumns base{shapes, current_varies(series)};
   const int n = column_count(effects, base);
   NormalMatrix normal = NormalMatrix::Zero(n, n);
