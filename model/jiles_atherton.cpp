@@ -92,18 +92,39 @@ template <typename Langevin>
 
 template <Integrator kMethod, typename Langevin>
 void JilesAtherton::integrate(double H_target, Langevin& langevin) {
+  const double growth = settings_.field_step_growth;
+  if (!(growth > 0.0) || std::fabs(H_target - state_.H) <= max_field_step_) {
+    integrate_on_grid<kMethod>(H_target, max_field_step_, langevin);
+    return;
+  }
+  // Steps of max(grid, g |He|): the grid near the knee and after a reversal, where M_irr
+  // relaxes over k; longer where the curve is saturated.
+  const double direction = H_target > state_.H ? 1.0 : -1.0;
+  for (int taken = 1; state_.H != H_target; ++taken) {
+    const double He = state_.H + p_.alpha * state_.M;
+    const double step = std::max(max_field_step_, growth * std::fabs(He));
+    const double remaining = std::fabs(H_target - state_.H);
+    const bool last = remaining <= step || taken >= settings_.max_substeps;
+    const double next = last ? H_target : state_.H + direction * step;
+    integrate_on_grid<kMethod>(next, last ? remaining : step, langevin);
+  }
+}
+
+template <Integrator kMethod, typename Langevin>
+void JilesAtherton::integrate_on_grid(double H_target, double max_step, Langevin& langevin) {
   const double span = H_target - state_.H;
   const double delta = span > 0.0 ? 1.0 : -1.0;
   // One sub-step is the real-time case (a control period moves H by far less than
   // min(a, k)); it skips the ceil and the two divisions of the general count.
   int steps = 1;
   double h = span;
-  if (std::fabs(span) > max_field_step_) {
-    steps = static_cast<int>(std::clamp(std::ceil(std::fabs(span) / max_field_step_), 1.0,
+  if (std::fabs(span) > max_step) {
+    steps = static_cast<int>(std::clamp(std::ceil(std::fabs(span) / max_step), 1.0,
                                         static_cast<double>(settings_.max_substeps)));
     h = span / steps;
   }
 
+  substeps_ += static_cast<std::uint64_t>(steps);
   double M = state_.M;
   double M_irr = state_.M_irr;
   double H = state_.H;

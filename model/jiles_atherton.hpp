@@ -28,6 +28,10 @@ struct JilesAthertonSettings {
   double max_field_step_fraction = 0.25;
   // Real-time bound on work per call. A jump needing more sub-steps uses larger ones.
   int max_substeps = 4096;
+  // 0: the uniform grid above. g > 0: a sub-step may also be g |He| long, so a jump far into
+  // saturation, where Man bends on the scale of He itself, takes a few long steps. For the
+  // fits' searches, which repeat a run thousands of times; the observer keeps 0.
+  double field_step_growth = 0.0;
   // Denominator guard, as a fraction of k (Eq. 10) or of 1 (the reversible coupling).
   double denominator_floor = 1e-2;
   Integrator integrator = Integrator::kRk4;
@@ -77,6 +81,8 @@ class JilesAtherton {
   // at this amplitude), and times a non-finite state was reset to the anhysteretic curve.
   [[nodiscard]] std::uint64_t guard_events() const { return guard_events_; }
   [[nodiscard]] std::uint64_t recoveries() const { return recoveries_; }
+  // RK sub-steps taken since construction: the work the history cost.
+  [[nodiscard]] std::uint64_t substeps() const { return substeps_; }
 
   [[nodiscard]] const JilesAthertonParams& params() const { return p_; }
   [[nodiscard]] const MagneticCircuit& circuit() const { return circuit_; }
@@ -101,6 +107,8 @@ class JilesAtherton {
   [[nodiscard]] Slope slope(Langevin& langevin, double x, double M_irr, double delta) const;
   template <Integrator kMethod, typename Langevin>
   void integrate(double H_target, Langevin& langevin);
+  template <Integrator kMethod, typename Langevin>
+  void integrate_on_grid(double H_target, double max_step, Langevin& langevin);
   void settle_on_anhysteretic();
 
   JilesAthertonParams p_;
@@ -119,6 +127,7 @@ class JilesAtherton {
   // Where the last tabulated Langevin evaluation was: only a hint, checked on every use.
   LangevinTableCursor langevin_cursor_;
   std::uint64_t guard_events_ = 0;
+  std::uint64_t substeps_ = 0;
   std::uint64_t recoveries_ = 0;
 };
 

@@ -1,6 +1,7 @@
 #include "tools/report/fit_statistics.hpp"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -52,6 +53,10 @@ double autocorrelation_bound_95(std::size_t samples) {
   return samples > 0 ? 1.96 / std::sqrt(static_cast<double>(samples)) : 0.0;
 }
 
+// Relative to the largest pivot of the scaled Jacobian: below it a column is a combination of
+// the others to within the central differences' accuracy.
+constexpr double kRankTolerance = 1e-7;
+
 ParameterUncertainty parameter_uncertainty(const ResidualFunction& residuals, const std::vector<double>& x,
                                            double relative_step) {
   const std::size_t p = x.size();
@@ -87,12 +92,31 @@ ParameterUncertainty parameter_uncertainty(const ResidualFunction& residuals, co
   out.singular = used.size() < p;
   if (used.empty()) return out;
   // Scale the columns first: J-A parameters span ten orders of magnitude.
-  Eigen::MatrixXd Js(J.rows(), static_cast<Eigen::Index>(used.size()));
-  Eigen::VectorXd scale(static_cast<Eigen::Index>(used.size()));
-  for (std::size_t u = 0; u < used.size(); ++u) {
-    const auto iu = static_cast<Eigen::Index>(u);
-    scale(iu) = J.col(used[u]).norm();
-    Js.col(iu) = J.col(used[u]) / scale(iu);
+  const auto scaled_columns = [&](Eigen::MatrixXd& Js, Eigen::VectorXd& scale) {
+    Js.resize(J.rows(), static_cast<Eigen::Index>(used.size()));
+    scale.resize(static_cast<Eigen::Index>(used.size()));
+    for (std::size_t u = 0; u < used.size(); ++u) {
+      const auto iu = static_cast<Eigen::Index>(u);
+      scale(iu) = J.col(used[u]).norm();
+      Js.col(iu) = J.col(used[u]) / scale(iu);
+    }
+  };
+  Eigen::MatrixXd Js;
+  Eigen::VectorXd scale;
+  scaled_columns(Js, scale);
+  // Parameters that act only together with others (J's rank, by column-pivoted QR, falls short)
+  // are not determined: those the pivoting puts last have none, the rest are estimated without
+  // them.
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(Js);
+  qr.setThreshold(kRankTolerance);
+  if (static_cast<std::size_t>(qr.rank()) < used.size()) {
+    std::vector<Eigen::Index> determined;
+    for (Eigen::Index k = 0; k < qr.rank(); ++k) determined.push_back(used[static_cast<std::size_t>(qr.colsPermutation().indices()(k))]);
+    std::ranges::sort(determined);
+    used = std::move(determined);
+    out.singular = true;
+    if (used.empty()) return out;
+    scaled_columns(Js, scale);
   }
   const Eigen::FullPivLU<Eigen::MatrixXd> lu(Js.transpose() * Js);
   if (!lu.isInvertible()) {

@@ -24,12 +24,13 @@ namespace mrd::tools {
 // (step: relative_step |x_j|, or relative_step where x_j = 0). `residuals` maps parameters to
 // the residual vector (any fixed length N > p).
 struct ParameterUncertainty {
-  std::vector<double> standard_deviation;  // per parameter; NaN where J^T J is singular
+  std::vector<double> standard_deviation;  // per parameter; NaN where the data cannot determine it
   std::vector<std::vector<double>> correlation;
   double sigma = 0.0;  // residual standard error, sqrt(|r|^2 / (N - p))
   std::size_t samples = 0;
-  // Some parameter the data cannot determine: one the residual does not depend on (NaN, the
-  // others estimated without it), or J^T J singular over the rest (all NaN).
+  // Some parameter the data cannot determine: one the residual does not depend on, or one that
+  // acts only in a combination with others (J's rank falls short: the pivoted QR's last
+  // columns); those are NaN and the others are estimated without them.
   bool singular = false;
 };
 using ResidualFunction = std::function<std::vector<double>(const std::vector<double>&)>;

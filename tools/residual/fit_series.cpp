@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <random>
 
 #include "record/csv.hpp"
@@ -137,26 +138,28 @@ FitSeries decimate(const FitSeries& series, std::size_t wanted, double min_rate)
   return out;
 }
 
-FitSeries spread_windows(const FitSeries& series, std::size_t max_samples, std::size_t count) {
-  count = std::max<std::size_t>(count, 1);
-  if (series.size() <= max_samples || max_samples < count) return series;
+FitSeries run_openings(const FitSeries& series, std::size_t max_samples) {
+  if (series.size() <= max_samples) return series;
+  const std::size_t runs = series.run_starts.size();
+  const auto end_of = [&](std::size_t r) { return r + 1 < runs ? series.run_starts[r + 1] : series.size(); };
+  // Equal shares; a run shorter than its share is taken whole and leaves the rest to the others.
+  std::vector<std::size_t> order(runs), take(runs);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::ranges::sort(order, {}, [&](std::size_t r) { return end_of(r) - series.run_starts[r]; });
+  std::size_t left = max_samples;
+  for (std::size_t k = 0; k < runs; ++k) {
+    const std::size_t r = order[k];
+    take[r] = std::min(end_of(r) - series.run_starts[r], left / (runs - k));
+    left -= take[r];
+  }
   FitSeries out;
   out.notes = series.notes;
-  const std::size_t length = max_samples / count;
-  for (std::size_t w = 0; w < count; ++w) {
-    const std::size_t centre = (2 * w + 1) * series.size() / (2 * count);
-    const auto run = static_cast<std::size_t>(
-        std::upper_bound(series.run_starts.begin(), series.run_starts.end(), centre) - series.run_starts.begin() - 1);
-    const std::size_t run_begin = series.run_starts[run];
-    const std::size_t run_end = run + 1 < series.run_starts.size() ? series.run_starts[run + 1] : series.size();
-    const std::size_t span = std::min(length, run_end - run_begin);
-    const std::size_t from = std::clamp(centre - std::min(centre, span / 2), run_begin, run_end - span);
+  for (std::size_t r = 0; r < runs; ++r) {
+    if (take[r] == 0) continue;
+    out.sample_period = out.run_starts.empty() ? series.run_periods[r] : std::min(out.sample_period, series.run_periods[r]);
     out.run_starts.push_back(out.size());
-    out.run_periods.push_back(series.run_periods[run]);
-    out.sample_period = w == 0 ? series.run_periods[run] : std::min(out.sample_period, series.run_periods[run]);
-    for (std::size_t i = from; i < from + span; ++i) {
-      append_sample(out, series, i);
-    }
+    out.run_periods.push_back(series.run_periods[r]);
+    for (std::size_t i = series.run_starts[r]; i < series.run_starts[r] + take[r]; ++i) append_sample(out, series, i);
   }
   return out;
 }

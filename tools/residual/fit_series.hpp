@@ -64,13 +64,14 @@ FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const Fi
 // switched current more than the samples left out do.
 FitSeries decimate(const FitSeries& series, std::size_t factor, double min_rate);
 
-// At most `max_samples` of the series as `count` windows spread evenly over it, each a run of
-// its own (inside one source run, with that run's period and validation flags): where a global
-// search explores before a local one refines on the whole series. A J-A pass costs per current
-// switch, not per sample, so only fewer switches make it cheaper; decimation keeps them all.
-// The series itself when it is no longer than `max_samples` (or `max_samples` < `count`). A run
-// shorter than a window is taken whole, so two windows can repeat one short run.
-FitSeries spread_windows(const FitSeries& series, std::size_t max_samples, std::size_t count = 8);
+// At most `max_samples` of the series: the opening of every run, in equal shares (a run shorter
+// than its share whole, its rest to the others), each from the run's own start. Where a global
+// search that integrates J-A explores before a local one refines on the whole series: a J-A
+// pass costs per unit of the current's travel, so only fewer samples make it cheaper, and only
+// a run's opening starts from the state the whole series' does (a window from its middle would
+// start demagnetised where the core had a history, and J-A remembers it for cycles). The series
+// itself when it is no longer than `max_samples`.
+FitSeries run_openings(const FitSeries& series, std::size_t max_samples);
 
 // The series without its excluded samples, and `per_sample` (one value per sample of `series`)
 // cut the same way: what the residual's structure is analysed on.

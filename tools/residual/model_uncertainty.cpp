@@ -49,10 +49,12 @@ std::vector<ParameterEstimate> model_uncertainty(const model::DamperModel& fitte
   model::DamperModel probe = fitted;
   for (std::size_t j = 0; j < count; ++j) x.push_back(kParameters[j].field(probe));
   std::vector<double> force;
+  // The columns of what acts after B share one J-A pass.
+  const InductionTrace trace(fitted, series);
   const auto residuals = [&](const std::vector<double>& at) {
     model::DamperModel m = fitted;
     for (std::size_t j = 0; j < count; ++j) kParameters[j].field(m) = at[j];
-    predict_force(m, series, force);
+    predict_force(m, series, force, &trace);
     std::vector<double> r;
     r.reserve(series.size());
     for (std::size_t i = 0; i < series.size(); ++i)

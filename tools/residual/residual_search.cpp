@@ -15,7 +15,6 @@
 namespace mrd::tools {
 
 namespace {
-
 std::vector<double> residual_of(const FitSeries& s, const std::vector<double>& predicted) {
   std::vector<double> r(s.size());
   for (std::size_t i = 0; i < s.size(); ++i) r[i] = s.force[i] - predicted[i];
@@ -75,6 +74,34 @@ std::vector<std::string> describe_base(const ParameterSpace& space, const Fitted
   return lines;
 }
 
+// What every step of the search shares: the series at its resolutions, the pool, the seed
+// stream and the count of observer passes.
+struct Search {
+  Search(const FitSeries& series, const ResidualOptions& opts)
+      : full(series),
+        options(opts),
+        fit_series(decimate(full, decimation_factor(full, opts.max_fit_samples), opts.min_fit_rate)),
+        swarm_series(run_openings(fit_series, opts.max_swarm_samples)),
+        scales(series_scales(fit_series)),
+        pool(opts.threads),
+        seed(opts.seed) {}
+
+  const FitSeries& full;
+  const ResidualOptions& options;
+  const FitSeries fit_series;    // what the fits run on
+  const FitSeries swarm_series;  // the runs' openings: where the swarms that move B explore
+  const SeriesScales scales;
+  WorkerPool pool;
+  std::uint64_t seed;
+  std::atomic<std::int64_t> evaluations{0};
+
+  [[nodiscard]] double validation_rms(const model::DamperModel& m) const {
+    std::vector<double> force;
+    predict_force(m, fit_series, force);
+    return residual_rms(fit_series, force).validation;
+  }
+};
+
 struct RefinePass {
   int evaluations_per_coordinate;
   double step;  // Nelder-Mead's first simplex, as a fraction of each coordinate's range
@@ -98,10 +125,12 @@ using Effects = std::vector<const model::EffectInfo*>;
 // between passes, since such an effect can still take over force the gain had absorbed (on the
 // Table 4 schedule the current follows the displacement, so a spring's k x looks like a field).
 // `induction`, when given, is a B trace the first pass may already use.
-FittedModel refine_jointly(const model::DamperModel& origin, const Effects& effects, const Point& effect_start,
-                           std::initializer_list<RefinePass> passes, const model::DamperModel& start,
-                           const SeriesScales& scales, const FitSeries& series, std::int64_t& evaluations,
-                           std::shared_ptr<const InductionTrace> induction = nullptr) {
+FittedModel refine_jointly(const Search& s, const model::DamperModel& origin, const Effects& effects,
+                           const Point& effect_start, std::initializer_list<RefinePass> passes,
+                           std::int64_t& evaluations, std::shared_ptr<const InductionTrace> induction = nullptr) {
+  const model::DamperModel& start = s.options.start;
+  const SeriesScales& scales = s.scales;
+  const FitSeries& series = s.fit_series;
   const bool shapes_induction =
       std::ranges::any_of(effects, [](const model::EffectInfo* e) { return e->changes_induction; }) ||
       std::ranges::any_of(model::effect_infos(), [&](const model::EffectInfo& e) {
@@ -151,34 +180,6 @@ Point effect_coordinates(const Effects& effects, const model::DamperModel& model
   return all;
 }
 
-// What every step of the search shares: the series at its three resolutions, the pool, the seed
-// stream and the count of observer passes.
-struct Search {
-  Search(const FitSeries& series, const ResidualOptions& opts)
-      : full(series),
-        options(opts),
-        fit_series(decimate(full, decimation_factor(full, opts.max_fit_samples), opts.min_fit_rate)),
-        swarm_series(spread_windows(fit_series, opts.max_swarm_samples)),
-        scales(series_scales(fit_series)),
-        pool(opts.threads),
-        seed(opts.seed) {}
-
-  const FitSeries& full;
-  const ResidualOptions& options;
-  const FitSeries fit_series;    // what the fits run on
-  const FitSeries swarm_series;  // what the swarms that integrate J-A explore
-  const SeriesScales scales;
-  WorkerPool pool;
-  std::uint64_t seed;
-  std::atomic<std::int64_t> evaluations{0};
-
-  [[nodiscard]] double validation_rms(const model::DamperModel& m) const {
-    std::vector<double> force;
-    predict_force(m, fit_series, force);
-    return residual_rms(fit_series, force).validation;
-  }
-};
-
 // Nelder-Mead from `from`, restarted from its best while that still pays: a simplex in eight
 // coordinates collapses along the ridges that the material's shape and the yield law share.
 FittedModel refine_with_restarts(Search& s, const ParameterSpace& space, const FitSeries& series, const Point& from) {
@@ -206,28 +207,30 @@ LinearEffects linear_effects_of(const model::DamperModel& model) {
 }
 
 // The base identified on `origin` (its effects kept, their linear parameters refitted among the
-// linear terms): the improved PSO over every base coordinate on the windows, J-A's sub-steps
-// capped at 64 a sample while it explores (a trial at 30x the field gain and a twentieth of the
-// pinning would otherwise take 600x the sub-steps of the origin); Nelder-Mead with restarts on the
-// windows from the swarm's best and, with `from_origin`, from the origin's coordinates (the
-// config's damper, a prior, or a model already fitted); then Nelder-Mead on the whole fitting series from the better. `space` is
-// the whole space.
+// linear terms): the improved PSO over every base coordinate on the runs' openings, J-A's
+// sub-steps capped at 64 a sample while it explores (a trial at 30x the field gain and a
+// twentieth of the pinning would otherwise take 600x the sub-steps of the origin); Nelder-Mead
+// with restarts there from the swarm's best and, with `from_origin`, from the origin's
+// coordinates (the config's damper, a prior, or a model already fitted), the two chains side by
+// side; then Nelder-Mead on the whole fitting series from the better. `space` is the whole space.
 FittedModel identify_base(Search& s, const model::DamperModel& origin, ParameterSpace& space, bool from_origin) {
   const model::DamperModel& start = s.options.start;
+  const FitSeries& openings = s.swarm_series;
   space = base_space(origin, start, s.scales, Magnetics::kMaterial);
   space.linear = linear_effects_of(origin);
   ParameterSpace exploring = space;
   exploring.origin.integration.max_substeps = std::min(exploring.origin.integration.max_substeps, 64);
-  const FittedModel swarm =
-      fit_space(exploring, s.swarm_series, &s.pool, s.seed++, 2 * s.options.evaluations_per_parameter);
+  const FittedModel swarm = fit_space(exploring, openings, &s.pool, s.seed++, 2 * s.options.evaluations_per_parameter);
   s.evaluations += swarm.evaluations;
-  FittedModel best = refine_with_restarts(s, space, s.swarm_series, swarm.theta);
-  if (from_origin) {
-    const FittedModel local =
-        refine_with_restarts(s, space, s.swarm_series, base_coordinates(origin, start, s.scales, Magnetics::kMaterial));
-    if (local.fitting_rms < best.fitting_rms) best = local;
-  }
-  if (s.swarm_series.size() == s.fit_series.size()) return best;
+  // The two chains, each serial, side by side.
+  std::vector<Point> starts{swarm.theta};
+  if (from_origin) starts.push_back(base_coordinates(origin, start, s.scales, Magnetics::kMaterial));
+  std::vector<FittedModel> refined(starts.size());
+  s.pool.run(starts.size(), [&](std::size_t k, unsigned /*worker*/) {
+    refined[k] = refine_with_restarts(s, space, openings, starts[k]);
+  });
+  FittedModel best = *std::ranges::min_element(refined, {}, &FittedModel::fitting_rms);
+  if (openings.size() == s.fit_series.size()) return best;
   const auto dimension = static_cast<int>(space.bounds.dimension());
   const FittedModel whole = refine_space(space, s.fit_series, best.theta, 20 + 15 * dimension, 0.01);
   s.evaluations += whole.evaluations;
@@ -276,8 +279,8 @@ Round try_candidates(Search& s, const model::DamperModel& current, double curren
   // model without such an effect it is judged against this lighter null refinement.)
   const RefinePass kCandidatePasses[] = {{15, 0.02, 12}, {8, 0.02}};
   const auto refine_candidate = [&](const Effects& effects, const Point& from, std::int64_t& spent) {
-    return refine_jointly(current, effects, from, {kCandidatePasses[0], kCandidatePasses[1]}, s.options.start,
-                          s.scales, s.fit_series, spent, round_induction);
+    return refine_jointly(s, current, effects, from, {kCandidatePasses[0], kCandidatePasses[1]}, spent,
+                          round_induction);
   };
   std::vector<std::size_t> order(candidates.size() + 1);
   std::iota(order.begin(), order.end(), std::size_t{0});
@@ -304,7 +307,7 @@ Round try_candidates(Search& s, const model::DamperModel& current, double curren
     }
     const model::EffectInfo& effect = *candidates[k];
     ParameterSpace space = effect_space(effect, current, s.scales);
-    // Those that change B explore on windows; the others need the whole history (a slow
+    // Those that change B explore on the runs' openings; the others need the whole history (a slow
     // drift does) and cost little on the round's B.
     if (!effect.changes_induction) space.induction = round_induction;
     const FittedModel alone = fit_space(space, effect.changes_induction ? s.swarm_series : s.fit_series, nullptr,
@@ -391,8 +394,8 @@ model::DamperModel polish_accepted(Search& s, const model::DamperModel& accepted
   const model::DamperModel rebased = identify_base(s, accepted, space, true).model;
   std::int64_t spent = 0;
   const model::DamperModel polished =
-      refine_jointly(rebased, effects, effect_coordinates(effects, rebased, s.scales),
-                     {{20, 0.02, 20}, {20, 0.005}, {20, 0.005}}, s.options.start, s.scales, s.fit_series, spent)
+      refine_jointly(s, rebased, effects, effect_coordinates(effects, rebased, s.scales),
+                     {{20, 0.02, 20}, {20, 0.005}, {20, 0.005}}, spent)
           .model;
   s.evaluations += spent;
   const double polished_validation = s.validation_rms(polished);
@@ -415,8 +418,8 @@ Reduced without_effect(Search& s, const model::DamperModel& current, const Effec
   dropped->disable(origin.effects);
   std::int64_t spent = 0;
   Reduced out;
-  out.model = refine_jointly(origin, rest, effect_coordinates(rest, origin, s.scales), {{15, 0.02, 12}, {8, 0.02}},
-                             s.options.start, s.scales, s.fit_series, spent)
+  out.model = refine_jointly(s, origin, rest, effect_coordinates(rest, origin, s.scales), {{15, 0.02, 12}, {8, 0.02}},
+                             spent)
                   .model;
   s.evaluations += spent;
   out.validation = s.validation_rms(out.model);
@@ -721,8 +724,17 @@ TermRivalry weigh_terms_against_effect(double effect_validation, double terms_va
   return margin < threshold ? TermRivalry::kAmbiguous : TermRivalry::kEffectStays;
 }
 
-ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions& options) {
+ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions& given) {
   const auto started = std::chrono::steady_clock::now();
+  // The searches integrate J-A with sub-steps that grow in saturation; what the result reports
+  // of its models comes from the models' own integration (the start's).
+  ResidualOptions options = given;
+  const model::JilesAthertonSettings integration = given.start.integration;
+  if (!(integration.field_step_growth > 0.0)) options.start.integration.field_step_growth = kSearchFieldStepGrowth;
+  const auto reported = [&](model::DamperModel m) {
+    m.integration = integration;
+    return m;
+  };
   Search s(full, options);
   ResidualResult result;
   result.samples = full.size();
@@ -736,7 +748,7 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   // 1-3. The base model and its residual.
   ParameterSpace base_fit_space;
   const FittedModel base = fit_base_model(s, base_fit_space);
-  result.base = base.model;
+  result.base = reported(base.model);
   result.base_parameters = describe_base(base_fit_space, base, options.start);
   predict_force(result.base, full, result.predicted_before);
   result.before = residual_rms(full, result.predicted_before);
@@ -753,7 +765,7 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   mark_final_set(result);
   name_unplaced_thresholds(s, set, result);
   // 7. Discovery on what the named effects left.
-  model::DamperModel current = set.model;
+  model::DamperModel current = reported(set.model);
   discover(s, current, result);
   result.final_model = current;
   result.evaluations = s.evaluations;
@@ -763,7 +775,10 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   for (std::size_t i = 0; i < full.size(); ++i) kept[i] = full.validation[i] != FitSeries::kExcluded;
   result.fit_before_percent = nrmse_fit_percent(full.force, result.predicted_before, kept);
   result.fit_after_percent = nrmse_fit_percent(full.force, result.predicted_after, kept);
-  result.parameters = model_uncertainty(result.final_model, s.fit_series, free_magnetics(s.scales, Magnetics::kMaterial));
+  // Its Jacobian with the searches' J-A sub-steps: a difference quotient, not a reported figure.
+  model::DamperModel linearised = result.final_model;
+  linearised.integration = options.start.integration;
+  result.parameters = model_uncertainty(linearised, s.fit_series, free_magnetics(s.scales, Magnetics::kMaterial));
   result.unexplained = describe(result.structure_after);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return result;

@@ -20,6 +20,11 @@ namespace mrd::tools {
 // blocks, it lowers the RMS error on the validation blocks by at least this fraction.
 inline constexpr double kMinimumValidationReduction = 0.10;
 
+// The searches' J-A sub-step may grow to this fraction of |He| (JilesAthertonSettings::
+// field_step_growth): far into saturation a jump then takes a few steps, at the uniform grid's
+// accuracy (tests/model/test_jiles_atherton_reference.cpp; docs/PERFORMANCE.md).
+inline constexpr double kSearchFieldStepGrowth = 0.02;
+
 struct ResidualOptions {
   // The damper the fit starts from: the config's, or the default. Effects enabled here were
   // declared by the config: they stay in the base model and are not candidates.
@@ -30,9 +35,9 @@ struct ResidualOptions {
   // min_fit_rate); every reported error is evaluated on the full series.
   std::size_t max_fit_samples = 100000;
   double min_fit_rate = 200.0;  // [Hz]
-  // The swarms whose trials integrate J-A (the base model's, coil_lag's) explore on at most this
-  // many samples of the fitting series, in windows spread over it (spread_windows); the
-  // Nelder-Mead after each refines on the whole fitting series.
+  // The swarms whose trials move B (the base model's magnetics, coil_lag's) explore on at most
+  // this many samples of the fitting series, the runs' openings (run_openings); the Nelder-Mead
+  // after each refines on the whole fitting series.
   std::size_t max_swarm_samples = 24000;
   int evaluations_per_parameter = 40;
   unsigned threads = 0;  // 0: every core

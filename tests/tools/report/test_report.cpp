@@ -124,6 +124,25 @@ TEST(ReportFit, AParameterTheResidualIgnoresHasNoDeviationAndLeavesTheOthers) {
   EXPECT_GT(u.standard_deviation[0], 0.0);
 }
 
+// p[0] and p[1] act only as their sum: one of them is undetermined (NaN), and the other and p[2]
+// are estimated as the straight line's intercept and slope.
+TEST(ReportFit, ParametersThatActOnlyTogetherLeaveTheRestDetermined) {
+  const std::vector<double> x = {0.0, 1.0, 2.0, 3.0, 4.0}, y = {0.1, 0.9, 2.2, 2.8, 4.1};
+  const auto u = parameter_uncertainty(
+      [&](const std::vector<double>& p) {
+        std::vector<double> r(x.size());
+        for (std::size_t i = 0; i < x.size(); ++i) r[i] = y[i] - (p[0] + p[1]) - p[2] * x[i];
+        return r;
+      },
+      {0.02, 0.02, 1.0});
+  EXPECT_TRUE(u.singular);
+  EXPECT_NE(std::isnan(u.standard_deviation[0]), std::isnan(u.standard_deviation[1]));
+  const double intercept_sd = std::isnan(u.standard_deviation[0]) ? u.standard_deviation[1] : u.standard_deviation[0];
+  // The line's own: sd(b) = s / sqrt(Sxx), sd(a) = s sqrt(1/n + xbar^2 / Sxx), with Sxx = 10, xbar = 2.
+  EXPECT_NEAR(u.standard_deviation[2], u.sigma / std::sqrt(10.0), 1e-6 * u.sigma);
+  EXPECT_NEAR(intercept_sd, u.sigma * std::sqrt(0.2 + 0.4), 1e-6 * u.sigma);
+}
+
 std::string report_slurp(const std::filesystem::path& path) {
   std::ifstream in(path);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};

@@ -42,8 +42,9 @@ mrd::record::RecordedRun run_of(const DamperClass& damper, RunProfile profile, d
   return mrd::record::parse_recorded_run(csv.str(), "another.csv");
 }
 
-ResidualResult base_only(const mrd::record::RecordedRun& run) {
+ResidualResult base_only(const mrd::record::RecordedRun& run, std::size_t max_swarm_samples = 24000) {
   ResidualOptions options;
+  options.max_swarm_samples = max_swarm_samples;
   options.threads = 2;
   options.candidates = {"gas_spring"};  // one cheap candidate: the base fit is what is judged
   options.discover = false;
@@ -63,6 +64,18 @@ TEST(BaseFit, AnotherDamperFitsToTheNoiseWithItsShapesIdentified) {
   EXPECT_NEAR(m.geometry.seal_friction, 60.0, 20.0);
   EXPECT_LT(m.geometry.sign_shape, -0.2);
   EXPECT_TRUE(mrd::model::validate(m).ok()) << mrd::model::validate(m).to_string();
+}
+
+// A long run's swarm explores on its opening (here 2,000 of 8,000 samples), where the core starts
+// as the whole run's does; the fit settled on the whole run reaches the noise. (Windows from the
+// run's middle, each started demagnetised, left 25-130 N: J-A remembers the history for cycles.)
+TEST(BaseFit, ALongRunsSwarmExploresItsOpeningAndTheFitStillReachesTheNoise) {
+  const DamperClass truth = another_damper();
+  const mrd::record::RecordedRun run = run_of(truth, RunProfile::kTable4, 8.0);
+  ASSERT_GT(run.size(), 4000u);
+  const ResidualResult r = base_only(run, 2000);
+  EXPECT_LT(r.before.all, 1.3 * truth.force_noise) << residual_summary({run}, r);
+  EXPECT_TRUE(r.accepted.empty()) << residual_summary({run}, r);
 }
 
 TEST(BaseFit, EveryParameterComesWithItsUncertainty) {

@@ -57,27 +57,22 @@ TEST(FitSeries, DecimationPicksSamplesAndKeepsEachRunAboveTheMinimumRate) {
   EXPECT_EQ(decimation_factor(s, 1000), 8u);
 }
 
-TEST(FitSeries, SpreadWindowsStayInsideOneRunEachAndCoverTheSeriesEvenly) {
-  const FitSeries s = make_fit_series({sine_run(1000, 30, true), sine_run(200, 30, true)}, {});  // 30,000 + 6,000
-  EXPECT_EQ(spread_windows(s, s.size()).size(), s.size());  // short enough: the series itself
-  const FitSeries w = spread_windows(s, 8000, 8);
-  ASSERT_EQ(w.run_starts.size(), 8u);
-  EXPECT_EQ(w.size(), 8000u);
-  // Window centres at 1/16, 3/16, ... of 36,000 samples: only the last falls in the 200 Hz run.
-  EXPECT_EQ(w.run_periods, (std::vector<double>{1e-3, 1e-3, 1e-3, 1e-3, 1e-3, 1e-3, 1e-3, 5e-3}));
-  EXPECT_DOUBLE_EQ(w.sample_period, 1e-3);
-  for (std::size_t r = 0; r < 8; ++r) EXPECT_EQ(w.run_starts[r], r * 1000);
-  // Each window is a stretch of its source: the first starts 1,750 samples in (t = 1.75 s).
-  EXPECT_DOUBLE_EQ(w.displacement[0], s.displacement[1750]);
-  EXPECT_DOUBLE_EQ(w.displacement[999], s.displacement[2749]);
-  EXPECT_EQ(w.validation[0], s.validation[1750]);
-  // The last window's centre, sample 33,750, lies 3,750 into the second run.
-  EXPECT_DOUBLE_EQ(w.force[7000], s.force[30000 + 3250]);
-  // A window that would straddle the runs' boundary moves back into its centre's run: the
-  // seventh of 2,000 samples around 29,250 ends at the first run's last sample.
-  const FitSeries wide = spread_windows(s, 16000, 8);
-  EXPECT_DOUBLE_EQ(wide.force[13999], s.force[29999]);
-  EXPECT_DOUBLE_EQ(wide.force[12000], s.force[28000]);
+TEST(FitSeries, RunOpeningsShareTheSamplesAndStartWhereEachRunStarts) {
+  // 2,000 + 30,000 + 6,000 samples.
+  const FitSeries s =
+      make_fit_series({sine_run(200, 10, true), sine_run(1000, 30, true), sine_run(1000, 6, true)}, {});
+  EXPECT_EQ(run_openings(s, s.size()).size(), s.size());
+  // 9,000 in equal shares of 3,000: the first run whole, its 1,000 left to the other two.
+  const FitSeries open = run_openings(s, 9000);
+  ASSERT_EQ(open.size(), 9000u);
+  EXPECT_EQ(open.run_starts, (std::vector<std::size_t>{0, 2000, 5500}));
+  EXPECT_EQ(open.run_periods, (std::vector<double>{5e-3, 1e-3, 1e-3}));
+  EXPECT_DOUBLE_EQ(open.sample_period, 1e-3);
+  EXPECT_DOUBLE_EQ(open.force[1999], s.force[1999]);
+  EXPECT_DOUBLE_EQ(open.force[2000], s.force[2000]);              // the second run's first sample
+  EXPECT_DOUBLE_EQ(open.displacement[5499], s.displacement[5499]);
+  EXPECT_DOUBLE_EQ(open.displacement[5500], s.displacement[32000]);  // the third run's first
+  EXPECT_EQ(open.validation[8999], s.validation[32000 + 3499]);
 }
 
 TEST(FitSeries, VelocityFromTheDisplacementWhenTheRunHasNone) {
