@@ -14,7 +14,22 @@ std::string_view to_string(CoilSignal s) {
 
 double nominal_sample_rate(const std::vector<double>& time) {
   if (time.size() < 2 || !(time.back() > time.front())) return 0.0;
-  return static_cast<double>(time.size() - 1) / (time.back() - time.front());
+  std::vector<double> steps(time.size() - 1);
+  for (std::size_t i = 1; i < time.size(); ++i) steps[i - 1] = time[i] - time[i - 1];
+  std::vector<double> sorted = steps;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
+  const double median = sorted[sorted.size() / 2];
+  // The mean of the steps that are not gaps: exact for a rounded time column, and a lost stretch
+  // of samples does not slow the rate of the rest.
+  double span = 0.0;
+  std::size_t count = 0;
+  for (const double dt : steps) {
+    if (dt > 1.5 * median) continue;
+    span += dt;
+    ++count;
+  }
+  return count > 0 && span > 0.0 ? static_cast<double>(count) / span
+                                 : static_cast<double>(time.size() - 1) / (time.back() - time.front());
 }
 
 SamplingSummary summarize_sampling(const std::vector<double>& time) {

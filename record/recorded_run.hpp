@@ -21,7 +21,7 @@ enum class CoilSignal : std::uint8_t {
 // vectors when the run did not record them, otherwise as long as `time`.
 struct RecordedRun {
   std::string name;          // the file, for messages, plots and reports
-  double sample_rate = 0.0;  // nominal [Hz]: (n - 1) / (last time - first time)
+  double sample_rate = 0.0;  // nominal [Hz]: nominal_sample_rate(time)
   CoilSignal coil_signal = CoilSignal::kCurrent;
   std::string coil_source;  // where the coil channel came from: "current_A", "--current 0.5 A", ...
 
@@ -37,6 +37,17 @@ struct RecordedRun {
   // CLOCK_MONOTONIC [s] of time 0 when the file says (mrd-plant's log, the controller's
   // telemetry: common/time_origin.hpp), to join it with another log of the same host.
   std::optional<double> time_origin;
+
+  // Rows the reader set aside rather than refuse the file for: a repeated row ("duplicate", one
+  // kept), a time that repeats with other values or goes back ("time_conflict"), an empty, nan
+  // or inf cell ("non_finite"). The screening reports them with its own spans.
+  struct SetAsideRow {
+    std::string_view reason;
+    std::size_t line = 0;          // in the file
+    std::size_t next_sample = 0;   // the sample it came before (size() when after the last)
+    std::string column;            // the cell's column; empty for a whole-row reason
+  };
+  std::vector<SetAsideRow> set_aside_rows;
 
   // What the reader did that the user must know (ignored columns, dropped CAN frames), one
   // line each; reports print them.
@@ -61,9 +72,10 @@ struct SamplingSummary {
 };
 [[nodiscard]] SamplingSummary summarize_sampling(const std::vector<double>& time);
 
-// The nominal rate from the span, not the median step: a time column rounded to 0.1 ms (the
-// Dyke file, 3004.8 Hz) has steps of 0.3 and 0.4 ms but its mean step is exact. 0 for fewer
-// than two samples.
+// The nominal rate: the mean of the steps no longer than 1.5 times the median one. The mean, not
+// the median: a time column rounded to 0.1 ms (the Dyke file, 3004.8 Hz) has steps of 0.3 and
+// 0.4 ms but its mean step is exact; without the long steps: a logging gap is missing samples,
+// not a slower logger. 0 for fewer than two samples.
 [[nodiscard]] double nominal_sample_rate(const std::vector<double>& time);
 
 }  // namespace mrd::record

@@ -1,7 +1,8 @@
 #include "record/run_csv.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
-#include <cstdio>
 
 #include "record/csv.hpp"
 
@@ -15,12 +16,6 @@ struct UsedColumn {
   std::size_t index = 0;
   ColumnUnit unit;
 };
-
-std::string seconds(double t) {
-  char text[40];
-  std::snprintf(text, sizeof text, "%.9g s", t);
-  return text;
-}
 
 class RunCsvParser {
  public:
@@ -38,10 +33,13 @@ class RunCsvParser {
     const std::size_t header_line = lines_.line_number();
     check_required();
     for (auto row = headerless ? first : next_line(); row; row = next_line()) read_row(*row);
+    note_set_aside_rows();
     if (run_.size() < 2) {
       throw InputError(input_error_message(
           name_, header_line, "",
-          "a run needs at least 2 samples, got " + std::to_string(run_.size())));
+          "a run needs at least 2 samples, got " + std::to_string(run_.size()) +
+              (run_.set_aside_rows.empty() ? std::string()
+                                           : " (" + std::to_string(run_.set_aside_rows.size()) + " rows set aside)")));
     }
     run_.sample_rate = nominal_sample_rate(run_.time);
     return std::move(run_);
@@ -223,27 +221,111 @@ class RunCsvParser {
                              " has " + std::to_string(width_));
     }
     const std::size_t n = run_.size();
+    // The row is read whole before any of it is kept: a row set aside leaves every channel as
+    // it was.
+    row_.clear();
     for (const auto& c : used_) {
       const std::string_view cell = cells[c.index];
-      if (cell.empty()) throw fail(c.label, "empty cell");
+      if (is_non_finite(cell)) return set_aside("non_finite", c.label);
       const auto value = parse_finite(cell);
       if (!value) throw fail(c.label, "'" + std::string(cell) + "' is not a finite number");
       const double v = c.unit.to_internal(*value);
       if (!std::isfinite(v)) {
         throw fail(c.label, "'" + std::string(cell) + "' overflows once converted to SI");
       }
-      if (c.unit.quantity == RunQuantity::kTime && n > 0) {
-        const double previous = run_.time.back();
-        if (v < previous)
-          throw fail(c.label, "time goes backwards: " + seconds(v) + " after " + seconds(previous));
-        if (v == previous) throw fail(c.label, "time does not increase: " + seconds(v) + " twice");
-      }
-      channel(c.unit.quantity).push_back(v);
+      row_.push_back(v);
     }
-    if (options_.sample_rate) run_.time.push_back(static_cast<double>(n) / *options_.sample_rate);
-    if (constant_) run_.coil.push_back(constant_->amps);
+    for (std::size_t k = 0; k < used_.size(); ++k) {
+      if (used_[k].unit.quantity != RunQuantity::kTime || n == 0) continue;
+      const double previous = run_.time.back();
+      if (row_[k] > previous) break;
+      if (row_[k] == previous && same_as_last_row()) return set_aside("duplicate", "");
+      // Two rows in a row that go back, in order and past the row before the last kept one: that
+      // row was the stray (a time written too far ahead), not they and every row after them.
+      if (conflict_ && row_[k] > conflict_->values[k] &&
+          (n == 1 || conflict_->values[k] > run_.time[n - 2])) {
+        const PendingRow pending = *conflict_;
+        drop_last_row(used_[k].label);
+        std::erase_if(run_.set_aside_rows, [&](const auto& r) { return r.line == pending.line; });
+        keep_row(pending.values, pending.line);
+        break;
+      }
+      conflict_ = PendingRow{row_, lines_.line_number()};
+      return set_aside("time_conflict", used_[k].label);
+    }
+    keep_row(row_, lines_.line_number());
   }
 
+  void keep_row(const std::vector<double>& values, std::size_t line) {
+    const std::size_t n = run_.size();
+    for (std::size_t k = 0; k < used_.size(); ++k) channel(used_[k].unit.quantity).push_back(values[k]);
+    if (options_.sample_rate) run_.time.push_back(static_cast<double>(n) / *options_.sample_rate);
+    if (constant_) run_.coil.push_back(constant_->amps);
+    last_line_ = line;
+    conflict_.reset();
+  }
+
+  // An empty cell, or nan / inf in any spelling: a logger's failed read, not a malformed file.
+  static bool is_non_finite(std::string_view cell) {
+    if (!cell.empty() && (cell.front() == '+' || cell.front() == '-')) cell.remove_prefix(1);
+    std::string lower(cell);
+    for (char& ch : lower) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    return lower.empty() || lower == "nan" || lower == "inf" || lower == "infinity";
+  }
+
+  bool same_as_last_row() {
+    for (std::size_t k = 0; k < used_.size(); ++k) {
+      const std::vector<double>& c = channel(used_[k].unit.quantity);
+      if (c.empty() || c.back() != row_[k]) return false;
+    }
+    return true;
+  }
+
+  // The last row kept, set aside after all as a time_conflict.
+  void drop_last_row(const std::string& column) {
+    const std::size_t n = run_.size();
+    for (std::vector<double>* c : {&run_.time, &run_.displacement, &run_.coil, &run_.force, &run_.velocity, &run_.B,
+                                   &run_.temperature})
+      if (c->size() == n && n > 0) c->pop_back();
+    conflict_.reset();
+    run_.set_aside_rows.push_back({"time_conflict", last_line_, run_.size(), column});
+    std::ranges::sort(run_.set_aside_rows, {}, &RecordedRun::SetAsideRow::line);
+  }
+
+  void set_aside(std::string_view reason, const std::string& column) {
+    run_.set_aside_rows.push_back({reason, lines_.line_number(), run_.size(), column});
+  }
+
+  // Counts per reason in one note, with the first line of each.
+  void note_set_aside_rows() {
+    std::string note;
+    for (const std::string_view reason : {"duplicate", "time_conflict", "non_finite"}) {
+      std::size_t count = 0, first = 0;
+      for (const auto& r : run_.set_aside_rows) {
+        if (r.reason != reason) continue;
+        if (count++ == 0) first = r.line;
+      }
+      if (count == 0) continue;
+      note.append(note.empty() ? "" : ", ")
+          .append(std::to_string(count))
+          .append(" ")
+          .append(reason)
+          .append(" (first at line ")
+          .append(std::to_string(first))
+          .append(")");
+    }
+    if (!note.empty()) run_.notes.push_back("rows set aside: " + note);
+  }
+
+  std::vector<double> row_;
+  std::size_t last_line_ = 0;  // the line of the last row kept
+  // The row just set aside for going back, with its line: kept after all if the next row shows
+  // that the row before it strayed.
+  struct PendingRow {
+    std::vector<double> values;
+    std::size_t line = 0;
+  };
+  std::optional<PendingRow> conflict_;
   LineReader lines_;
   const std::string& name_;
   const RunReadOptions& options_;

@@ -112,7 +112,9 @@ Tally damage_line_by_line(const std::string& text, std::string_view alphabet,
     } catch (const InputError& e) {
       ++tally.errors;
       const std::size_t named = error_line(e.what());
-      EXPECT_TRUE(named == index + 1 || named == index + 2)
+      // Or too few rows left once the damaged ones were set aside (named at the header).
+      const bool too_few = std::string_view(e.what()).find("rows set aside") != std::string_view::npos;
+      EXPECT_TRUE(named == index + 1 || named == index + 2 || too_few)
           << "line " << index + 1 << " damaged: '" << damaged[index] << "'\n" << e.what();
     }
     if (testing::Test::HasFailure()) break;  // one damaged text is enough to read
@@ -128,7 +130,11 @@ Tally damage_line_by_line(const std::string& text, std::string_view alphabet,
 void check_delimited(const std::string& text, const mrd::record::RunReadOptions& options, std::size_t header_lines) {
   damage_line_by_line(text, kDelimitedAlphabet, options, [&](const RecordedRun& run, const RecordedRun& clean, std::size_t index,
                                          const std::vector<std::string>& damaged) {
-    const bool lost_line = blank(damaged[index]);
+    // A row the reader set aside (an emptied or nan cell, a time that now repeats or goes back) is
+    // lost like a blank one, and only the damaged row may be.
+    for (const RecordedRun::SetAsideRow& r : run.set_aside_rows)
+      EXPECT_TRUE(r.line == index + 1 || r.line == index + 2) << r.line << ": " << damaged[index];
+    const bool lost_line = blank(damaged[index]) || !run.set_aside_rows.empty();
     if (index < header_lines) {
       if (!lost_line) {
         EXPECT_EQ(run.size(), clean.size()) << damaged[index];
@@ -137,7 +143,14 @@ void check_delimited(const std::string& text, const mrd::record::RunReadOptions&
     }
     const std::size_t row = index - header_lines;
     ASSERT_EQ(run.size(), clean.size() - (lost_line ? 1 : 0)) << damaged[index];
+    // A time made to stray ahead near the end leaves it open which of two rows strayed: the reader
+    // may set aside the row after the damaged one instead, and only those two are then unjudged.
+    const bool either = !run.set_aside_rows.empty() && run.set_aside_rows.front().line == index + 2;
     for (std::size_t i = 0, j = 0; i < clean.size(); ++i) {
+      if (either && (i == row || i == row + 1)) {
+        if (i == row) ++j;
+        continue;
+      }
       if (i == row && lost_line) continue;
       if (i != row) {
         EXPECT_EQ(run.time[j], clean.time[i]) << damaged[index];

@@ -130,25 +130,62 @@ TEST(RunCsv, SampleRateStandsInForAMissingTimeColumn) {
   EXPECT_DOUBLE_EQ(run.force[1], 6.0);
 }
 
-TEST(RunCsvErrors, NonFiniteValuesNameLineAndColumn) {
+TEST(RunCsvErrors, TextWhereANumberBelongsNamesLineAndColumn) {
   std::string text = kGood;
-  text.replace(text.find("0.001,2"), 7, "0.001,nan");
-  EXPECT_EQ(csv_error_of(text), "run.csv:3: column 'displacement_mm': 'nan' is not a finite number");
-  text = kGood;
-  text.replace(text.find("1.2"), 3, "inf");
-  EXPECT_EQ(csv_error_of(text), "run.csv:4: column 'force_kN': 'inf' is not a finite number");
-  text = kGood;
   text.replace(text.find("0.5,1.1"), 3, "abc");
   EXPECT_EQ(csv_error_of(text), "run.csv:3: column 'current_A': 'abc' is not a finite number");
-  EXPECT_EQ(csv_error_of("time_s,displacement_mm,current_A\n0,,1\n1,1,1\n"),
-            "run.csv:2: column 'displacement_mm': empty cell");
 }
 
-TEST(RunCsvErrors, TimeMustIncrease) {
-  EXPECT_EQ(csv_error_of("time_s,displacement_mm,current_A\n0,1,0\n0.002,1,0\n0.001,1,0\n"),
-            "run.csv:4: column 'time_s': time goes backwards: 0.001 s after 0.002 s");
-  EXPECT_EQ(csv_error_of("time_s,displacement_mm,current_A\n0,1,0\n\n0.001,1,0\n0.001,1,0\n"),
-            "run.csv:5: column 'time_s': time does not increase: 0.001 s twice");
+// What loggers do costs only the rows it touched: each is set aside with its reason and line, the
+// rest of the file is read.
+TEST(RunCsvSetAside, EmptyAndNonFiniteCellsSetTheirRowAside) {
+  const std::string text =
+      "time_s,displacement_mm,current_A,force_kN\n0,1,0.5,1\n0.001,nan,0.5,1.1\n0.002,3,,1.2\n"
+      "0.003,4,0.5,-INF\n0.004,5,0.5,1.4\n";
+  const auto run = parse_run_csv(text, "run.csv");
+  ASSERT_EQ(run.size(), 2u);
+  EXPECT_DOUBLE_EQ(run.time[1], 0.004);
+  EXPECT_DOUBLE_EQ(run.force[1], 1400.0);
+  ASSERT_EQ(run.set_aside_rows.size(), 3u);
+  EXPECT_EQ(run.set_aside_rows[0].reason, "non_finite");
+  EXPECT_EQ(run.set_aside_rows[0].line, 3u);
+  EXPECT_EQ(run.set_aside_rows[0].column, "displacement_mm");
+  EXPECT_EQ(run.set_aside_rows[0].next_sample, 1u);
+  EXPECT_EQ(run.set_aside_rows[1].column, "current_A");
+  EXPECT_EQ(run.set_aside_rows[2].column, "force_kN");
+  EXPECT_EQ(run.notes.back(), "rows set aside: 3 non_finite (first at line 3)");
+}
+
+TEST(RunCsvSetAside, ARepeatedRowIsADuplicateAndAnotherAtTheSameTimeAConflict) {
+  const std::string text =
+      "time_s,displacement_mm,current_A\n0,1,0\n0.001,2,0\n0.001,2,0\n0.001,2.5,0\n0.0005,9,0\n0.002,3,0\n";
+  const auto run = parse_run_csv(text, "run.csv");
+  EXPECT_EQ(run.time, (std::vector<double>{0.0, 0.001, 0.002}));
+  EXPECT_DOUBLE_EQ(run.displacement[1], 0.002);  // the first of the repeats is kept
+  ASSERT_EQ(run.set_aside_rows.size(), 3u);
+  EXPECT_EQ(run.set_aside_rows[0].reason, "duplicate");
+  EXPECT_EQ(run.set_aside_rows[0].line, 4u);
+  EXPECT_EQ(run.set_aside_rows[1].reason, "time_conflict");  // same time, another value
+  EXPECT_EQ(run.set_aside_rows[2].reason, "time_conflict");  // time going back
+  EXPECT_EQ(run.set_aside_rows[2].line, 6u);
+  EXPECT_EQ(run.notes.back(), "rows set aside: 1 duplicate (first at line 4), 2 time_conflict (first at line 5)");
+}
+
+// A time written far ahead would otherwise make every row after it go back: the two rows after
+// it agree with each other and with the rows before, so it is the one set aside.
+TEST(RunCsvSetAside, ATimeWrittenFarAheadIsTheRowSetAsideNotTheRest) {
+  const std::string text =
+      "time_s,displacement_mm,current_A\n0,1,0\n0.001,2,0\n9,3,0\n0.003,4,0\n0.004,5,0\n0.005,6,0\n";
+  const auto run = parse_run_csv(text, "run.csv");
+  EXPECT_EQ(run.time, (std::vector<double>{0.0, 0.001, 0.003, 0.004, 0.005}));
+  ASSERT_EQ(run.set_aside_rows.size(), 1u);
+  EXPECT_EQ(run.set_aside_rows[0].reason, "time_conflict");
+  EXPECT_EQ(run.set_aside_rows[0].line, 4u);
+}
+
+TEST(RunCsvErrors, AFileWithTooFewUsableRowsSaysHowManyWereSetAside) {
+  EXPECT_EQ(csv_error_of("time_s,displacement_mm,current_A\n0,1,0\n0,1,0\n0,nan,0\n"),
+            "run.csv:1: a run needs at least 2 samples, got 1 (2 rows set aside)");
 }
 
 TEST(RunCsvErrors, MissingColumns) {

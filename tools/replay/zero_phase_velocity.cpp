@@ -1,8 +1,10 @@
 #include "tools/replay/zero_phase_velocity.hpp"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <span>
 
 #include "tools/spectrum.hpp"
 
@@ -39,25 +41,72 @@ Biquad butterworth_low_pass(double sample_rate, double cutoff) {
   return {b0, 2.0 * b0, b0, 2.0 * (k * k - 1.0) * norm, (1.0 - k / q + k * k) * norm};
 }
 
+// The second derivative per sample^2 at x[0] of the least-squares cubic through x[0..count):
+// the record's curvature at its end, robust to the noise of single samples.
+double end_curvature(std::span<const double> x, std::size_t count) {
+  count = std::min(count, x.size());
+  if (count < 4) return 0.0;
+  Eigen::Matrix4d normal = Eigen::Matrix4d::Zero();
+  Eigen::Vector4d right = Eigen::Vector4d::Zero();
+  const double scale = static_cast<double>(count);  // k / count keeps the normal matrix conditioned
+  for (std::size_t i = 0; i < count; ++i) {
+    const double k = static_cast<double>(i) / scale;
+    const Eigen::Vector4d p(1.0, k, k * k, k * k * k);
+    normal += p * p.transpose();
+    right += p * x[i];
+  }
+  const Eigen::Vector4d c = normal.ldlt().solve(right);
+  return 2.0 * c(2) / (scale * scale);
+}
+
+// `pad` samples before x[0], in time order: x reflected through x[0] (2 x0 - x_k keeps the
+// value and the slope), its curvature restored (the reflection flips it) from the cubic through
+// the first `fit` samples.
+void pad_before(std::span<const double> x, std::size_t pad, std::size_t fit, std::vector<double>& out) {
+  const std::size_t n = x.size();
+  const double curvature = end_curvature(x, fit);
+  const double width = 3.0 * static_cast<double>(std::max<std::size_t>(fit, 1));
+  for (std::size_t k = pad; k >= 1; --k) {
+    const double s = static_cast<double>(k);
+    // The restored curvature fades out past the fitted span, where a parabola would run away.
+    out.push_back(2.0 * x[0] - x[std::min(k, n - 1)] + curvature * s * s * std::exp(-(s * s) / (width * width)));
+  }
+}
+
 }  // namespace
 
 std::vector<double> zero_phase_velocity(std::span<const double> displacement, double sample_rate,
                                         double cutoff) {
-  std::vector<double> x(displacement.begin(), displacement.end());
-  const std::size_t n = x.size();
+  const std::size_t n = displacement.size();
   if (n < 2) return std::vector<double>(n, 0.0);
   // Above about 0.45 of the sample rate the low-pass would do nothing; plain differences then.
-  if (cutoff > 0.0 && cutoff < 0.45 * sample_rate) {
+  const bool filtered = cutoff > 0.0 && cutoff < 0.45 * sample_rate;
+  // Each end padded (pad_before) so that the motion continues with its value, slope and
+  // curvature: neither pass starts a transient on the record itself, the pads take it, over
+  // three periods of the cutoff (the filter's response has died by a factor of about 1e-6).
+  const std::size_t pad =
+      filtered ? std::min(n - 1, static_cast<std::size_t>(std::ceil(3.0 * sample_rate / cutoff))) : 1;
+  // The curvature from 0.7 periods of the cutoff, faded over three times that: the best of the
+  // spans tried on sines at every phase (tests/tools/residual/test_fit_series.cpp).
+  const auto fit = static_cast<std::size_t>(std::ceil(0.7 * sample_rate / std::max(cutoff, 1e-9)));
+  std::vector<double> x;
+  x.reserve(n + 2 * pad);
+  pad_before(displacement, pad, fit, x);
+  x.insert(x.end(), displacement.begin(), displacement.end());
+  const std::vector<double> reversed(displacement.rbegin(), displacement.rend());
+  std::vector<double> after;
+  pad_before(reversed, pad, fit, after);
+  x.insert(x.end(), after.rbegin(), after.rend());
+  if (filtered) {
     const Biquad filter = butterworth_low_pass(sample_rate, cutoff);
     filter.run(x);
     std::reverse(x.begin(), x.end());
     filter.run(x);
     std::reverse(x.begin(), x.end());
   }
+  // Central differences throughout: the pads give the ends their outer neighbours.
   std::vector<double> v(n);
-  v[0] = (x[1] - x[0]) * sample_rate;
-  v[n - 1] = (x[n - 1] - x[n - 2]) * sample_rate;
-  for (std::size_t i = 1; i + 1 < n; ++i) v[i] = 0.5 * (x[i + 1] - x[i - 1]) * sample_rate;
+  for (std::size_t i = 0; i < n; ++i) v[i] = 0.5 * (x[pad + i + 1] - x[pad + i - 1]) * sample_rate;
   return v;
 }
 

@@ -7,9 +7,9 @@ namespace mrd::tools {
 
 // Velocity [m/s] from displacement [m] for offline analysis: a second-order Butterworth
 // low-pass at `cutoff` [Hz], run forwards and then backwards (no phase lag, unlike the
-// controller's causal filter), then central differences. Non-causal: for tools that see the
-// whole run, never for the control loop. Both passes start at rest on their first sample, so
-// a run that starts in motion has a short transient at each end.
+// controller's causal filter), then central differences. Each end is padded by its odd
+// reflection, so a record that starts or ends in motion keeps its velocity there (filtfilt's
+// padding). Non-causal: for tools that see the whole run, never for the control loop.
 [[nodiscard]] std::vector<double> zero_phase_velocity(std::span<const double> displacement,
                                                       double sample_rate, double cutoff);
 

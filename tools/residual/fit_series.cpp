@@ -4,8 +4,10 @@
 #include <cmath>
 #include <numeric>
 #include <random>
+#include <span>
 
 #include "record/csv.hpp"
+#include "record/run_gaps.hpp"
 #include "tools/replay/zero_phase_velocity.hpp"
 
 namespace mrd::tools {
@@ -33,6 +35,50 @@ void append_sample(FitSeries& to, const FitSeries& from, std::size_t i) {
   to.validation.push_back(from.validation[i]);
 }
 
+// The filled samples of each gap, with `margin_s` on either side, set aside as kGap spans
+// (whether or not the rest was screened).
+void set_aside_gaps(const record::GapFilledRun& filled, double margin_s, Screening& screening) {
+  if (filled.gaps.empty()) return;
+  const record::RecordedRun& run = filled.run;
+  const std::size_t n = run.size();
+  screening.excluded.resize(n, 0);
+  const auto margin = static_cast<std::size_t>(std::ceil(margin_s * std::max(run.sample_rate, 1.0)));
+  for (const auto& [first, last] : filled.gaps) {
+    ScreenedSpan span;
+    span.first = first - std::min(first, margin);
+    span.last = std::min(last + margin, n - 1);
+    span.start_s = run.time[span.first];
+    span.end_s = run.time[span.last];
+    span.channel = "time";
+    span.reason = ScreenReason::kGap;
+    std::fill(screening.excluded.begin() + static_cast<std::ptrdiff_t>(span.first),
+              screening.excluded.begin() + static_cast<std::ptrdiff_t>(span.last) + 1, std::uint8_t{1});
+    screening.spans.push_back(std::move(span));
+  }
+  std::ranges::stable_sort(screening.spans, {}, &ScreenedSpan::first);
+  screening.excluded_samples = static_cast<std::size_t>(std::ranges::count(screening.excluded, std::uint8_t{1}));
+}
+
+// The zero-phase velocity of each stretch between gaps on its own (no filter runs across a gap,
+// and each stretch's ends are padded like the record's); across a filled gap, the bridge's slope.
+std::vector<double> velocity_by_segment(const record::RecordedRun& run, const std::vector<std::uint8_t>& filled,
+                                        double cutoff) {
+  std::vector<double> v(run.size(), 0.0);
+  for (const auto& [first, last] : record::unfilled_segments(filled)) {
+    const std::span<const double> x(run.displacement.data() + first, last - first);
+    const std::vector<double> part = zero_phase_velocity(x, run.sample_rate, cutoff);
+    std::copy(part.begin(), part.end(), v.begin() + static_cast<std::ptrdiff_t>(first));
+  }
+  for (std::size_t i = 0; i < run.size(); ++i) {
+    if (!filled[i]) continue;
+    std::size_t a = i, b = i;
+    while (a > 0 && filled[a]) --a;
+    while (b + 1 < run.size() && filled[b]) ++b;
+    v[i] = (run.displacement[b] - run.displacement[a]) / (run.time[b] - run.time[a]);
+  }
+  return v;
+}
+
 }  // namespace
 
 FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const FitSeriesOptions& options) {
@@ -43,17 +89,19 @@ FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const Fi
   const int blocks = std::max(options.blocks, 2);
   for (const record::RecordedRun& recorded : runs) {
     check_run(recorded, options);
+    // A logging gap becomes samples at the nominal period, bridged and never fitted: the time
+    // steps stay even and the model's state runs through it.
+    const record::GapFilledRun gap_filled = record::fill_gaps(recorded);
+    const record::RecordedRun& even = gap_filled.run;
     // Screened: the faulted spans set aside, the model's inputs bridged across them.
     Screening screening;
+    if (options.screen) screening = screen_run(even, options.screening);
     record::RecordedRun bridged;
-    const record::RecordedRun* source = &recorded;
-    if (options.screen) {
-      screening = screen_run(recorded, options.screening);
-      if (screening.excluded_samples > 0) {
-        bridged = recorded;
-        bridge_excluded_inputs(bridged, screening);
-        source = &bridged;
-      }
+    const record::RecordedRun* source = &even;
+    if (screening.excluded_samples > 0) {
+      bridged = even;
+      bridge_excluded_inputs(bridged, screening);
+      source = &bridged;
     }
     const record::RecordedRun& run = *source;
     const double rate = run.sample_rate;
@@ -65,10 +113,13 @@ FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const Fi
     if (!run.has_velocity()) {
       double cutoff = options.velocity_cutoff;
       if (cutoff <= 0.0) cutoff = motion_velocity_cutoff(run.displacement, rate);
-      velocity = zero_phase_velocity(run.displacement, rate, cutoff);
+      velocity = velocity_by_segment(run, gap_filled.filled, cutoff);
       s.notes.push_back(run.name + ": velocity from the displacement, zero-phase low-pass at " +
-                        std::to_string(cutoff) + " Hz");
+                        std::to_string(cutoff) + " Hz" +
+                        (gap_filled.gaps.empty() ? "" : ", on each stretch between the logging gaps"));
     }
+    // After the velocity: the samples beside a gap are measurements, set aside but not bridged.
+    set_aside_gaps(gap_filled, options.screening.margin_s, screening);
     s.run_starts.push_back(s.size());
     const std::size_t n = run.size();
     // Half the blocks validate: a fixed shuffle, the same for every run and every call.
@@ -88,7 +139,7 @@ FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const Fi
                                  ? held_out[static_cast<std::size_t>(block)]
                                  : FitSeries::kExcluded);
     }
-    if (options.screen) s.screenings.emplace_back(recorded.name, std::move(screening));
+    if (options.screen || !gap_filled.gaps.empty()) s.screenings.emplace_back(recorded.name, std::move(screening));
   }
   return s;
 }

@@ -31,8 +31,9 @@ std::string screening_summary(const ResidualResult& r) {
     total += s.excluded.size();
     for (const ScreenedSpan& span : s.spans) {
       if (++lines > 12) continue;
-      out += format("  %s: %.4f-%.4f s, %s %s\n", run.c_str(), span.start_s, span.end_s, span.channel.c_str(),
-                    std::string(to_string(span.reason)).c_str());
+      out += format("  %s: %.4f-%.4f s, %s %s%s\n", run.c_str(), span.start_s, span.end_s, span.channel.c_str(),
+                    std::string(to_string(span.reason)).c_str(),
+                    span.line > 0 ? format(" (line %zu)", span.line).c_str() : "");
     }
   }
   if (lines > 12) out += format("  ... and %zu more spans (the JSON lists them all)\n", lines - 12);
@@ -156,11 +157,13 @@ std::string residual_json(const ResidualResult& r, const ForceFitFigures* fit) {
   for (const auto& [run, s] : r.screenings) {
     excluded += s.excluded_samples;
     for (const ScreenedSpan& span : s.spans) {
-      spans.push_back({{"run", run},
-                       {"start_s", span.start_s},
-                       {"end_s", span.end_s},
-                       {"channel", span.channel},
-                       {"reason", std::string(to_string(span.reason))}});
+      Json entry = {{"run", run},
+                    {"start_s", span.start_s},
+                    {"end_s", span.end_s},
+                    {"channel", span.channel},
+                    {"reason", std::string(to_string(span.reason))}};
+      if (span.line > 0) entry["line"] = span.line;
+      spans.push_back(std::move(entry));
     }
   }
   Json parameters = Json::array();

@@ -11,6 +11,9 @@ std::string_view to_string(ScreenReason r) {
     case ScreenReason::kStuck: return "stuck";
     case ScreenReason::kSpike: return "spike";
     case ScreenReason::kGap: return "gap";
+    case ScreenReason::kDuplicate: return "duplicate";
+    case ScreenReason::kTimeConflict: return "time_conflict";
+    case ScreenReason::kNonFinite: return "non_finite";
   }
   return "?";
 }
@@ -185,7 +188,15 @@ Screening screen_run(const record::RecordedRun& run, const ScreeningOptions& o) 
     std::fill(s.excluded.begin() + static_cast<std::ptrdiff_t>(span.first),
               s.excluded.begin() + static_cast<std::ptrdiff_t>(span.last) + 1, std::uint8_t{1});
   }
-  std::ranges::sort(s.spans, {}, &ScreenedSpan::first);
+  // The reader's rows: reported where they were, nothing more set aside for them.
+  for (const record::RecordedRun::SetAsideRow& row : run.set_aside_rows) {
+    const std::size_t at = std::min(row.next_sample, n - 1);
+    const ScreenReason reason = row.reason == "duplicate"       ? ScreenReason::kDuplicate
+                                : row.reason == "time_conflict" ? ScreenReason::kTimeConflict
+                                                                : ScreenReason::kNonFinite;
+    s.spans.push_back({at, at, run.time[at], run.time[at], row.column.empty() ? "row" : row.column, reason, row.line});
+  }
+  std::ranges::stable_sort(s.spans, {}, &ScreenedSpan::first);
   s.excluded_samples = static_cast<std::size_t>(std::ranges::count(s.excluded, std::uint8_t{1}));
   return s;
 }

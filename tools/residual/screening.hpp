@@ -16,6 +16,11 @@ enum class ScreenReason : std::uint8_t {
   kStuck,    // a channel repeating one value while the others say the damper moves
   kSpike,    // one sample far from both neighbours, far above the noise
   kGap,      // a time step longer than 1.5 nominal periods
+  // Rows the reader set aside (record::RecordedRun::set_aside_rows): no sample of the run is
+  // lost to them beyond the row itself (a missing row is then a gap).
+  kDuplicate,     // a repeated row, one kept
+  kTimeConflict,  // the same time with other values, or time going back
+  kNonFinite,     // an empty, nan or inf cell
 };
 [[nodiscard]] std::string_view to_string(ScreenReason r);
 
@@ -24,8 +29,9 @@ struct ScreenedSpan {
   std::size_t last = 0;
   double start_s = 0.0;   // the run's own time of `first` and `last` [s]
   double end_s = 0.0;
-  std::string channel;    // "displacement", "force", "velocity" or "time"
+  std::string channel;    // "displacement", "force", "velocity" or "time"; a set-aside row's column
   ScreenReason reason = ScreenReason::kClipped;
+  std::size_t line = 0;  // a set-aside row's line in the file (0 for the others)
 };
 
 struct Screening {

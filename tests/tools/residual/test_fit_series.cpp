@@ -88,6 +88,57 @@ TEST(FitSeries, VelocityFromTheDisplacementWhenTheRunHasNone) {
       << s.notes[0];
 }
 
+// A record that starts and ends in motion keeps its velocity at the ends: the filter's passes
+// run in on the pads, not on the record. Measured: within 0.1-1.0 % of the amplitude in the first
+// and last 0.5 s; with passes started at rest, up to the whole amplitude (the sign of the last
+// reversal could flip); with a plain odd reflection (curvature flipped), 10 %.
+TEST(ZeroPhaseVelocity, TheRecordsEdgesKeepTheirVelocity) {
+  for (const double phase : {0.0, 1.0, 2.5}) {
+    std::vector<double> x;
+    for (std::size_t i = 0; i < 6000; ++i) x.push_back(0.02 * std::sin(2.0 * std::numbers::pi * (static_cast<double>(i) / 1000.0) + phase));
+    const std::vector<double> v = zero_phase_velocity(x, 1000.0, 6.1);
+    const double amplitude = 0.04 * std::numbers::pi;
+    double edge = 0.0, inside = 0.0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      const double error = std::fabs(v[i] - amplitude * std::cos(2.0 * std::numbers::pi * (static_cast<double>(i) / 1000.0) + phase));
+      (i < 500 || i >= 5500 ? edge : inside) = std::max(i < 500 || i >= 5500 ? edge : inside, error);
+    }
+    EXPECT_LT(edge, 0.015 * amplitude) << "phase " << phase;
+    EXPECT_LT(inside, 2e-3 * amplitude) << "phase " << phase;
+  }
+}
+
+// A logging gap costs only the gap: its samples are filled at the nominal period and set aside,
+// the rate is the logger's, and the velocity on either side is computed without crossing it.
+TEST(FitSeries, ALoggingGapCostsOnlyTheGap) {
+  mrd::record::RecordedRun run = sine_run(1000, 8, false);
+  for (std::vector<double>* c : {&run.time, &run.displacement, &run.coil, &run.force})
+    c->erase(c->begin() + 4000, c->begin() + 4300);  // 0.3 s lost
+  run.sample_rate = mrd::record::nominal_sample_rate(run.time);
+  EXPECT_DOUBLE_EQ(run.sample_rate, 1000.0);  // the gap is missing samples, not a slower logger
+  const FitSeries s = make_fit_series({run}, {});
+  ASSERT_EQ(s.size(), 8000u);
+  EXPECT_DOUBLE_EQ(s.sample_period, 1e-3);
+  ASSERT_EQ(s.screenings.size(), 1u);
+  const Screening& screening = s.screenings[0].second;
+  ASSERT_EQ(screening.spans.size(), 1u);
+  EXPECT_EQ(screening.spans[0].reason, ScreenReason::kGap);
+  // The filled samples and a margin of 5-6 ms (5 ms, rounded up) on either side, nothing else.
+  EXPECT_GE(screening.spans[0].first, 3994u);
+  EXPECT_LE(screening.spans[0].first, 3995u);
+  EXPECT_GE(screening.spans[0].last, 4304u);
+  EXPECT_LE(screening.spans[0].last, 4305u);
+  EXPECT_LE(screening.excluded_samples, 312u);
+  const double amplitude = 0.04 * std::numbers::pi;
+  double worst = 0.0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (s.validation[i] == FitSeries::kExcluded) continue;
+    const double t = static_cast<double>(i) / 1000.0;
+    worst = std::max(worst, std::fabs(s.velocity[i] - amplitude * std::cos(2.0 * std::numbers::pi * t)));
+  }
+  EXPECT_LT(worst, 0.015 * amplitude);
+}
+
 TEST(ZeroPhaseVelocity, CutoffFollowsTheMotion) {
   const mrd::record::RecordedRun run = sine_run(1000, 8, false);
   // Five times 1.22 Hz: 4096 samples give bins of 0.244 Hz, and the Hann window spreads the

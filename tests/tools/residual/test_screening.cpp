@@ -144,3 +144,33 @@ TEST(Screening, AFaultedEndDoesNotTakeOverTheFit) {
 }
 
 }  // namespace
+
+namespace {
+
+// The rows the reader set aside are the screening's spans too, with reason, column and line, and
+// cost no sample beyond themselves.
+TEST(Screening, RowsTheReaderSetAsideAreListedWithTheirLine) {
+  std::string text = "time_s,displacement_mm,current_A,force_N\n";
+  for (int i = 0; i < 200; ++i) {
+    const std::string row = std::to_string(i * 0.001) + "," + std::to_string(i % 7) + ",0.5," + std::to_string(i % 5) + "\n";
+    text += row;
+    if (i == 50) text += row;  // a repeated row (line 53)
+  }
+  text.insert(text.find("\n0.100000,"), "\n0.100000,,0.5,1");  // an empty cell before t = 0.1 s
+  const mrd::record::RecordedRun run = mrd::record::parse_recorded_run(text, "logger.csv");
+  ASSERT_EQ(run.size(), 200u);
+  const mrd::tools::Screening s = mrd::tools::screen_run(run);
+  std::vector<const mrd::tools::ScreenedSpan*> rows;
+  for (const auto& span : s.spans)
+    if (span.line > 0) rows.push_back(&span);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0]->reason, mrd::tools::ScreenReason::kDuplicate);
+  EXPECT_EQ(rows[0]->line, 53u);
+  EXPECT_EQ(rows[0]->channel, "row");
+  EXPECT_EQ(rows[1]->reason, mrd::tools::ScreenReason::kNonFinite);
+  EXPECT_EQ(rows[1]->channel, "displacement_mm");
+  EXPECT_DOUBLE_EQ(rows[1]->start_s, 0.1);
+  EXPECT_EQ(std::string(mrd::tools::to_string(rows[1]->reason)), "non_finite");
+}
+
+}  // namespace

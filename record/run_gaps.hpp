@@ -1,0 +1,29 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "record/recorded_run.hpp"
+
+namespace mrd::record {
+
+// A run with its logging gaps filled: a step longer than 1.5 nominal periods gets samples at the
+// nominal period, every channel interpolated linearly across it. The inputs then carry a model's
+// state through the gap (the coil most likely moved between the samples on either side) and the
+// time steps stay even; the filled samples are no measurement and are flagged.
+struct GapFilledRun {
+  RecordedRun run;
+  std::vector<std::uint8_t> filled;  // per sample of `run`: 1 where no logger wrote it
+  // Each gap's filled samples [first, last] in `run`, in order.
+  std::vector<std::pair<std::size_t, std::size_t>> gaps;
+};
+// The run itself (no sample filled) when it has no gap.
+GapFilledRun fill_gaps(const RecordedRun& run);
+
+// Runs of consecutive samples with the same flag 0 in `filled`: the segments a filter may run
+// along without crossing a gap, as [first, last) pairs.
+std::vector<std::pair<std::size_t, std::size_t>> unfilled_segments(const std::vector<std::uint8_t>& filled);
+
+}  // namespace mrd::record
