@@ -61,19 +61,30 @@ void set_aside_gaps(const record::GapFilledRun& filled, double margin_s, Screeni
 
 // The zero-phase velocity of each stretch between gaps on its own (no filter runs across a gap,
 // and each stretch's ends are padded like the record's); across a filled gap, the bridge's slope.
+// A gap shorter than a tenth of the cutoff's period (a lost row or two) is filtered through on its
+// bridge instead: the chord is the motion there to well within the filter's resolution, while
+// every split puts two padded ends, each a little off, into the middle of the record.
 std::vector<double> velocity_by_segment(const record::RecordedRun& run, const std::vector<std::uint8_t>& filled,
                                         double cutoff) {
+  const auto short_gap = static_cast<std::size_t>(0.1 * run.sample_rate / cutoff);
+  std::vector<std::uint8_t> split = filled;
+  for (std::size_t i = 0; i < split.size();) {
+    std::size_t j = i;
+    while (j < split.size() && filled[j]) ++j;
+    if (j > i && j - i <= short_gap) std::fill(split.begin() + static_cast<std::ptrdiff_t>(i), split.begin() + static_cast<std::ptrdiff_t>(j), 0);
+    i = j > i ? j : i + 1;
+  }
   std::vector<double> v(run.size(), 0.0);
-  for (const auto& [first, last] : record::unfilled_segments(filled)) {
+  for (const auto& [first, last] : record::unfilled_segments(split)) {
     const std::span<const double> x(run.displacement.data() + first, last - first);
     const std::vector<double> part = zero_phase_velocity(x, run.sample_rate, cutoff);
     std::copy(part.begin(), part.end(), v.begin() + static_cast<std::ptrdiff_t>(first));
   }
   for (std::size_t i = 0; i < run.size(); ++i) {
-    if (!filled[i]) continue;
+    if (!split[i]) continue;
     std::size_t a = i, b = i;
-    while (a > 0 && filled[a]) --a;
-    while (b + 1 < run.size() && filled[b]) ++b;
+    while (a > 0 && split[a]) --a;
+    while (b + 1 < run.size() && split[b]) ++b;
     v[i] = (run.displacement[b] - run.displacement[a]) / (run.time[b] - run.time[a]);
   }
   return v;
