@@ -13,6 +13,7 @@ std::string_view to_string(CoilSignal s) {
 }
 
 double nominal_sample_rate(const std::vector<double>& time) {
+  // (Gaps: see the header.)
   if (time.size() < 2 || !(time.back() > time.front())) return 0.0;
   std::vector<double> steps(time.size() - 1);
   for (std::size_t i = 1; i < time.size(); ++i) steps[i - 1] = time[i] - time[i - 1];
@@ -21,6 +22,8 @@ double nominal_sample_rate(const std::vector<double>& time) {
   const double median = sorted[sorted.size() / 2];
   // The mean of the steps that are not gaps: exact for a rounded time column, and a lost stretch
   // of samples does not slow the rate of the rest.
+  // Only when such steps are rare: a time column coarser than the period (800 Hz written to
+  // the millisecond) alternates steps of one and two units, and then the span is the rate.
   double span = 0.0;
   std::size_t count = 0;
   for (const double dt : steps) {
@@ -28,8 +31,9 @@ double nominal_sample_rate(const std::vector<double>& time) {
     span += dt;
     ++count;
   }
-  return count > 0 && span > 0.0 ? static_cast<double>(count) / span
-                                 : static_cast<double>(time.size() - 1) / (time.back() - time.front());
+  const bool rare = steps.size() - count <= std::max<std::size_t>(10, steps.size() / 100);
+  return rare && count > 0 && span > 0.0 ? static_cast<double>(count) / span
+                                         : static_cast<double>(time.size() - 1) / (time.back() - time.front());
 }
 
 SamplingSummary summarize_sampling(const std::vector<double>& time) {

@@ -75,7 +75,9 @@ struct SamplingSummary {
 // The nominal rate: the mean of the steps no longer than 1.5 times the median one. The mean, not
 // the median: a time column rounded to 0.1 ms (the Dyke file, 3004.8 Hz) has steps of 0.3 and
 // 0.4 ms but its mean step is exact; without the long steps: a logging gap is missing samples,
-// not a slower logger. 0 for fewer than two samples.
+// not a slower logger. Those steps are left out only while they are rare (1 %, or 10): a time
+// column coarser than the period alternates short and long steps, and then the span gives the
+// rate. 0 for fewer than two samples.
 [[nodiscard]] double nominal_sample_rate(const std::vector<double>& time);
 
 }  // namespace mrd::record

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 
 #include "record/csv.hpp"
 
@@ -16,6 +17,12 @@ struct UsedColumn {
   std::size_t index = 0;
   ColumnUnit unit;
 };
+
+std::string seconds(double t) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.9g s", t);
+  return text;
+}
 
 class RunCsvParser {
  public:
@@ -250,6 +257,12 @@ class RunCsvParser {
         keep_row(pending.values, pending.line);
         break;
       }
+      // A clock that jumped back is no stray row: the file holds two runs.
+      if (++conflicts_in_a_row_ == kMaxConflictsInARow)
+        throw fail(used_[k].label, "time stays behind " + seconds(run_.time.back()) + " for " +
+                                       std::to_string(kMaxConflictsInARow) + " rows from line " +
+                                       std::to_string(conflict_start_) + ": the clock jumped back; split the file there");
+      if (conflicts_in_a_row_ == 1) conflict_start_ = lines_.line_number();
       conflict_ = PendingRow{row_, lines_.line_number()};
       return set_aside("time_conflict", used_[k].label);
     }
@@ -263,6 +276,7 @@ class RunCsvParser {
     if (constant_) run_.coil.push_back(constant_->amps);
     last_line_ = line;
     conflict_.reset();
+    conflicts_in_a_row_ = 0;
   }
 
   // An empty cell, or nan / inf in any spelling: a logger's failed read, not a malformed file.
@@ -326,6 +340,9 @@ class RunCsvParser {
     std::size_t line = 0;
   };
   std::optional<PendingRow> conflict_;
+  static constexpr int kMaxConflictsInARow = 20;
+  int conflicts_in_a_row_ = 0;
+  std::size_t conflict_start_ = 0;
   LineReader lines_;
   const std::string& name_;
   const RunReadOptions& options_;

@@ -4,9 +4,14 @@
 #include <cmath>
 #include <string>
 
+#include "record/csv.hpp"
+
 namespace mrd::record {
 
 namespace {
+
+// More filled samples than this many times the recorded ones: no gap, a timestamp far off.
+constexpr double kMaxFilledShare = 4.0;
 
 // The channels a run may carry beside time, each filled alike; const or not as the run is.
 template <typename Run>
@@ -20,11 +25,27 @@ GapFilledRun fill_gaps(const RecordedRun& run) {
   GapFilledRun out;
   const std::size_t n = run.size();
   const double period = run.sample_rate > 0.0 ? 1.0 / run.sample_rate : 0.0;
-  bool any = false;
-  for (std::size_t i = 1; i < n && period > 0.0; ++i) any = any || run.time[i] - run.time[i - 1] > 1.5 * period;
+  std::size_t long_steps = 0;
+  double missing_total = 0.0;
+  for (std::size_t i = 1; i < n && period > 0.0; ++i) {
+    const double dt = run.time[i] - run.time[i - 1];
+    if (dt <= 1.5 * period) continue;
+    ++long_steps;
+    missing_total += dt / period;
+  }
   out.run = run;
   out.filled.assign(n, 0);
-  if (!any) return out;
+  if (long_steps == 0) return out;
+  // Many long steps are a time column coarser than the period or a jittering logger, not gaps.
+  if (long_steps > std::max<std::size_t>(10, n / 100)) {
+    out.run.notes.push_back(std::to_string(long_steps) +
+                            " time steps longer than 1.5 periods: too many to be logging gaps, left as they are");
+    return out;
+  }
+  if (missing_total > kMaxFilledShare * static_cast<double>(n))
+    throw InputError(run.name + ": the logging gaps would take " + std::to_string(static_cast<long long>(missing_total)) +
+                     " filled samples, more than " + std::to_string(static_cast<int>(kMaxFilledShare)) +
+                     " times the run's " + std::to_string(n) + ": a timestamp far off, or separate runs in one file (split it)");
 
   RecordedRun& f = out.run;
   f.time.clear();
@@ -54,6 +75,13 @@ GapFilledRun fill_gaps(const RecordedRun& run) {
       if (missing > 0) out.gaps.emplace_back(first, f.size() - 1);
     }
     append(i);
+  }
+  // The reader's set-aside rows point at samples of the filled run.
+  for (RecordedRun::SetAsideRow& row : f.set_aside_rows) {
+    std::size_t added = 0;
+    for (const auto& [first, last] : out.gaps)
+      if (first <= row.next_sample + added) added += last - first + 1;
+    row.next_sample += added;
   }
   f.notes.push_back(std::to_string(out.gaps.size()) + " logging gaps filled with " +
                     std::to_string(f.size() - n) + " samples at the nominal period (inputs bridged, not fitted)");

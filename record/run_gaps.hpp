@@ -19,7 +19,10 @@ struct GapFilledRun {
   // Each gap's filled samples [first, last] in `run`, in order.
   std::vector<std::pair<std::size_t, std::size_t>> gaps;
 };
-// The run itself (no sample filled) when it has no gap.
+// The run itself (no sample filled) when it has no gap, or when long steps are too many to be
+// gaps (over 1 % of them, or 10: a time column coarser than the period; a note says so). Throws
+// InputError when the gaps would take over 4 times the run's samples (a timestamp far off, or
+// separate runs in one file). The reader's set-aside rows are moved to the filled run's samples.
 GapFilledRun fill_gaps(const RecordedRun& run);
 
 // Runs of consecutive samples with the same flag 0 in `filled`: the segments a filter may run

@@ -7,6 +7,7 @@
 #include "tests/record/input_error_of.hpp"
 #include "record/run_csv.hpp"
 #include "record/run_csv_writer.hpp"
+#include "record/run_gaps.hpp"
 #include "record/run_reader.hpp"
 #include "runtime/csv_telemetry_writer.hpp"
 #include "runtime/telemetry_record.hpp"
@@ -181,6 +182,36 @@ TEST(RunCsvSetAside, ATimeWrittenFarAheadIsTheRowSetAsideNotTheRest) {
   ASSERT_EQ(run.set_aside_rows.size(), 1u);
   EXPECT_EQ(run.set_aside_rows[0].reason, "time_conflict");
   EXPECT_EQ(run.set_aside_rows[0].line, 4u);
+}
+
+TEST(RunCsvErrors, AClockThatJumpsBackIsAnErrorNotTheRestOfTheFileSetAside) {
+  std::string text = "time_s,displacement_mm,current_A\n";
+  for (int i = 0; i < 40; ++i) text += std::to_string(0.001 * (i < 10 ? i + 100 : i)) + ",1,0\n";
+  EXPECT_EQ(csv_error_of(text),
+            "run.csv:31: column 'time_s': time stays behind 0.109 s for 20 rows from line 12: the clock jumped back; "
+            "split the file there");
+}
+
+// Gaps are filled only where they are gaps: a time column coarser than the period (800 Hz written
+// to the millisecond) is left as it is and keeps its rate, and a timestamp far off is refused
+// rather than filled with millions of samples.
+TEST(RunGaps, OnlyRareLongStepsAreGapsAndAFarTimestampIsRefused) {
+  std::string coarse = "time_s,displacement_mm,current_A\n";
+  for (int i = 0; i < 800; ++i) {
+    char row[64];
+    std::snprintf(row, sizeof row, "%.3f,%d,0\n", i / 800.0, i % 9);
+    coarse += row;
+  }
+  const auto run = parse_run_csv(coarse, "coarse.csv");
+  EXPECT_NEAR(run.sample_rate, 800.0, 1.0);
+  const mrd::record::GapFilledRun same = mrd::record::fill_gaps(run);
+  EXPECT_TRUE(same.gaps.empty());
+  EXPECT_EQ(same.run.size(), run.size());
+
+  std::string far = "time_s,displacement_mm,current_A\n";
+  for (int i = 0; i < 100; ++i) far += std::to_string(i == 99 ? 3600.0 : 0.001 * i) + ",1,0\n";
+  const auto stray = parse_run_csv(far, "far.csv");
+  EXPECT_EQ(mrd::record::testing::input_error_of([&] { (void)mrd::record::fill_gaps(stray); }), "far.csv: the logging gaps would take 3599902 filled samples, more than 4 times the run's 100: a timestamp far off, or separate runs in one file (split it)");
 }
 
 TEST(RunCsvErrors, AFileWithTooFewUsableRowsSaysHowManyWereSetAside) {

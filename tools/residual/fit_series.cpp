@@ -66,7 +66,7 @@ void set_aside_gaps(const record::GapFilledRun& filled, double margin_s, Screeni
 // every split puts two padded ends, each a little off, into the middle of the record.
 std::vector<double> velocity_by_segment(const record::RecordedRun& run, const std::vector<std::uint8_t>& filled,
                                         double cutoff) {
-  const auto short_gap = static_cast<std::size_t>(0.1 * run.sample_rate / cutoff);
+  const auto short_gap = static_cast<std::size_t>(std::min(0.1 * run.sample_rate / cutoff, 1e6));
   std::vector<std::uint8_t> split = filled;
   for (std::size_t i = 0; i < split.size();) {
     std::size_t j = i;
@@ -80,12 +80,16 @@ std::vector<double> velocity_by_segment(const record::RecordedRun& run, const st
     const std::vector<double> part = zero_phase_velocity(x, run.sample_rate, cutoff);
     std::copy(part.begin(), part.end(), v.begin() + static_cast<std::ptrdiff_t>(first));
   }
-  for (std::size_t i = 0; i < run.size(); ++i) {
-    if (!split[i]) continue;
-    std::size_t a = i, b = i;
-    while (a > 0 && split[a]) --a;
+  for (std::size_t i = 0; i < run.size();) {
+    if (!split[i]) {
+      ++i;
+      continue;
+    }
+    std::size_t b = i;
     while (b + 1 < run.size() && split[b]) ++b;
-    v[i] = (run.displacement[b] - run.displacement[a]) / (run.time[b] - run.time[a]);
+    const std::size_t a = i > 0 ? i - 1 : i;
+    const double slope = (run.displacement[b] - run.displacement[a]) / (run.time[b] - run.time[a]);
+    for (; i < b; ++i) v[i] = slope;
   }
   return v;
 }
@@ -151,6 +155,7 @@ FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const Fi
                                  : FitSeries::kExcluded);
     }
     if (options.screen || !gap_filled.gaps.empty()) s.screenings.emplace_back(recorded.name, std::move(screening));
+    s.screened = options.screen;
   }
   return s;
 }

@@ -27,7 +27,9 @@ struct FitSeries {
   // the screening set aside (no fit and no error counts them).
   std::vector<std::uint8_t> validation;
   static constexpr std::uint8_t kFitting = 0, kValidation = 1, kExcluded = 2;
-  // What the screening set aside, per run (in the runs' order; empty without screening).
+  bool screened = false;  // whether the screening ran (gaps are set aside either way)
+  // What the screening set aside, per run (in the runs' order; without screening, only runs
+  // with logging gaps).
   std::vector<std::pair<std::string, Screening>> screenings;
   [[nodiscard]] std::size_t excluded_samples() const {
     std::size_t n = 0;

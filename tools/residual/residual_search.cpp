@@ -740,7 +740,7 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   result.samples = full.size();
   result.notes = full.notes;
   result.screenings = full.screenings;
-  result.screened = !full.screenings.empty();
+  result.screened = full.screened;
   result.fit_samples = s.fit_series.size();
   result.decimation = static_cast<std::size_t>(
       std::lround(static_cast<double>(full.size()) / static_cast<double>(s.fit_series.size())));
