@@ -88,20 +88,4 @@ GapFilledRun fill_gaps(const RecordedRun& run) {
   return out;
 }
 
-std::vector<std::pair<std::size_t, std::size_t>> unfilled_segments(const std::vector<std::uint8_t>& filled) {
-  std::vector<std::pair<std::size_t, std::size_t>> out;
-  std::size_t i = 0;
-  while (i < filled.size()) {
-    if (filled[i]) {
-      ++i;
-      continue;
-    }
-    std::size_t j = i;
-    while (j < filled.size() && !filled[j]) ++j;
-    out.emplace_back(i, j);
-    i = j;
-  }
-  return out;
-}
-
 }  // namespace mrd::record

@@ -25,8 +25,4 @@ struct GapFilledRun {
 // separate runs in one file). The reader's set-aside rows are moved to the filled run's samples.
 GapFilledRun fill_gaps(const RecordedRun& run);
 
-// Runs of consecutive samples with the same flag 0 in `filled`: the segments a filter may run
-// along without crossing a gap, as [first, last) pairs.
-std::vector<std::pair<std::size_t, std::size_t>> unfilled_segments(const std::vector<std::uint8_t>& filled);
-
 }  // namespace mrd::record

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "record/csv.hpp"
+#include "record/run_gaps.hpp"
 #include "tools/replay/zero_phase_velocity.hpp"
 
 namespace mrd::tools {
@@ -84,19 +85,23 @@ ReplayResult replay(const record::RecordedRun& run, const ReplayOptions& options
                   &t.command_current}) {
     v->resize(run.size());
   }
+  // Logging gaps filled at the nominal period, so the loop's steps keep their length and its
+  // state runs through a gap; only the recorded samples are traced and judged.
+  const record::GapFilledRun gap_filled = record::fill_gaps(run);
+  const record::RecordedRun& even = gap_filled.run;
   // The velocity a sensor would give: recorded, offline zero-phase, or none (the filter).
   std::vector<double> offline;
   if (options.zero_phase_cutoff) {
     const double cutoff = *options.zero_phase_cutoff > 0.0 ? *options.zero_phase_cutoff
-                                                           : motion_velocity_cutoff(run.displacement, run.sample_rate);
-    offline = zero_phase_velocity(run.displacement, run.sample_rate, cutoff);
+                                                           : motion_velocity_cutoff(even.displacement, even.sample_rate);
+    offline = zero_phase_velocity_by_stretch(even.displacement, even.time, even.sample_rate, cutoff, gap_filled.filled);
   }
-  const std::vector<double>* sensor = options.use_recorded_velocity ? &run.velocity
+  const std::vector<double>* sensor = options.use_recorded_velocity ? &even.velocity
                                       : options.zero_phase_cutoff   ? &offline
                                                                     : nullptr;
-  for (std::size_t i = 0; i < run.size(); ++i) {
-    const double x = run.displacement[i];
-    const double current = run.coil[i] * gain;
+  for (std::size_t i = 0, k = 0; i < even.size(); ++i) {
+    const double x = even.displacement[i];
+    const double current = even.coil[i] * gain;
     std::optional<double> velocity;
     if (sensor != nullptr) velocity = (*sensor)[i];
     const model::ObserverEstimate estimate =
@@ -104,12 +109,14 @@ ReplayResult replay(const record::RecordedRun& run, const ReplayOptions& options
     const double scheduled =
         law.observe({.displacement = x, .velocity = velocity, .coil_current = flowing}).scheduled_current;
     flowing = law.command().current;
-    t.coil_current[i] = current;
-    t.velocity[i] = estimate.velocity;
-    t.B[i] = estimate.B;
-    t.predicted_force[i] = estimate.force;
-    t.scheduled_current[i] = scheduled;
-    t.command_current[i] = flowing;
+    if (gap_filled.filled[i]) continue;
+    t.coil_current[k] = current;
+    t.velocity[k] = estimate.velocity;
+    t.B[k] = estimate.B;
+    t.predicted_force[k] = estimate.force;
+    t.scheduled_current[k] = scheduled;
+    t.command_current[k] = flowing;
+    ++k;
   }
   if (run.has_force()) result.force = force_error(run.force, t.predicted_force);
   return result;

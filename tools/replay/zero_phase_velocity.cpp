@@ -110,6 +110,42 @@ std::vector<double> zero_phase_velocity(std::span<const double> displacement, do
   return v;
 }
 
+std::vector<double> zero_phase_velocity_by_stretch(std::span<const double> displacement, std::span<const double> time,
+                                                   double sample_rate, double cutoff,
+                                                   const std::vector<std::uint8_t>& filled) {
+  const std::size_t n = displacement.size();
+  // A gap shorter than a tenth of the cutoff's period (a lost row or two) is filtered through on
+  // its bridge: the chord is the motion there to well within the filter's resolution, while every
+  // split puts two padded ends, each a little off, into the middle of the record.
+  const auto short_gap = static_cast<std::size_t>(std::min(0.1 * sample_rate / std::max(cutoff, 1e-9), 1e6));
+  std::vector<std::uint8_t> split = filled;
+  for (std::size_t i = 0; i < n;) {
+    std::size_t j = i;
+    while (j < n && filled[j]) ++j;
+    if (j > i && j - i <= short_gap)
+      std::fill(split.begin() + static_cast<std::ptrdiff_t>(i), split.begin() + static_cast<std::ptrdiff_t>(j), 0);
+    i = j > i ? j : i + 1;
+  }
+  std::vector<double> v(n, 0.0);
+  for (std::size_t i = 0; i < n;) {
+    if (split[i]) {
+      // Across a gap, the bridge's slope.
+      std::size_t b = i;
+      while (b + 1 < n && split[b]) ++b;
+      const std::size_t a = i > 0 ? i - 1 : i;
+      const double slope = (displacement[b] - displacement[a]) / (time[b] - time[a]);
+      for (; i < b; ++i) v[i] = slope;
+      continue;
+    }
+    std::size_t j = i;
+    while (j < n && !split[j]) ++j;
+    const std::vector<double> part = zero_phase_velocity(displacement.subspan(i, j - i), sample_rate, cutoff);
+    std::copy(part.begin(), part.end(), v.begin() + static_cast<std::ptrdiff_t>(i));
+    i = j;
+  }
+  return v;
+}
+
 double motion_velocity_cutoff(const std::vector<double>& displacement, double sample_rate) {
   const double f99 = frequency_below(displacement, 0, displacement.size(), 1.0 / sample_rate, 0.99);
   return std::clamp(5.0 * f99, 2.0, 0.2 * sample_rate);

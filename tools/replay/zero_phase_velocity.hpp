@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -12,6 +13,13 @@ namespace mrd::tools {
 // padding). Non-causal: for tools that see the whole run, never for the control loop.
 [[nodiscard]] std::vector<double> zero_phase_velocity(std::span<const double> displacement,
                                                       double sample_rate, double cutoff);
+
+// The same on each stretch between logging gaps (record::fill_gaps's `filled`, one flag per
+// sample): no filter runs across a gap, each stretch's ends padded like a record's; across a gap,
+// the slope of its bridge. Gaps under a tenth of the cutoff's period are filtered through.
+[[nodiscard]] std::vector<double> zero_phase_velocity_by_stretch(std::span<const double> displacement,
+                                                                 std::span<const double> time, double sample_rate,
+                                                                 double cutoff, const std::vector<std::uint8_t>& filled);
 
 // A cutoff [Hz] for zero_phase_velocity from the motion itself: five times the frequency below
 // which 99 % of the displacement's power lies (its |H|^2 is 0.9984 there), within

@@ -59,41 +59,6 @@ void set_aside_gaps(const record::GapFilledRun& filled, double margin_s, Screeni
   screening.excluded_samples = static_cast<std::size_t>(std::ranges::count(screening.excluded, std::uint8_t{1}));
 }
 
-// The zero-phase velocity of each stretch between gaps on its own (no filter runs across a gap,
-// and each stretch's ends are padded like the record's); across a filled gap, the bridge's slope.
-// A gap shorter than a tenth of the cutoff's period (a lost row or two) is filtered through on its
-// bridge instead: the chord is the motion there to well within the filter's resolution, while
-// every split puts two padded ends, each a little off, into the middle of the record.
-std::vector<double> velocity_by_segment(const record::RecordedRun& run, const std::vector<std::uint8_t>& filled,
-                                        double cutoff) {
-  const auto short_gap = static_cast<std::size_t>(std::min(0.1 * run.sample_rate / cutoff, 1e6));
-  std::vector<std::uint8_t> split = filled;
-  for (std::size_t i = 0; i < split.size();) {
-    std::size_t j = i;
-    while (j < split.size() && filled[j]) ++j;
-    if (j > i && j - i <= short_gap) std::fill(split.begin() + static_cast<std::ptrdiff_t>(i), split.begin() + static_cast<std::ptrdiff_t>(j), 0);
-    i = j > i ? j : i + 1;
-  }
-  std::vector<double> v(run.size(), 0.0);
-  for (const auto& [first, last] : record::unfilled_segments(split)) {
-    const std::span<const double> x(run.displacement.data() + first, last - first);
-    const std::vector<double> part = zero_phase_velocity(x, run.sample_rate, cutoff);
-    std::copy(part.begin(), part.end(), v.begin() + static_cast<std::ptrdiff_t>(first));
-  }
-  for (std::size_t i = 0; i < run.size();) {
-    if (!split[i]) {
-      ++i;
-      continue;
-    }
-    std::size_t b = i;
-    while (b + 1 < run.size() && split[b]) ++b;
-    const std::size_t a = i > 0 ? i - 1 : i;
-    const double slope = (run.displacement[b] - run.displacement[a]) / (run.time[b] - run.time[a]);
-    for (; i < b; ++i) v[i] = slope;
-  }
-  return v;
-}
-
 }  // namespace
 
 FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const FitSeriesOptions& options) {
@@ -128,7 +93,7 @@ FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const Fi
     if (!run.has_velocity()) {
       double cutoff = options.velocity_cutoff;
       if (cutoff <= 0.0) cutoff = motion_velocity_cutoff(run.displacement, rate);
-      velocity = velocity_by_segment(run, gap_filled.filled, cutoff);
+      velocity = zero_phase_velocity_by_stretch(run.displacement, run.time, run.sample_rate, cutoff, gap_filled.filled);
       s.notes.push_back(run.name + ": velocity from the displacement, zero-phase low-pass at " +
                         std::to_string(cutoff) + " Hz" +
                         (gap_filled.gaps.empty() ? "" : ", on each stretch between the logging gaps"));
