@@ -488,8 +488,8 @@ void revise_set(Search& s, AcceptedSet& set, ResidualResult& result) {
   }
 }
 
-double viscous_coefficient(const model::DamperModel& m) {
-  return model::BinghamDamper(m.geometry, m.fluid.viscosity).viscous_coefficient();
+model::BinghamDamper fluid_of(const model::DamperModel& m) {
+  return model::BinghamDamper(m.geometry, m.fluid.viscosity, m.fluid.flow_index);
 }
 
 // The model with the damper terms the residual regression accepts on it (step 7's regression on
@@ -503,7 +503,7 @@ WithTerms with_damper_terms(const Search& s, const model::DamperModel& m, double
   std::vector<double> force, induction;
   predict_force_and_induction(m, s.fit_series, force, induction);
   WithTerms out;
-  out.discovery = discover_terms(s.fit_series, force, induction, viscous_coefficient(m), s.options.minimum_reduction);
+  out.discovery = discover_terms(s.fit_series, force, induction, fluid_of(m), s.options.minimum_reduction);
   std::erase_if(out.discovery.terms, [](const DiscoveredTerm& t) { return t.interference; });
   out.validation = validation;
   if (!out.discovery.has_terms()) return out;
@@ -697,7 +697,7 @@ void discover(Search& s, model::DamperModel& model, ResidualResult& result) {
   result.discovery = s.options.discover;
   if (!s.options.discover) return;
   const TermDiscovery discovery = discover_terms(s.full, result.predicted_after, induction,
-                                                 viscous_coefficient(model), s.options.minimum_reduction);
+                                                 fluid_of(model), s.options.minimum_reduction);
   result.discovered = discovery.terms;
   for (const auto& group : discovery.ambiguous) {
     result.ambiguous.push_back(group);

@@ -66,7 +66,7 @@ struct Library {
 };
 
 // Columns 0 and 1 are the model's own linear terms, in every fit (the force scale on the predicted
-// force, an extra viscous v): a term that joins can take back what the base fit had absorbed of
+// force, an extra viscous coefficient along the fluid's shape u(v): v for Bingham): a term that joins can take back what the base fit had absorbed of
 // it (a field-dependent viscosity partly hides in c0), instead of fitting only what is left.
 constexpr int kBaseColumns = 2;
 
@@ -87,9 +87,12 @@ Library make_library(double sample_rate) {
 
 // Each column's value at sample i.
 void fill_row(const Library& lib, const FitSeries& s, const std::vector<double>& predicted, const std::vector<double>& B,
-              const std::vector<double>& a, double time, std::size_t i, Eigen::VectorXd& row) {
+              const std::vector<double>& a, const model::BinghamDamper& fluid, double time, std::size_t i,
+              Eigen::VectorXd& row) {
   row[0] = predicted[i];
-  row[1] = s.velocity[i];
+  // u(v), the viscous force per unit c0: what apply_linear_terms' extra coefficient multiplies.
+  const double c0 = fluid.viscous_coefficient();
+  row[1] = c0 > 0.0 ? fluid.viscous_force(s.velocity[i]) / c0 : s.velocity[i];
   const model::ForceState state{.displacement = s.displacement[i],
                                 .velocity = s.velocity[i],
                                 .acceleration = a[i],
@@ -188,7 +191,8 @@ void TermDiscovery::add_to(model::DamperModel& model) const {
 }
 
 TermDiscovery discover_terms(const FitSeries& s, const std::vector<double>& predicted, const std::vector<double>& B,
-                             double viscous_coefficient, double threshold, std::size_t max_terms) {
+                             const model::BinghamDamper& fluid, double threshold, std::size_t max_terms) {
+  const double viscous_coefficient = fluid.viscous_coefficient();
   TermDiscovery out;
   out.interference.assign(s.size(), 0.0);
   if (s.size() < 16 || s.run_periods.empty()) return out;
@@ -204,7 +208,7 @@ TermDiscovery discover_terms(const FitSeries& s, const std::vector<double>& pred
   for (std::size_t i = 0; i < s.size(); ++i) {
     const double t = time_of(s, i, run);
     if (s.validation[i] > 1) continue;  // excluded by the screening
-    fill_row(lib, s, predicted, B, a, t, i, row);
+    fill_row(lib, s, predicted, B, a, fluid, t, i, row);
     const double r = s.force[i];
     Moments& m = moments[s.validation[i]];
     m.gram.selfadjointView<Eigen::Lower>().rankUpdate(row);

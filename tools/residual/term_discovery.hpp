@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "model/bingham_damper.hpp"
 #include "model/damper_model.hpp"
 #include "tools/residual/fit_series.hpp"
 
@@ -39,10 +40,11 @@ struct TermDiscovery {
 // the term that lowers the validation RMS most joins while it lowers it by at least
 // `threshold` and every coefficient keeps its physical sign; at most `max_terms`. `B` is the
 // model's induction per sample [T].
-// `viscous_coefficient` is the model's c0 [N s/m]: the refitted a c0 + b must stay >= 0, since the
+// `fluid` is the model's viscous law: the extra viscous column is its shape u(v) (v for Bingham,
+// the Herschel-Bulkley shape otherwise), and the refitted a c0 + b must stay >= 0, since the
 // model cannot carry a negative viscosity (a term that needs one is not physical).
 TermDiscovery discover_terms(const FitSeries& series, const std::vector<double>& predicted,
-                             const std::vector<double>& B, double viscous_coefficient, double threshold,
+                             const std::vector<double>& B, const model::BinghamDamper& fluid, double threshold,
                              std::size_t max_terms = 4);
 
 // The library's term names, damper terms first, then the mains lines the series' rate resolves.
