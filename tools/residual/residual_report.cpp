@@ -23,7 +23,12 @@ namespace {
 
 // The screening's spans, at most 12 lines.
 std::string screening_summary(const ResidualResult& r) {
-  if (!r.screened) return "screening: off (--no-screening)\n";
+  if (!r.screened) {
+    std::size_t gaps = 0;
+    for (const auto& [run, s] : r.screenings) gaps += s.excluded_samples;
+    return gaps == 0 ? std::string("screening: off (--no-screening)\n")
+                     : format("screening: off (--no-screening); %zu samples of logging gaps set aside\n", gaps);
+  }
   std::string out;
   std::size_t excluded = 0, lines = 0, total = 0;
   for (const auto& [run, s] : r.screenings) {

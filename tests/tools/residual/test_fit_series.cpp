@@ -137,6 +137,14 @@ TEST(FitSeries, ALoggingGapCostsOnlyTheGap) {
     worst = std::max(worst, std::fabs(s.velocity[i] - amplitude * std::cos(2.0 * std::numbers::pi * t)));
   }
   EXPECT_LT(worst, 0.015 * amplitude);
+  // Without screening the gap is set aside all the same, and the series says it was not screened.
+  FitSeriesOptions unscreened;
+  unscreened.screen = false;
+  const FitSeries u = make_fit_series({run}, unscreened);
+  EXPECT_FALSE(u.screened);
+  ASSERT_EQ(u.screenings.size(), 1u);
+  EXPECT_EQ(u.screenings[0].second.excluded_samples, screening.excluded_samples);
+  EXPECT_TRUE(s.screened);
 }
 
 TEST(ZeroPhaseVelocity, CutoffFollowsTheMotion) {
