@@ -98,20 +98,16 @@ void JilesAtherton::integrate(double H_target, Langevin& langevin) {
     return;
   }
   // Steps of max(grid, g |He|): the grid where |He| is small (the knee, where M_irr relaxes
-  // over k), longer where the curve is saturated. When the sub-steps left would not reach the
-  // target, the rest is spread evenly over them, as the grid spreads a capped jump.
+  // over k), longer where the curve is saturated. At max_substeps the rest is one step, as a
+  // real-time bound (the searches' exploring cap of 64 relies on the guards there).
   const double direction = H_target > state_.H ? 1.0 : -1.0;
-  for (int taken = 0; state_.H != H_target;) {
+  for (int taken = 1; state_.H != H_target; ++taken) {
     const double He = state_.H + p_.alpha * state_.M;
     const double step = std::max(max_field_step_, growth * std::fabs(He));
     const double remaining = std::fabs(H_target - state_.H);
-    const int left = std::max(settings_.max_substeps - taken, 1);
-    if (remaining <= step || remaining >= step * left) {
-      integrate_on_grid<kMethod>(H_target, std::max(step, remaining / left), langevin);
-      return;
-    }
-    integrate_on_grid<kMethod>(state_.H + direction * step, step, langevin);
-    ++taken;
+    const bool last = remaining <= step || taken >= settings_.max_substeps;
+    const double next = last ? H_target : state_.H + direction * step;
+    integrate_on_grid<kMethod>(next, last ? remaining : step, langevin);
   }
 }
 
