@@ -84,3 +84,36 @@ TEST(TermDiscovery, TheLibraryNamesEveryDocumentedTerm) {
 }
 
 }  // namespace
+
+namespace {
+
+// The regression's extra viscous column is the fluid's own shape u(v), the one apply_linear_terms
+// scales: on a shear-thickening fluid (n = 1.4) a residual of 0.3 c0 u(v) is the model's own
+// term, and no library term joins (along plain v, what is left took v |v|).
+TEST(TermDiscovery, TheExtraViscousColumnFollowsTheFluidsShape) {
+  mrd::tools::FitSeries s;
+  const std::size_t n = 4000;
+  s.sample_period = 1e-3;
+  s.run_periods = {1e-3};
+  s.run_starts = {0};
+  const mrd::model::BinghamDamper fluid(mrd::model::DamperGeometry{}, 1.2, 1.4);
+  std::vector<double> predicted(n), B(n, 0.3);
+  std::uint64_t noise = 12345;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = static_cast<double>(i) * 1e-3;
+    const double v = 0.1 * std::cos(2.0 * std::numbers::pi * t);
+    s.displacement.push_back(0.1 / (2.0 * std::numbers::pi) * std::sin(2.0 * std::numbers::pi * t));
+    s.velocity.push_back(v);
+    s.current.push_back(0.5);
+    predicted[i] = 500.0 * std::tanh(v / 0.002);
+    // A load cell's noise (uniform, 2 N RMS, from a fixed LCG).
+    noise = noise * 6364136223846793005ULL + 1442695040888963407ULL;
+    const double uniform = static_cast<double>(noise >> 11) * 0x1.0p-53 - 0.5;
+    s.force.push_back(predicted[i] + 0.3 * fluid.viscous_force(v) + 2.0 * std::sqrt(12.0) * uniform);
+    s.validation.push_back(static_cast<std::uint8_t>((i / 167) % 2));
+  }
+  const mrd::tools::TermDiscovery d = mrd::tools::discover_terms(s, predicted, B, fluid, 0.1);
+  EXPECT_TRUE(d.terms.empty()) << d.terms.size() << " terms, the first " << d.terms.front().term;
+}
+
+}  // namespace
