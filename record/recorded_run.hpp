@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -52,6 +53,15 @@ struct RecordedRun {
   // What the reader did that the user must know (ignored columns, dropped CAN frames), one
   // line each; reports print them.
   std::vector<std::string> notes;
+
+  // Every per-sample channel beside time (empty where not recorded), for code that treats them
+  // alike: filling a gap, dropping a row.
+  [[nodiscard]] std::array<std::vector<double>*, 6> channels() {
+    return {&displacement, &coil, &force, &velocity, &B, &temperature};
+  }
+  [[nodiscard]] std::array<const std::vector<double>*, 6> channels() const {
+    return {&displacement, &coil, &force, &velocity, &B, &temperature};
+  }
 
   [[nodiscard]] std::size_t size() const { return time.size(); }
   [[nodiscard]] double duration() const {

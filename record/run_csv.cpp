@@ -298,9 +298,9 @@ class RunCsvParser {
   // The last row kept, set aside after all as a time_conflict.
   void drop_last_row(const std::string& column) {
     const std::size_t n = run_.size();
-    for (std::vector<double>* c : {&run_.time, &run_.displacement, &run_.coil, &run_.force, &run_.velocity, &run_.B,
-                                   &run_.temperature})
+    for (std::vector<double>* c : run_.channels())
       if (c->size() == n && n > 0) c->pop_back();
+    if (n > 0) run_.time.pop_back();
     conflict_.reset();
     run_.set_aside_rows.push_back({"time_conflict", last_line_, run_.size(), column});
     std::ranges::sort(run_.set_aside_rows, {}, &RecordedRun::SetAsideRow::line);

@@ -1,6 +1,5 @@
 #include "record/run_gaps.hpp"
 
-#include <array>
 #include <cmath>
 #include <string>
 
@@ -12,12 +11,6 @@ namespace {
 
 // More filled samples than this many times the recorded ones: no gap, a timestamp far off.
 constexpr double kMaxFilledShare = 4.0;
-
-// The channels a run may carry beside time, each filled alike; const or not as the run is.
-template <typename Run>
-auto channels_of(Run& run) {
-  return std::array{&run.displacement, &run.coil, &run.force, &run.velocity, &run.B, &run.temperature};
-}
 
 }  // namespace
 
@@ -49,10 +42,10 @@ GapFilledRun fill_gaps(const RecordedRun& run) {
 
   RecordedRun& f = out.run;
   f.time.clear();
-  for (std::vector<double>* c : channels_of(f)) c->clear();
+  for (std::vector<double>* c : f.channels()) c->clear();
   out.filled.clear();
-  const auto from = channels_of(run);
-  const auto to = channels_of(f);
+  const auto from = run.channels();
+  const auto to = f.channels();
   const auto append = [&](std::size_t i) {
     f.time.push_back(run.time[i]);
     for (std::size_t c = 0; c < from.size(); ++c)

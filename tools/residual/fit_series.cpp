@@ -39,24 +39,9 @@ void append_sample(FitSeries& to, const FitSeries& from, std::size_t i) {
 // (whether or not the rest was screened).
 void set_aside_gaps(const record::GapFilledRun& filled, double margin_s, Screening& screening) {
   if (filled.gaps.empty()) return;
-  const record::RecordedRun& run = filled.run;
-  const std::size_t n = run.size();
-  screening.excluded.resize(n, 0);
-  const auto margin = static_cast<std::size_t>(std::ceil(margin_s * std::max(run.sample_rate, 1.0)));
-  for (const auto& [first, last] : filled.gaps) {
-    ScreenedSpan span;
-    span.first = first - std::min(first, margin);
-    span.last = std::min(last + margin, n - 1);
-    span.start_s = run.time[span.first];
-    span.end_s = run.time[span.last];
-    span.channel = "time";
-    span.reason = ScreenReason::kGap;
-    std::fill(screening.excluded.begin() + static_cast<std::ptrdiff_t>(span.first),
-              screening.excluded.begin() + static_cast<std::ptrdiff_t>(span.last) + 1, std::uint8_t{1});
-    screening.spans.push_back(std::move(span));
-  }
-  std::ranges::stable_sort(screening.spans, {}, &ScreenedSpan::first);
-  screening.excluded_samples = static_cast<std::size_t>(std::ranges::count(screening.excluded, std::uint8_t{1}));
+  std::vector<ScreenedSpan> gaps;
+  for (const auto& [first, last] : filled.gaps) gaps.push_back({first, last, 0.0, 0.0, "time", ScreenReason::kGap});
+  set_aside(screening, filled.run, std::move(gaps), margin_s);
 }
 
 }  // namespace

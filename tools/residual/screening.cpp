@@ -179,15 +179,8 @@ Screening screen_run(const record::RecordedRun& run, const ScreeningOptions& o) 
     if (std::string_view(ch.name) != "velocity") find_spikes(run, ch, o, s.spans);
   }
   find_gaps(run, s.spans);
-  const auto margin = static_cast<std::size_t>(std::ceil(o.margin_s * std::max(run.sample_rate, 1.0)));
-  for (ScreenedSpan& span : s.spans) {
-    span.first -= std::min(span.first, margin);
-    span.last = std::min(span.last + margin, n - 1);
-    span.start_s = run.time[span.first];
-    span.end_s = run.time[span.last];
-    std::fill(s.excluded.begin() + static_cast<std::ptrdiff_t>(span.first),
-              s.excluded.begin() + static_cast<std::ptrdiff_t>(span.last) + 1, std::uint8_t{1});
-  }
+  std::vector<ScreenedSpan> found = std::move(s.spans);
+  s.spans.clear();
   // The reader's rows: reported where they were, nothing more set aside for them.
   for (const record::RecordedRun::SetAsideRow& row : run.set_aside_rows) {
     const std::size_t at = std::min(row.next_sample, n - 1);
@@ -196,9 +189,25 @@ Screening screen_run(const record::RecordedRun& run, const ScreeningOptions& o) 
                                                                 : ScreenReason::kNonFinite;
     s.spans.push_back({at, at, run.time[at], run.time[at], row.column.empty() ? "row" : row.column, reason, row.line});
   }
-  std::ranges::stable_sort(s.spans, {}, &ScreenedSpan::first);
-  s.excluded_samples = static_cast<std::size_t>(std::ranges::count(s.excluded, std::uint8_t{1}));
+  set_aside(s, run, std::move(found), o.margin_s);
   return s;
+}
+
+void set_aside(Screening& screening, const record::RecordedRun& run, std::vector<ScreenedSpan> found, double margin_s) {
+  const std::size_t n = run.size();
+  screening.excluded.resize(n, 0);
+  const auto margin = static_cast<std::size_t>(std::ceil(margin_s * std::max(run.sample_rate, 1.0)));
+  for (ScreenedSpan& span : found) {
+    span.first -= std::min(span.first, margin);
+    span.last = std::min(span.last + margin, n - 1);
+    span.start_s = run.time[span.first];
+    span.end_s = run.time[span.last];
+    std::fill(screening.excluded.begin() + static_cast<std::ptrdiff_t>(span.first),
+              screening.excluded.begin() + static_cast<std::ptrdiff_t>(span.last) + 1, std::uint8_t{1});
+    screening.spans.push_back(std::move(span));
+  }
+  std::ranges::stable_sort(screening.spans, {}, &ScreenedSpan::first);
+  screening.excluded_samples = static_cast<std::size_t>(std::ranges::count(screening.excluded, std::uint8_t{1}));
 }
 
 void bridge_excluded_inputs(record::RecordedRun& run, const Screening& screening) {

@@ -50,6 +50,11 @@ struct ScreeningOptions {
 // linear in the run's length.
 Screening screen_run(const record::RecordedRun& run, const ScreeningOptions& options = {});
 
+// `found` (sample spans of `run`) widened by `margin_s` on either side (the zero-phase velocity
+// spreads a fault), timed on the run, their samples excluded, and merged into `screening` in
+// sample order: how screen_run sets its faults aside, and how a caller adds spans of its own.
+void set_aside(Screening& screening, const record::RecordedRun& run, std::vector<ScreenedSpan> found, double margin_s);
+
 // The model's inputs (displacement, velocity, coil) interpolated linearly across the excluded
 // samples, so that the model's state runs through a fault sanely; the force is left as it is
 // (excluded samples are not fitted).

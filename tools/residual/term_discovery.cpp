@@ -190,15 +190,13 @@ void TermDiscovery::add_to(model::DamperModel& model) const {
   }
 }
 
-TermDiscovery discover_terms(const FitSeries& s, const std::vector<double>& predicted, const std::vector<double>& B,
-                             const model::BinghamDamper& fluid, double threshold, std::size_t max_terms) {
-  const double viscous_coefficient = fluid.viscous_coefficient();
-  TermDiscovery out;
-  out.interference.assign(s.size(), 0.0);
-  if (s.size() < 16 || s.run_periods.empty()) return out;
-  const Library lib = make_library(1.0 / s.sample_period);
+namespace {
+
+// The library's moments over the fitting samples (moments[0]) and the validation samples
+// (moments[1]); the screening's excluded samples count in neither.
+void accumulate_moments(const Library& lib, const FitSeries& s, const std::vector<double>& predicted,
+                        const std::vector<double>& B, const model::BinghamDamper& fluid, Moments (&moments)[2]) {
   const std::vector<double> a = zero_phase_acceleration(s);
-  Moments moments[2];
   for (Moments& m : moments) {
     m.gram = Eigen::MatrixXd::Zero(lib.columns, lib.columns);
     m.cross = Eigen::VectorXd::Zero(lib.columns);
@@ -207,7 +205,7 @@ TermDiscovery discover_terms(const FitSeries& s, const std::vector<double>& pred
   std::size_t run = 0;
   for (std::size_t i = 0; i < s.size(); ++i) {
     const double t = time_of(s, i, run);
-    if (s.validation[i] > 1) continue;  // excluded by the screening
+    if (s.validation[i] > 1) continue;
     fill_row(lib, s, predicted, B, a, fluid, t, i, row);
     const double r = s.force[i];
     Moments& m = moments[s.validation[i]];
@@ -217,6 +215,19 @@ TermDiscovery discover_terms(const FitSeries& s, const std::vector<double>& pred
     ++m.count;
   }
   for (Moments& m : moments) m.gram = m.gram.selfadjointView<Eigen::Lower>();
+}
+
+}  // namespace
+
+TermDiscovery discover_terms(const FitSeries& s, const std::vector<double>& predicted, const std::vector<double>& B,
+                             const model::BinghamDamper& fluid, double threshold, std::size_t max_terms) {
+  const double viscous_coefficient = fluid.viscous_coefficient();
+  TermDiscovery out;
+  out.interference.assign(s.size(), 0.0);
+  if (s.size() < 16 || s.run_periods.empty()) return out;
+  const Library lib = make_library(1.0 / s.sample_period);
+  Moments moments[2];
+  accumulate_moments(lib, s, predicted, B, fluid, moments);
   if (moments[0].count < 8 || moments[1].count < 8) return out;
   // Columns scaled to unit RMS on the fitting samples, for the conditioning of the solve.
   Eigen::VectorXd scale(lib.columns);
