@@ -1,6 +1,9 @@
 #include "record/recorded_run.hpp"
 
 #include <algorithm>
+#include <cstdio>
+
+#include "record/csv.hpp"
 
 namespace mrd::record {
 
@@ -34,6 +37,16 @@ double nominal_sample_rate(const std::vector<double>& time) {
   const bool rare = steps.size() - count <= std::max<std::size_t>(10, steps.size() / 100);
   return rare && count > 0 && span > 0.0 ? static_cast<double>(count) / span
                                          : static_cast<double>(time.size() - 1) / (time.back() - time.front());
+}
+
+void check_sample_rate(const RecordedRun& run) {
+  if (run.sample_rate >= kMinSampleRate && run.sample_rate <= kMaxSampleRate) return;
+  char text[200];
+  std::snprintf(text, sizeof text,
+                ": sample rate %g Hz is outside %g Hz to %g Hz: is the time column in seconds "
+                "(--columns names its unit, e.g. t=time_ms), or the rate (--sample-rate) right?",
+                run.sample_rate, kMinSampleRate, kMaxSampleRate);
+  throw InputError(run.name + text);
 }
 
 SamplingSummary summarize_sampling(const std::vector<double>& time) {

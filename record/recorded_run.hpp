@@ -90,4 +90,12 @@ struct SamplingSummary {
 // rate. 0 for fewer than two samples.
 [[nodiscard]] double nominal_sample_rate(const std::vector<double>& time);
 
+// Damper rigs log between a few Hz and some tens of kHz; a rate outside [1 Hz, 1 MHz] is a
+// time column in other units or a broken clock, and every time constant fitted on it would be
+// nonsense.
+inline constexpr double kMinSampleRate = 1.0;  // [Hz]
+inline constexpr double kMaxSampleRate = 1e6;  // [Hz]
+// Throws InputError naming the run when its nominal rate lies outside those bounds.
+void check_sample_rate(const RecordedRun& run);
+
 }  // namespace mrd::record

@@ -42,6 +42,7 @@ control::ControlLawConfig law_for(const record::RecordedRun& run, const ReplayOp
     throw record::InputError(run.name +
                      ": cannot replay: the run needs at least 2 samples at a known rate");
   }
+  record::check_sample_rate(run);
   if (run.coil_signal == record::CoilSignal::kCommandVoltage && !options.amps_per_volt) {
     throw record::InputError(run.name +
                      ": the run logged the driver's command voltage, not the coil current: "

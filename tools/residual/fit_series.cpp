@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
 #include <numeric>
 #include <random>
 #include <span>
@@ -19,6 +22,7 @@ void check_run(const record::RecordedRun& run, const FitSeriesOptions& options) 
     throw record::InputError(run.name + ": the run has no force column; a residual needs the measured force");
   if (run.size() < 16 || !(run.sample_rate > 0.0))
     throw record::InputError(run.name + ": too short for a residual analysis (at least 16 samples)");
+  record::check_sample_rate(run);
   if (run.coil_signal == record::CoilSignal::kCommandVoltage && !options.amps_per_volt)
     throw record::InputError(run.name +
                      ": the run logged the driver's command voltage, not the coil current: "
@@ -42,6 +46,71 @@ void set_aside_gaps(const record::GapFilledRun& filled, double margin_s, Screeni
   std::vector<ScreenedSpan> gaps;
   for (const auto& [first, last] : filled.gaps) gaps.push_back({first, last, 0.0, 0.0, "time", ScreenReason::kGap});
   set_aside(screening, filled.run, std::move(gaps), margin_s);
+}
+
+// A robust spread of the displacement's sample-to-sample noise: white noise of sigma gives
+// second differences of sigma * sqrt(6), while a motion sampled well above its frequency leaves
+// them near zero. The smallest step stands in for a quantised sensor's noise.
+double displacement_noise(const std::vector<double>& x, const std::vector<std::uint8_t>& excluded) {
+  std::vector<double> d2;
+  double smallest_step = std::numeric_limits<double>::infinity();
+  const auto kept = [&](std::size_t i) { return excluded.empty() || !excluded[i]; };
+  for (std::size_t i = 1; i < x.size(); ++i) {
+    if (!kept(i - 1) || !kept(i)) continue;
+    if (const double step = std::fabs(x[i] - x[i - 1]); step > 0.0) smallest_step = std::min(smallest_step, step);
+    if (i + 1 < x.size() && kept(i + 1)) d2.push_back(std::fabs(x[i + 1] - 2.0 * x[i] + x[i - 1]));
+  }
+  if (d2.empty()) return 0.0;
+  const auto mid = d2.begin() + static_cast<std::ptrdiff_t>(d2.size() / 2);
+  std::nth_element(d2.begin(), mid, d2.end());
+  const double sigma = 1.4826 * *mid / std::sqrt(6.0);
+  return std::isfinite(smallest_step) ? std::max(sigma, smallest_step) : sigma;
+}
+
+// A run whose kept displacement spans less than this many times its noise has no motion to
+// explain: every effect would fit the load cell's noise.
+constexpr double kMotionOverNoise = 20.0;
+
+void check_motion(const record::RecordedRun& run, const Screening& screening) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (std::size_t i = 0; i < run.size(); ++i) {
+    if (!screening.excluded.empty() && screening.excluded[i]) continue;
+    lo = std::min(lo, run.displacement[i]);
+    hi = std::max(hi, run.displacement[i]);
+  }
+  if (!(hi > lo)) {
+    if (!(hi >= lo)) return;  // nothing kept: the count of kept samples says so
+    throw record::InputError(run.name + ": the displacement never moves on the kept samples: no damper "
+                                         "motion to analyse (leave the run out)");
+  }
+  const double noise = displacement_noise(run.displacement, screening.excluded);
+  if (hi - lo >= kMotionOverNoise * noise) return;
+  char text[200];
+  std::snprintf(text, sizeof text,
+                ": the displacement spans %.3g mm, within %g times its noise (%.3g mm): no damper motion "
+                "to analyse (leave the run out)",
+                (hi - lo) * 1e3, kMotionOverNoise, noise * 1e3);
+  throw record::InputError(run.name + text);
+}
+
+// The fewest kept samples a fit takes: half of them validate, and the base fit alone moves
+// about twenty coordinates.
+constexpr std::size_t kMinFitSamples = 200;
+
+void check_enough_kept(const FitSeries& s, const std::vector<record::RecordedRun>& runs) {
+  const std::size_t kept = s.size() - s.excluded_samples();
+  if (kept >= kMinFitSamples) return;
+  std::string names;
+  for (const auto& r : runs) names += (names.empty() ? "" : ", ") + r.name;
+  std::map<std::string_view, std::size_t> by_reason;
+  for (const auto& [run, screening] : s.screenings)
+    for (const ScreenedSpan& span : screening.spans) by_reason[to_string(span.reason)] += span.last - span.first + 1;
+  std::string why;
+  for (const auto& [reason, count] : by_reason)
+    why += (why.empty() ? "" : ", ") + std::string(reason) + " " + std::to_string(count);
+  throw record::InputError(names + ": the screening left " + std::to_string(kept) + " of " +
+                           std::to_string(s.size()) + " samples to fit; a fit needs at least " +
+                           std::to_string(kMinFitSamples) + (why.empty() ? "" : " (set aside: " + why + ")"));
 }
 
 }  // namespace
@@ -85,6 +154,7 @@ FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const Fi
     }
     // After the velocity: the samples beside a gap are measurements, set aside but not bridged.
     set_aside_gaps(gap_filled, options.screening.margin_s, screening);
+    check_motion(even, screening);
     s.run_starts.push_back(s.size());
     const std::size_t n = run.size();
     // Half the blocks validate: a fixed shuffle, the same for every run and every call.
@@ -107,6 +177,7 @@ FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const Fi
     if (options.screen || !gap_filled.gaps.empty()) s.screenings.emplace_back(recorded.name, std::move(screening));
     s.screened = options.screen;
   }
+  check_enough_kept(s, runs);
   return s;
 }
 

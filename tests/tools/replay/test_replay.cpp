@@ -173,6 +173,11 @@ TEST(Replay, RunsItCannotReplay) {
   run.force.clear();
   options.use_recorded_velocity = false;
   EXPECT_FALSE(replay(run, options).force);  // a candump run: prediction and command only
+  RecordedRun in_ms = run;
+  in_ms.sample_rate = 0.5;  // a 500 Hz run whose time column was read as seconds though in ms
+  EXPECT_EQ(error_of(in_ms, options),
+            "simulated: sample rate 0.5 Hz is outside 1 Hz to 1e+06 Hz: is the time column in seconds "
+            "(--columns names its unit, e.g. t=time_ms), or the rate (--sample-rate) right?");
   run.time.resize(1);
   EXPECT_EQ(error_of(run, options),
             "simulated: cannot replay: the run needs at least 2 samples at a known rate");

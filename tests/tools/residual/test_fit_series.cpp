@@ -179,4 +179,64 @@ TEST(FitSeries, RunsItCannotUseAreNamedWithTheReason) {
   EXPECT_THROW((void)make_fit_series({}, {}), mrd::record::InputError);
 }
 
+// The InputError's text when make_fit_series refuses `runs`, or "" when it takes them.
+std::string refusal(const std::vector<mrd::record::RecordedRun>& runs) {
+  try {
+    (void)make_fit_series(runs, {});
+    return "";
+  } catch (const mrd::record::InputError& e) {
+    return e.what();
+  }
+}
+
+TEST(FitSeries, ARateNoRigLogsAtIsTheTimeColumnsUnitNotARun) {
+  mrd::record::RecordedRun seconds_as_ms = sine_run(1000, 1, true);
+  for (double& t : seconds_as_ms.time) t *= 1e3;
+  seconds_as_ms.sample_rate = 1.0;  // at the bound: taken
+  EXPECT_EQ(refusal({seconds_as_ms}), "");
+  seconds_as_ms.sample_rate = 0.999;
+  EXPECT_NE(refusal({seconds_as_ms}).find("sample rate 0.999 Hz is outside 1 Hz to 1e+06 Hz"), std::string::npos);
+  mrd::record::RecordedRun fast = sine_run(1000, 1, true);
+  fast.sample_rate = 1.001e6;
+  EXPECT_NE(refusal({fast}).find("sample rate 1.001e+06 Hz"), std::string::npos);
+}
+
+// A load cell's noise on a still rod would be "explained" by any effect: no claim can come of it.
+TEST(FitSeries, ARunWithoutMotionIsRefusedAndOneThatMovesIsTaken) {
+  const auto with_motion = [](double amplitude) {
+    mrd::record::RecordedRun run = sine_run(1000, 2, false);
+    std::uint32_t state = 12345u;
+    for (std::size_t i = 0; i < run.size(); ++i) {
+      state = state * 1664525u + 1013904223u;  // white, +-1 um uniform: sigma 0.577 um
+      const double noise = (static_cast<double>(state >> 8) / 16777216.0 - 0.5) * 2e-6;
+      run.displacement[i] = 0.003 + amplitude * std::sin(2.0 * std::numbers::pi * run.time[i]) + noise;
+    }
+    return run;
+  };
+  const std::string still = refusal({with_motion(0.0)});
+  EXPECT_NE(still.find("sine.csv: the displacement spans"), std::string::npos) << still;
+  EXPECT_NE(still.find("no damper motion to analyse"), std::string::npos) << still;
+  // 20 noise sigmas (11.5 um) is the bound: a 4 um sine is still, a 20 um one moves.
+  EXPECT_NE(refusal({with_motion(4e-6)}), "");
+  EXPECT_EQ(refusal({with_motion(20e-6)}), "");
+  mrd::record::RecordedRun parked = sine_run(1000, 2, true);
+  parked.displacement.assign(parked.size(), 0.003);
+  parked.displacement.back() = 0.0030001;  // one sample off: the screening keeps the rest
+  FitSeriesOptions unscreened;
+  unscreened.screen = false;
+  EXPECT_THROW((void)make_fit_series({parked}, unscreened), mrd::record::InputError);
+}
+
+TEST(FitSeries, TooFewSamplesLeftToFitSaysHowManyItNeedsAndWhy) {
+  mrd::record::RecordedRun run = sine_run(1000, 1, true);
+  // A rod stuck for all but 150 samples while the load cell swings (at the run's extreme: clipped).
+  for (std::size_t i = 150; i < run.size(); ++i) run.displacement[i] = run.displacement[149];
+  const std::string why = refusal({run});
+  EXPECT_NE(why.find("sine.csv: the screening left "), std::string::npos) << why;
+  EXPECT_NE(why.find("a fit needs at least 200 (set aside: clipped 8"), std::string::npos) << why;
+  mrd::record::RecordedRun enough = sine_run(1000, 1, true);
+  for (std::size_t i = 400; i < enough.size(); ++i) enough.displacement[i] = enough.displacement[399];
+  EXPECT_EQ(refusal({enough}), "");
+}
+
 }  // namespace
