@@ -4,6 +4,7 @@
 #include <string>
 
 #include "record/csv.hpp"
+#include "record/run_jitter.hpp"
 
 namespace mrd::record {
 
@@ -11,6 +12,13 @@ namespace {
 
 // More filled samples than this many times the recorded ones: no gap, a timestamp far off.
 constexpr double kMaxFilledShare = 4.0;
+
+[[noreturn]] void throw_far_off(const RecordedRun& run, double missing) {
+  throw InputError(run.name + ": the logging gaps would take " + std::to_string(static_cast<long long>(missing)) +
+                   " filled samples, more than " + std::to_string(static_cast<int>(kMaxFilledShare)) +
+                   " times the run's " + std::to_string(run.size()) +
+                   ": a timestamp far off, or separate runs in one file (split it)");
+}
 
 }  // namespace
 
@@ -26,19 +34,21 @@ GapFilledRun fill_gaps(const RecordedRun& run) {
     ++long_steps;
     missing_total += dt / period;
   }
+  if (const TimeJitter jitter = measure_jitter(run.time); period > 0.0 && jitter.uneven(period)) {
+    const double added = std::floor(run.duration() / period) + 1.0 - static_cast<double>(n);
+    if (added > kMaxFilledShare * static_cast<double>(n)) throw_far_off(run, added);
+    return resample_on_even_grid(run, jitter);
+  }
   out.run = run;
   out.filled.assign(n, 0);
   if (long_steps == 0) return out;
-  // Many long steps are a time column coarser than the period or a jittering logger, not gaps.
+  // Many long steps are a time column coarser than the period, not gaps.
   if (long_steps > std::max<std::size_t>(10, n / 100)) {
     out.run.notes.push_back(std::to_string(long_steps) +
                             " time steps longer than 1.5 periods: too many to be logging gaps, left as they are");
     return out;
   }
-  if (missing_total > kMaxFilledShare * static_cast<double>(n))
-    throw InputError(run.name + ": the logging gaps would take " + std::to_string(static_cast<long long>(missing_total)) +
-                     " filled samples, more than " + std::to_string(static_cast<int>(kMaxFilledShare)) +
-                     " times the run's " + std::to_string(n) + ": a timestamp far off, or separate runs in one file (split it)");
+  if (missing_total > kMaxFilledShare * static_cast<double>(n)) throw_far_off(run, missing_total);
 
   RecordedRun& f = out.run;
   f.time.clear();

@@ -20,7 +20,9 @@ struct GapFilledRun {
   std::vector<std::pair<std::size_t, std::size_t>> gaps;
 };
 // The run itself (no sample filled) when it has no gap, or when long steps are too many to be
-// gaps (over 1 % of them, or 10: a time column coarser than the period; a note says so). Throws
+// gaps (over 1 % of them, or 10: a time column coarser than the period; a note says so). A run
+// whose samples were taken unevenly (measure_jitter) comes back resampled onto the even grid,
+// its gaps filled the same way (resample_on_even_grid). Throws
 // InputError when the gaps would take over 4 times the run's samples (a timestamp far off, or
 // separate runs in one file). The reader's set-aside rows are moved to the filled run's samples.
 GapFilledRun fill_gaps(const RecordedRun& run);

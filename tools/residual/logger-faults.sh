@@ -2,7 +2,9 @@
 # Logger faults injected into one simulated run (issue 27's table in docs/CLOSING-THE-LOOP.md,
 # "Data as loggers write it"): the run without its velocity column (so the zero-phase velocity and
 # its record edges are in play), then the same with a gap of 0.05 s, 0.3 s and 2 s, 1 % of its rows
-# written twice, 5 empty cells, and 3 rows whose time goes back. Prints, per variant, the effects
+# written twice, 5 empty cells, 3 rows whose time goes back, and each sample taken up to 10 % or
+# 30 % of a period off its grid time (picked from a 10 kHz simulation; the clean run is its every
+# 10th sample, so all variants share one noise). Prints, per variant, the effects
 # named, the RMS after on the kept samples, and that RMS in the first and last second against the
 # rest (from the residual trace --plot writes).
 # Usage: tools/residual/logger-faults.sh [BUILD_DIR] [OUT_DIR] [EFFECT]   (default effect gas_spring)
@@ -13,12 +15,13 @@ effect=${3:-gas_spring}
 python=${MRD_PYTHON:-/usr/bin/python3}
 mkdir -p "$out"
 "$build/tools/simulation/mrd-simulate-run" --profile table4 --damper 1kN --duration 12 --effect "$effect" \
-  --csv "$out/simulated.csv" > /dev/null
+  --rate 10000 --csv "$out/simulated.csv" > /dev/null
 "$python" - "$out" <<'PY'
 import csv, random, sys
 out = sys.argv[1]
 rows = list(csv.reader(open(f"{out}/simulated.csv")))
-header, data = rows[0], rows[1:]
+header, fine = rows[0], rows[1:]
+data = fine[::10]
 keep = [i for i, h in enumerate(header) if not h.startswith("velocity")]
 header = [header[i] for i in keep]
 data = [[r[i] for i in keep] for r in data]
@@ -41,10 +44,17 @@ back = data[:]
 for i in rng.sample(range(10, n - 10), 3):
     back[i] = back[i][:]; back[i][0] = repr(float(back[i - 5][0]))
 write("time_back_3", back)
+keep_fine = [[r[i] for i in keep] for r in fine]
+for percent in (10, 30):
+    picked, last = [], -1
+    for i in range(0, len(fine), 10):
+        j = min(max(i + rng.randint(-percent // 10, percent // 10), last + 1), len(fine) - 1)
+        picked.append(keep_fine[j]); last = j
+    write(f"jitter_{percent}pc", picked)
 PY
 echo "| run | named | rms_after [N] | set aside | first and last 1 s [N] | in between [N] |"
 echo "|---|---|---:|---:|---:|---:|"
-for variant in clean gap_0.05s gap_0.3s gap_2s duplicates_1pc empty_cells_5 time_back_3; do
+for variant in clean gap_0.05s gap_0.3s gap_2s duplicates_1pc empty_cells_5 time_back_3 jitter_10pc jitter_30pc; do
   "$build/tools/mrd-residual" "$out/$variant.csv" --json "$out/$variant.json" --plot "$out/$variant.plot" \
     > "$out/$variant.txt" 2> "$out/$variant.err" || { echo "| $variant | failed: $(tail -1 "$out/$variant.err") |"; continue; }
   "$python" - "$out" "$variant" <<'PY'
