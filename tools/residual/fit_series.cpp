@@ -48,25 +48,6 @@ void set_aside_gaps(const record::GapFilledRun& filled, double margin_s, Screeni
   set_aside(screening, filled.run, std::move(gaps), margin_s);
 }
 
-// A robust spread of the displacement's sample-to-sample noise: white noise of sigma gives
-// second differences of sigma * sqrt(6), while a motion sampled well above its frequency leaves
-// them near zero. The smallest step stands in for a quantised sensor's noise.
-double displacement_noise(const std::vector<double>& x, const std::vector<std::uint8_t>& excluded) {
-  std::vector<double> d2;
-  double smallest_step = std::numeric_limits<double>::infinity();
-  const auto kept = [&](std::size_t i) { return excluded.empty() || !excluded[i]; };
-  for (std::size_t i = 1; i < x.size(); ++i) {
-    if (!kept(i - 1) || !kept(i)) continue;
-    if (const double step = std::fabs(x[i] - x[i - 1]); step > 0.0) smallest_step = std::min(smallest_step, step);
-    if (i + 1 < x.size() && kept(i + 1)) d2.push_back(std::fabs(x[i + 1] - 2.0 * x[i] + x[i - 1]));
-  }
-  if (d2.empty()) return 0.0;
-  const auto mid = d2.begin() + static_cast<std::ptrdiff_t>(d2.size() / 2);
-  std::nth_element(d2.begin(), mid, d2.end());
-  const double sigma = 1.4826 * *mid / std::sqrt(6.0);
-  return std::isfinite(smallest_step) ? std::max(sigma, smallest_step) : sigma;
-}
-
 // A run whose kept displacement spans less than this many times its noise has no motion to
 // explain: every effect would fit the load cell's noise.
 constexpr double kMotionOverNoise = 20.0;
@@ -83,7 +64,11 @@ void check_motion(const record::RecordedRun& run, const Screening& screening) {
     throw record::InputError(run.name + ": the displacement never moves on the kept samples: no damper "
                                          "motion to analyse (leave the run out)");
   }
-  const double noise = displacement_noise(run.displacement, screening.excluded);
+  // A quantised LVDT's noise is at least its step.
+  double step = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 1; i < run.size(); ++i)
+    if (const double d = std::fabs(run.displacement[i] - run.displacement[i - 1]); d > 0.0) step = std::min(step, d);
+  const double noise = std::max(sample_noise(run.displacement, screening.excluded), std::isfinite(step) ? step : 0.0);
   if (hi - lo >= kMotionOverNoise * noise) return;
   char text[200];
   std::snprintf(text, sizeof text,

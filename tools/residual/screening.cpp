@@ -14,6 +14,7 @@ std::string_view to_string(ScreenReason r) {
     case ScreenReason::kDuplicate: return "duplicate";
     case ScreenReason::kTimeConflict: return "time_conflict";
     case ScreenReason::kNonFinite: return "non_finite";
+    case ScreenReason::kImplausible: return "implausible";
   }
   return "?";
 }
@@ -30,15 +31,11 @@ double resolution(const std::vector<double>& c) {
   return smallest;
 }
 
-// 1.4826 MAD of the channel's second difference over 2: the noise of one sample, robustly.
-double robust_sigma(const std::vector<double>& c) {
-  if (c.size() < 5) return 0.0;
-  std::vector<double> r;
-  r.reserve(c.size());
-  for (std::size_t i = 1; i + 1 < c.size(); ++i) r.push_back(std::fabs(c[i] - 0.5 * (c[i - 1] + c[i + 1])));
-  auto mid = r.begin() + static_cast<std::ptrdiff_t>(r.size() / 2);
-  std::nth_element(r.begin(), mid, r.end());
-  return 1.4826 * *mid / std::sqrt(1.5);  // r's sigma is sqrt(1.5) of one sample's
+// The value below which a share `q` of the channel lies.
+double quantile(std::vector<double> c, double q) {
+  const auto at = c.begin() + static_cast<std::ptrdiff_t>(q * static_cast<double>(c.size() - 1));
+  std::nth_element(c.begin(), at, c.end());
+  return *at;
 }
 
 // How far the channel moves per sample just outside [first, last]: the mean absolute step over
@@ -143,7 +140,7 @@ void find_spikes(const record::RecordedRun& run, const Channel& ch, const Screen
   const auto [lo, hi] = std::minmax_element(c.begin(), c.end());
   // Far above the noise, and a visible share of the channel's range: a real damper's force
   // chatters at reversals, sample to sample, by a few per cent.
-  const double floor = std::max({o.spike_sigmas * robust_sigma(c), 4.0 * resolution(c), 0.05 * (*hi - *lo)});
+  const double floor = std::max({o.spike_sigmas * sample_noise(c), 4.0 * resolution(c), 0.05 * (*hi - *lo)});
   for (std::size_t i = 1; i + 1 < c.size(); ++i) {
     const double up = c[i] - c[i - 1], down = c[i] - c[i + 1];
     const double jump = std::min(std::fabs(up), std::fabs(down));
@@ -153,6 +150,39 @@ void find_spikes(const record::RecordedRun& run, const Channel& ch, const Screen
         jump > 8.0 * local_step(c, i, 20) && !(std::string_view(ch.name) == "force" && current_changed_near(run, i))) {
       spans.push_back({i, i, 0, 0, ch.name, ScreenReason::kSpike});
     }
+  }
+}
+
+// Spans where the force contradicts the motion: the displacement held within a band (a share of
+// its stroke, or 6 noise sigmas) while the force swings beyond +-F and back, again and again,
+// where F is a share of the force's half range, standing in for the yield force (the screening
+// runs before any fit). No damper reverses its force without moving: a rig at its end stop, a
+// load cell ringing. One reversal is a sine's turning point, and is kept.
+void find_implausible(const record::RecordedRun& run, const ScreeningOptions& o, std::vector<ScreenedSpan>& spans) {
+  const std::vector<double>& x = run.displacement;
+  const std::vector<double>& f = run.force;
+  if (!run.has_force() || x.size() < 8) return;
+  const double band = std::max(o.implausible_band * (quantile(x, 0.99) - quantile(x, 0.01)), 6.0 * sample_noise(x));
+  const double swing = o.implausible_force * 0.5 * (quantile(f, 0.99) - quantile(f, 0.01));
+  if (!(swing > 0.0)) return;
+  for (std::size_t first = 0; first < x.size();) {
+    double lo = x[first], hi = x[first];
+    std::size_t last = first;
+    int side = 0, reversals = 0;
+    for (std::size_t i = first; i < x.size(); ++i) {
+      lo = std::min(lo, x[i]);
+      hi = std::max(hi, x[i]);
+      if (hi - lo > band) break;
+      last = i;
+      const int now = f[i] > swing ? 1 : f[i] < -swing ? -1 : 0;
+      if (now != 0 && now != side) {
+        reversals += side != 0;
+        side = now;
+      }
+    }
+    if (reversals >= o.implausible_reversals)
+      spans.push_back({first, last, 0, 0, "force", ScreenReason::kImplausible});
+    first = last + 1;
   }
 }
 
@@ -179,6 +209,7 @@ Screening screen_run(const record::RecordedRun& run, const ScreeningOptions& o) 
     if (std::string_view(ch.name) != "velocity") find_spikes(run, ch, o, s.spans);
   }
   find_gaps(run, s.spans);
+  find_implausible(run, o, s.spans);
   std::vector<ScreenedSpan> found = std::move(s.spans);
   s.spans.clear();
   // The reader's rows: reported where they were, nothing more set aside for them.
@@ -191,6 +222,19 @@ Screening screen_run(const record::RecordedRun& run, const ScreeningOptions& o) 
   }
   set_aside(s, run, std::move(found), o.margin_s);
   return s;
+}
+
+double sample_noise(const std::vector<double>& c, const std::vector<std::uint8_t>& excluded) {
+  if (c.size() < 5) return 0.0;
+  const auto kept = [&](std::size_t i) { return excluded.empty() || !excluded[i]; };
+  std::vector<double> r;
+  r.reserve(c.size());
+  for (std::size_t i = 1; i + 1 < c.size(); ++i)
+    if (kept(i - 1) && kept(i) && kept(i + 1)) r.push_back(std::fabs(c[i] - 0.5 * (c[i - 1] + c[i + 1])));
+  if (r.empty()) return 0.0;
+  auto mid = r.begin() + static_cast<std::ptrdiff_t>(r.size() / 2);
+  std::nth_element(r.begin(), mid, r.end());
+  return 1.4826 * *mid / std::sqrt(1.5);  // r's sigma is sqrt(1.5) of one sample's
 }
 
 void set_aside(Screening& screening, const record::RecordedRun& run, std::vector<ScreenedSpan> found, double margin_s) {

@@ -21,6 +21,7 @@ enum class ScreenReason : std::uint8_t {
   kDuplicate,     // a repeated row, one kept
   kTimeConflict,  // the same time with other values, or time going back
   kNonFinite,     // an empty, nan or inf cell
+  kImplausible,   // the force swings through both signs again and again while the rod stands still
 };
 [[nodiscard]] std::string_view to_string(ScreenReason r);
 
@@ -44,7 +45,18 @@ struct ScreeningOptions {
   std::size_t min_flat = 8;          // samples of exact repeats before a run can be clipped or stuck
   double spike_sigmas = 12.0;        // a spike stands this many robust noise sigmas off its neighbours
   double margin_s = 0.005;           // set aside around each span: the zero-phase velocity spreads it [s]
+  // implausible: the displacement within this share of its stroke (1st to 99th percentile) ...
+  double implausible_band = 0.02;
+  // ... while the force crosses from beyond +-(this share of its half range) to beyond the
+  // other sign this many times (a sine's turning point crosses once).
+  double implausible_force = 0.25;
+  int implausible_reversals = 4;
 };
+
+// One sample's noise, robustly: 1.4826 MAD of the channel's deviation from its neighbours'
+// midpoint (a motion sampled well above its frequency leaves almost none), over the samples
+// not `excluded` (empty: all). 0 for fewer than 5.
+[[nodiscard]] double sample_noise(const std::vector<double>& channel, const std::vector<std::uint8_t>& excluded = {});
 
 // Finds the samples of `run` no damper produced (docs/CLOSING-THE-LOOP.md, "Screening"). Pure;
 // linear in the run's length.

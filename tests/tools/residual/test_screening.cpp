@@ -7,6 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdint>
+#include <numbers>
 #include <string>
 
 #include "record/run_reader.hpp"
@@ -115,6 +117,41 @@ TEST(Screening, BridgedInputsAreLinearAcrossTheSpan) {
   bridge_excluded_inputs(run, s);
   EXPECT_NEAR(run.displacement[104], x0 + (x1 - x0) * (run.time[104] - run.time[99]) / (run.time[110] - run.time[99]),
               1e-15);
+}
+
+// A rig at its end stop: the LVDT jitters within half a per cent of the stroke while the load
+// cell rings at 25 Hz through both signs and clips. No damper reverses its force without moving;
+// the same ringing with the rod dithering at 3 % of the stroke is a damper's, and is kept.
+TEST(Screening, AForceRingingWhileTheRodStandsIsImplausible) {
+  const auto clean = clean_run();
+  const auto [x_lo, x_hi] = std::minmax_element(clean.displacement.begin(), clean.displacement.end());
+  const auto [f_lo, f_hi] = std::minmax_element(clean.force.begin(), clean.force.end());
+  const double stroke = *x_hi - *x_lo, peak = std::max(*f_hi, -*f_lo);
+  const auto ringing = [&](double motion_share, bool jitter) {
+    auto run = clean;
+    std::size_t first = 0;
+    std::uint32_t state = 99u;
+    for (std::size_t i = 0; i < run.size(); ++i) {
+      if (run.time[i] < 2.0 || run.time[i] > 2.36) continue;
+      if (first == 0) first = i;
+      state = state * 1664525u + 1013904223u;
+      const double u = static_cast<double>(state >> 8) / 8388608.0 - 1.0;
+      const double phase = 2.0 * std::numbers::pi * 25.0 * (run.time[i] - 2.0);
+      run.displacement[i] = run.displacement[first] + (jitter ? 0.005 * stroke * u : motion_share * stroke * std::sin(phase));
+      run.force[i] = std::clamp(1.2 * peak * std::cos(phase), -peak, peak);
+    }
+    return run;
+  };
+  const Screening stop = screen_run(ringing(0.0, true));
+  EXPECT_TRUE(has_span(stop, "force", ScreenReason::kImplausible, 2.05, 2.3)) << describe(stop);
+  std::size_t outside = 0;
+  for (std::size_t i = 0; i < clean.size(); ++i)
+    outside += stop.excluded[i] && (clean.time[i] < 1.9 || clean.time[i] > 2.46);
+  EXPECT_EQ(outside, 0u) << describe(stop);
+  const Screening dither = screen_run(ringing(0.03, false));
+  EXPECT_FALSE(std::ranges::any_of(dither.spans, [](const ScreenedSpan& s) { return s.reason == ScreenReason::kImplausible; }))
+      << describe(dither);
+  EXPECT_EQ(std::string(to_string(ScreenReason::kImplausible)), "implausible");
 }
 
 // The fault takes over a fit without screening; with it, the base fit's error is the unfaulted
