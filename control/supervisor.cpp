@@ -1,5 +1,7 @@
 #include "control/supervisor.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -48,6 +50,7 @@ std::string_view to_string(Trigger t) {
     case Trigger::kDemandNotFinite: return "demand_not_finite";
     case Trigger::kDemandCorrupted: return "demand_corrupted";
     case Trigger::kDemandFromFuture: return "demand_from_future";
+    case Trigger::kLinkTimeout: return "link_timeout";
     case Trigger::kCount: break;
   }
   return "?";
@@ -93,8 +96,18 @@ ValidationReport SupervisorConfig::validate() const {
   at_least("degraded_clear_periods", degraded_clear_periods, 1);
   at_least("demand_stale_periods", demand_stale_periods, 1);
   r.check(std::isfinite(demand_range) && demand_range > 0.0, "demand_range", "must be a finite value > 0 N");
+  // An hour bounds a typo (3600 periods meant as seconds), not a real device's boot.
+  r.check(std::isfinite(link_timeout) && link_timeout > 0.0 && link_timeout <= 3600.0, "link_timeout",
+          "must be a finite value in (0, 3600] s");
   return r;
 }
+
+Supervisor::Supervisor(const SupervisorConfig& config)
+    : config_(config),
+      // Clamped: an unvalidated value must not overflow the conversion.
+      link_timeout_(std::chrono::duration_cast<hal::Timestamp>(
+          std::chrono::duration<double>(std::isfinite(config.link_timeout)
+                                            ? std::clamp(config.link_timeout, 0.0, 1e6) : 1e6))) {}
 
 std::uint64_t TransitionCounts::total() const {
   std::uint64_t sum = 0;
@@ -267,7 +280,12 @@ void Supervisor::fill(SupervisorDecision& d) const {
   d.latched = latched_;
 }
 
-SupervisorDecision Supervisor::step(const SupervisorInputs& in, hal::Timestamp now) {
+SupervisorDecision Supervisor::step(const SupervisorInputs& raw, hal::Timestamp now) {
+  if (!started_) started_ = now;
+  // A link that is not up yet queues INIT's setpoint for when it comes; once past INIT a
+  // setpoint without a link is a failed write.
+  SupervisorInputs in = raw;
+  if (state_ != SupervisorState::kInit && in.link_down) in.setpoint_write_failed = true;
   update_counters(in);
   const Trigger hard = hard_trigger(in);
   const Trigger soft = soft_trigger(in);
@@ -280,7 +298,9 @@ SupervisorDecision Supervisor::step(const SupervisorInputs& in, hal::Timestamp n
       // outputs as SAFE); every other hard trigger is a fault already.
       if (hard != Trigger::kNone && hard != Trigger::kSensorStale && hard != Trigger::kDemandStale) {
         go(SupervisorState::kSafe, hard, now, d);
-      } else if (good_ >= config_.recovery_periods) {
+      } else if (in.link_down && now - *started_ >= link_timeout_) {
+        go(SupervisorState::kSafe, Trigger::kLinkTimeout, now, d);
+      } else if (good_ >= config_.recovery_periods && !in.link_down) {
         go(SupervisorState::kRun, Trigger::kGoodPeriods, now, d);
       }
       break;

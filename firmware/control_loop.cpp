@@ -109,7 +109,8 @@ const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
        .demand = demand_check,
        .driver_fault = fault,
        .current_disagrees = disagrees,
-       .setpoint_write_failed = write_failed_,
+       .setpoint_write_failed = write_failed_ && !link_down_,
+       .link_down = link_down_,
        .setpoints_refused = static_cast<std::uint32_t>(std::min<std::uint64_t>(acks.refused - acks_.refused, 1u << 16)),
        .setpoint_accepted = acks.accepted != acks_.accepted,
        .readback_lost = readback_lost(measured, now),
@@ -182,6 +183,7 @@ const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
 void ControlLoop::write_outputs(const control::SupervisorDecision& d, double setpoint) {
   const hal::IoStatus written = hal_.driver.write_setpoint(setpoint);
   write_failed_ = written != hal::IoStatus::kOk;
+  link_down_ = written == hal::IoStatus::kNotConnected;
   if (write_failed_) {
     ++failed_setpoint_writes_;
   } else {

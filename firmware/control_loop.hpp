@@ -81,6 +81,7 @@ class ControlLoop {
   hal::Timestamp last_release_{};
   double last_setpoint_ = 0.0;  // the last setpoint the driver accepted [A]
   bool write_failed_ = false;   // the previous period's write, judged this period
+  bool link_down_ = false;      // ... and it failed for want of a link
   bool line_failed_ = false;    // the previous period's enable or heartbeat write
   bool disable_failed_ = false; // ... and it was the enable line going low
   bool enable_ = false;
