@@ -231,4 +231,26 @@ TEST(Supervisor, LinkTimeoutMustBeAPositiveFiniteTimeUpToAnHour) {
   EXPECT_TRUE(longest.validate().ok());
 }
 
+// The latch's window: driver_fault_limit driver-side SAFE entries latch when the last comes
+// less than driver_fault_window periods after the first; exactly the window apart they do not.
+bool latches_with_entries_apart(int periods_apart, int window) {
+  SupervisorConfig cfg = quick();
+  cfg.driver_fault_limit = 2;
+  cfg.driver_fault_window = window;
+  Clocked c{Supervisor(cfg)};
+  const SupervisorInputs fault{.driver_fault = true};
+  EXPECT_EQ(c.step(fault).trigger, Trigger::kDriverFault);  // INIT -> SAFE, period 1
+  for (int i = 1; i < periods_apart; ++i) c.step();          // RUN again after 3
+  EXPECT_EQ(c.sup.state(), SupervisorState::kRun);
+  const auto d = c.step(fault);                               // period 1 + periods_apart
+  EXPECT_EQ(d.state, SupervisorState::kSafe);
+  return d.latched;
+}
+
+TEST(Supervisor, DriverFaultsLatchOnlyWithinTheWindow) {
+  EXPECT_TRUE(latches_with_entries_apart(9, 10));
+  EXPECT_FALSE(latches_with_entries_apart(10, 10));
+  EXPECT_FALSE(latches_with_entries_apart(11, 10));
+}
+
 }  // namespace
