@@ -132,7 +132,8 @@ TEST(HilModbus, Table4SineRunsWithTheScheduleFollowedAndNoRecordLost) {
 // here so that the link comes up soon after the plant listens (the back-off is not under test).
 HilResult run_late(const std::string& name, double plant_delay, double duration) {
   return mrd::test::run_hil({.name = name,
-                             .controller_toml = controller_toml() + "[modbus]\nreconnect_max = 0.1\n",
+                             .controller_toml = std::regex_replace(controller_toml(), std::regex("\\[modbus\\]\n"),
+                                                                   "[modbus]\nreconnect_max = 0.1\n"),
                              .plant_toml = "[profile]\nkind = \"sine\"\namplitude = 0.040\nfrequency = 0.5\n",
                              .controller_duration = duration,
                              .plant_delay = plant_delay});
@@ -142,7 +143,7 @@ HilResult run_late(const std::string& name, double plant_delay, double duration)
 // missing sample, then RUN after exactly recovery_periods fresh periods; no SAFE, and the
 // setpoints queued while the link was down are no failed writes.
 void expect_late_plant_waited_for(const HilResult& r, double duration) {
-  expect_clean_run(r, duration, kRate);
+  ASSERT_NO_FATAL_FAILURE(expect_clean_run(r, duration, kRate));
   expect_first_run(r, safety());
   expect_never_safe_before_shutdown(r);
   EXPECT_EQ(r.controller_output.find("setpoint_write_failed"), std::string::npos);
@@ -157,7 +158,7 @@ TEST(HilModbus, PlantStarted30msLateIsWaitedForInInit) {
 TEST(HilModbus, PlantStartedHalfASecondLateIsWaitedForInInit) {
   const HilResult r = run_late("late_500ms", 0.5, 3.0);
   SCOPED_TRACE(diagnosis(r));
-  expect_late_plant_waited_for(r, 3.0);
+  ASSERT_NO_FATAL_FAILURE(expect_late_plant_waited_for(r, 3.0));
   // The wait was real: the first periods had no sample.
   EXPECT_GE(run_length_before(r.telemetry, 10, no_sample), 11u);
 }
@@ -169,7 +170,7 @@ TEST(HilModbus, PlantStartedThreeSecondsLateTripsLinkTimeoutThenRuns) {
   ASSERT_LT(timeout, 3.0) << "the test's premise: the default times out before the plant starts";
   const HilResult r = run_late("late_3s", 3.0, 5.0);
   SCOPED_TRACE(diagnosis(r));
-  expect_clean_run(r, 5.0, kRate);
+  ASSERT_NO_FATAL_FAILURE(expect_clean_run(r, 5.0, kRate));
   const std::size_t safe = first_in(r, SupervisorState::kSafe, -1e9);
   ASSERT_LT(safe, r.telemetry.size()) << "never went SAFE";
   ASSERT_GT(safe, 0u);
