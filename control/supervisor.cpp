@@ -51,6 +51,7 @@ std::string_view to_string(Trigger t) {
     case Trigger::kDemandCorrupted: return "demand_corrupted";
     case Trigger::kDemandFromFuture: return "demand_from_future";
     case Trigger::kLinkTimeout: return "link_timeout";
+    case Trigger::kBusStalled: return "bus_stalled";
     case Trigger::kCount: break;
   }
   return "?";
@@ -203,6 +204,7 @@ Trigger Supervisor::hard_trigger(const SupervisorInputs& in) const {
   if (shutdown_) return Trigger::kShutdown;
   if (!in.driver_fault) return Trigger::kFaultLineUnreadable;
   if (*in.driver_fault) return Trigger::kDriverFault;
+  if (in.bus_stalled) return Trigger::kBusStalled;
   if (bad_samples_ >= config_.bad_sample_periods) return trigger_of(in.sample);
   if (without_sample_ > config_.stale_periods) return Trigger::kSensorStale;
   if (bad_demands_ >= config_.bad_sample_periods) return demand_trigger_of(in.demand);
@@ -275,7 +277,7 @@ SupervisorDecision Supervisor::veto(Trigger why, hal::Timestamp now) {
 void Supervisor::fill(SupervisorDecision& d) const {
   d.state = state_;
   d.in_control = state_ == SupervisorState::kRun || state_ == SupervisorState::kDegraded;
-  d.enable = d.in_control || config_.enable_in_safe;
+  d.enable = d.in_control || (config_.enable_in_safe && !bus_stalled_);
   d.toggle_heartbeat = d.in_control;
   d.latched = latched_;
 }
@@ -286,6 +288,7 @@ SupervisorDecision Supervisor::step(const SupervisorInputs& raw, hal::Timestamp 
   // setpoint without a link is a failed write.
   SupervisorInputs in = raw;
   if (state_ != SupervisorState::kInit && in.link_down) in.setpoint_write_failed = true;
+  bus_stalled_ = in.bus_stalled;
   update_counters(in);
   const Trigger hard = hard_trigger(in);
   const Trigger soft = soft_trigger(in);

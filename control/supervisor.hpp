@@ -52,6 +52,7 @@ enum class Trigger : std::uint8_t {
   kDemandCorrupted,       // checksum/decode failure
   kDemandFromFuture,      // stamped ahead of the cycle by more than the allowed age
   kLinkTimeout,           // INIT: the driver's link was still down link_timeout after start
+  kBusStalled,            // a bus I/O thread stopped making progress: enable off, even in SAFE
   kCount
 };
 
@@ -110,6 +111,7 @@ struct SupervisorInputs {
   bool line_write_failed = false;            // the previous period's enable or heartbeat write
   bool disable_failed = false;               // ... and it was the enable line going low
   bool observer_recovered = false;           // the observer reset its J-A state this period
+  bool bus_stalled = false;                  // a bus I/O thread is hung: its setpoints go nowhere
   std::uint32_t overruns = 0;                // periods missed before this one
 };
 
@@ -187,6 +189,7 @@ class Supervisor {
   std::optional<hal::Timestamp> started_;  // the first step's time, the link timeout's origin
   bool shutdown_ = false;
   bool latched_ = false;
+  bool bus_stalled_ = false;  // this period's: the enable line is the only way left to the coil
 
   // Consecutive-period counters.
   std::int64_t without_sample_ = 0;
