@@ -203,6 +203,7 @@ void read_safety(TomlReader& in, control::SupervisorConfig& s) {
   in.get("safety.enable_in_safe", s.enable_in_safe);
   in.get("safety.recovery_periods", s.recovery_periods);
   in.get("safety.degraded_clear_periods", s.degraded_clear_periods);
+  in.get("safety.link_timeout", s.link_timeout);
   // Force mode's demand checks, judged by the supervisor as the LVDT's are.
   in.get("force.demand_range", s.demand_range);
   in.get("force.demand_max_age", s.demand_stale_periods);

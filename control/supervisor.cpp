@@ -1,5 +1,7 @@
 #include "control/supervisor.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -48,6 +50,8 @@ std::string_view to_string(Trigger t) {
     case Trigger::kDemandNotFinite: return "demand_not_finite";
     case Trigger::kDemandCorrupted: return "demand_corrupted";
     case Trigger::kDemandFromFuture: return "demand_from_future";
+    case Trigger::kLinkTimeout: return "link_timeout";
+    case Trigger::kBusStalled: return "bus_stalled";
     case Trigger::kCount: break;
   }
   return "?";
@@ -93,8 +97,18 @@ ValidationReport SupervisorConfig::validate() const {
   at_least("degraded_clear_periods", degraded_clear_periods, 1);
   at_least("demand_stale_periods", demand_stale_periods, 1);
   r.check(std::isfinite(demand_range) && demand_range > 0.0, "demand_range", "must be a finite value > 0 N");
+  // An hour bounds a typo (3600 periods meant as seconds), not a real device's boot.
+  r.check(std::isfinite(link_timeout) && link_timeout > 0.0 && link_timeout <= 3600.0, "link_timeout",
+          "must be a finite value in (0, 3600] s");
   return r;
 }
+
+Supervisor::Supervisor(const SupervisorConfig& config)
+    : config_(config),
+      // Clamped: an unvalidated value must not overflow the conversion.
+      link_timeout_(std::chrono::duration_cast<hal::Timestamp>(
+          std::chrono::duration<double>(std::isfinite(config.link_timeout)
+                                            ? std::clamp(config.link_timeout, 0.0, 1e6) : 1e6))) {}
 
 std::uint64_t TransitionCounts::total() const {
   std::uint64_t sum = 0;
@@ -190,6 +204,7 @@ Trigger Supervisor::hard_trigger(const SupervisorInputs& in) const {
   if (shutdown_) return Trigger::kShutdown;
   if (!in.driver_fault) return Trigger::kFaultLineUnreadable;
   if (*in.driver_fault) return Trigger::kDriverFault;
+  if (in.bus_stalled) return Trigger::kBusStalled;
   if (bad_samples_ >= config_.bad_sample_periods) return trigger_of(in.sample);
   if (without_sample_ > config_.stale_periods) return Trigger::kSensorStale;
   if (bad_demands_ >= config_.bad_sample_periods) return demand_trigger_of(in.demand);
@@ -262,12 +277,18 @@ SupervisorDecision Supervisor::veto(Trigger why, hal::Timestamp now) {
 void Supervisor::fill(SupervisorDecision& d) const {
   d.state = state_;
   d.in_control = state_ == SupervisorState::kRun || state_ == SupervisorState::kDegraded;
-  d.enable = d.in_control || config_.enable_in_safe;
+  d.enable = d.in_control || (config_.enable_in_safe && !bus_stalled_);
   d.toggle_heartbeat = d.in_control;
   d.latched = latched_;
 }
 
-SupervisorDecision Supervisor::step(const SupervisorInputs& in, hal::Timestamp now) {
+SupervisorDecision Supervisor::step(const SupervisorInputs& raw, hal::Timestamp now) {
+  if (!started_) started_ = now;
+  // A link that is not up yet queues INIT's setpoint for when it comes; once past INIT a
+  // setpoint without a link is a failed write.
+  SupervisorInputs in = raw;
+  if (state_ != SupervisorState::kInit && in.link_down) in.setpoint_write_failed = true;
+  bus_stalled_ = in.bus_stalled;
   update_counters(in);
   const Trigger hard = hard_trigger(in);
   const Trigger soft = soft_trigger(in);
@@ -280,7 +301,9 @@ SupervisorDecision Supervisor::step(const SupervisorInputs& in, hal::Timestamp n
       // outputs as SAFE); every other hard trigger is a fault already.
       if (hard != Trigger::kNone && hard != Trigger::kSensorStale && hard != Trigger::kDemandStale) {
         go(SupervisorState::kSafe, hard, now, d);
-      } else if (good_ >= config_.recovery_periods) {
+      } else if (in.link_down && now - *started_ >= link_timeout_) {
+        go(SupervisorState::kSafe, Trigger::kLinkTimeout, now, d);
+      } else if (good_ >= config_.recovery_periods && !in.link_down) {
         go(SupervisorState::kRun, Trigger::kGoodPeriods, now, d);
       }
       break;

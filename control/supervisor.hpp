@@ -51,6 +51,8 @@ enum class Trigger : std::uint8_t {
   kDemandNotFinite,       // NaN or infinite
   kDemandCorrupted,       // checksum/decode failure
   kDemandFromFuture,      // stamped ahead of the cycle by more than the allowed age
+  kLinkTimeout,           // INIT: the driver's link was still down link_timeout after start
+  kBusStalled,            // a bus I/O thread stopped making progress: enable off, even in SAFE
   kCount
 };
 
@@ -88,6 +90,8 @@ struct SupervisorConfig {
                                      // range (the file's [force] demand_range)
   int demand_stale_periods = 5;      // force mode: SAFE after more than this many periods without a
                                      // fresh demand (the file's [force] demand_max_age)
+  double link_timeout = 2.0;         // [s] INIT: SAFE when the driver's link is still down this long
+                                     // after the first period (a device's boot time, not periods)
 
   [[nodiscard]] ValidationReport validate() const;  // field paths relative to [safety]
 };
@@ -98,13 +102,16 @@ struct SupervisorInputs {
   SampleCheck demand = SampleCheck::kFresh;  // force mode's demand (DemandChecker); fresh otherwise
   std::optional<bool> driver_fault = false;  // nullopt: the line could not be read
   bool current_disagrees = false;            // judged by the loop, only when a reading exists
-  bool setpoint_write_failed = false;        // the previous period's write
+  bool setpoint_write_failed = false;        // the previous period's write, for a reason but the link
+  bool link_down = false;                    // the previous period's write found no link (queued for
+                                             // when it comes): in INIT a wait, else a failed write
   std::uint32_t setpoints_refused = 0;       // refusals the device reported since the previous period
   bool setpoint_accepted = false;            // and whether it accepted one meanwhile
   bool readback_lost = false;                // judged by the loop: no reading for too long
   bool line_write_failed = false;            // the previous period's enable or heartbeat write
   bool disable_failed = false;               // ... and it was the enable line going low
   bool observer_recovered = false;           // the observer reset its J-A state this period
+  bool bus_stalled = false;                  // a bus I/O thread is hung: its setpoints go nowhere
   std::uint32_t overruns = 0;                // periods missed before this one
 };
 
@@ -148,7 +155,7 @@ class TransitionCounts {
 // tabulated in docs/FIRMWARE.md.
 class Supervisor {
  public:
-  explicit Supervisor(const SupervisorConfig& config) : config_(config) {}
+  explicit Supervisor(const SupervisorConfig& config);
 
   // The largest driver_fault_limit validate() accepts: the size of the latch's ring.
   static constexpr std::size_t kMaxDriverFaultLimit = 16;
@@ -176,10 +183,13 @@ class Supervisor {
   void fill(SupervisorDecision& d) const;
 
   SupervisorConfig config_;
+  hal::Timestamp link_timeout_;
   SupervisorState state_ = SupervisorState::kInit;
   hal::Timestamp since_{};
+  std::optional<hal::Timestamp> started_;  // the first step's time, the link timeout's origin
   bool shutdown_ = false;
   bool latched_ = false;
+  bool bus_stalled_ = false;  // this period's: the enable line is the only way left to the coil
 
   // Consecutive-period counters.
   std::int64_t without_sample_ = 0;

@@ -29,6 +29,7 @@ ControlLoop::ControlLoop(const control::ControlLawConfig& law, const control::Su
       demand_checker_({.range = safety.demand_range,
                        .max_age = safety.demand_stale_periods * to_period(law.observer.sample_period)}),
       hal_(devices),
+      bus_(devices.io_threads),
       telemetry_(telemetry),
       decimation_(telemetry_decimation > 0 ? static_cast<std::uint64_t>(telemetry_decimation) : 1u),
       period_(to_period(law.observer.sample_period)),
@@ -102,6 +103,8 @@ const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
       {.displacement = checker_.held_value(), .timing = checker_.timing(check, now), .coil_current = coil});
 
   // 4. The supervisor.
+  const bool stalled = bus_.stalled(now);
+  bus_stalled_.store(stalled, std::memory_order_relaxed);
   const hal::SetpointAcks acks = hal_.driver.setpoint_acks();
   const std::uint64_t recoveries = law_.observer().magnetics().recoveries();
   control::SupervisorDecision d = supervisor_.step(
@@ -109,13 +112,15 @@ const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
        .demand = demand_check,
        .driver_fault = fault,
        .current_disagrees = disagrees,
-       .setpoint_write_failed = write_failed_,
+       .setpoint_write_failed = write_failed_ && !link_down_,
+       .link_down = link_down_,
        .setpoints_refused = static_cast<std::uint32_t>(std::min<std::uint64_t>(acks.refused - acks_.refused, 1u << 16)),
        .setpoint_accepted = acks.accepted != acks_.accepted,
        .readback_lost = readback_lost(measured, now),
        .line_write_failed = line_failed_,
        .disable_failed = disable_failed_,
        .observer_recovered = recoveries != recoveries_,
+       .bus_stalled = stalled,
        .overruns = skipped},
       now);
   acks_ = acks;
@@ -139,7 +144,7 @@ const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
   const double setpoint = d.in_control ? command.current : fail_safe_current_;
 
   // 6. Setpoint and lines.
-  write_outputs(d, setpoint);
+  write_outputs(d, setpoint, now);
 
   // 7. Telemetry.
   const control::ForceScaleCorrection* correction = law_.force_scale_correction();
@@ -179,9 +184,13 @@ const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
   return record_;
 }
 
-void ControlLoop::write_outputs(const control::SupervisorDecision& d, double setpoint) {
+void ControlLoop::write_outputs(const control::SupervisorDecision& d, double setpoint, hal::Timestamp now) {
   const hal::IoStatus written = hal_.driver.write_setpoint(setpoint);
-  write_failed_ = written != hal::IoStatus::kOk;
+  const bool queued = written == hal::IoStatus::kOk;
+  // Queued is not delivered: a bus thread that stopped taking them fails the write too.
+  const bool undelivered = bus_.undelivered(hal_.driver.handover(), queued, now);
+  write_failed_ = !queued || undelivered;
+  link_down_ = written == hal::IoStatus::kNotConnected;
   if (write_failed_) {
     ++failed_setpoint_writes_;
   } else {

@@ -6,6 +6,7 @@
 
 #include "control/control_law.hpp"
 #include "control/demand_check.hpp"
+#include "firmware/bus_watch.hpp"
 #include "firmware/hal_devices.hpp"
 #include "control/sample_check.hpp"
 #include "control/supervisor.hpp"
@@ -50,6 +51,8 @@ class ControlLoop {
   [[nodiscard]] std::uint64_t failed_setpoint_writes() const { return failed_setpoint_writes_; }
   [[nodiscard]] std::uint64_t failed_line_writes() const { return failed_line_writes_; }
   [[nodiscard]] hal::Timestamp period() const { return period_; }
+  // A bus I/O thread stood still at the last cycle: safe from any thread (the watchdog's feeder).
+  [[nodiscard]] bool bus_stalled() const { return bus_stalled_.load(std::memory_order_relaxed); }
 
  private:
   std::uint32_t skipped_periods(hal::Timestamp now) const;
@@ -57,7 +60,7 @@ class ControlLoop {
   // one (its value in `newtons`), or a bad one.
   control::LoadCellStatus read_load_cell(double& newtons);
   [[nodiscard]] bool readback_lost(const std::optional<hal::CurrentReading>& measured, hal::Timestamp now);
-  void write_outputs(const control::SupervisorDecision& d, double setpoint);
+  void write_outputs(const control::SupervisorDecision& d, double setpoint, hal::Timestamp now);
 
   control::ControlLaw law_;
   control::Supervisor supervisor_;
@@ -65,6 +68,7 @@ class ControlLoop {
   control::DemandChecker demand_checker_;
   std::optional<std::uint32_t> load_cell_sequence_;  // the last load-cell sample's
   HalDevices hal_;
+  BusWatch bus_;
   runtime::TelemetryQueue* telemetry_;
   std::uint64_t decimation_;
   hal::Timestamp period_;
@@ -81,6 +85,7 @@ class ControlLoop {
   hal::Timestamp last_release_{};
   double last_setpoint_ = 0.0;  // the last setpoint the driver accepted [A]
   bool write_failed_ = false;   // the previous period's write, judged this period
+  bool link_down_ = false;      // ... and it failed for want of a link
   bool line_failed_ = false;    // the previous period's enable or heartbeat write
   bool disable_failed_ = false; // ... and it was the enable line going low
   bool enable_ = false;
@@ -90,6 +95,7 @@ class ControlLoop {
   hal::SetpointAcks acks_;                      // as of the previous period
   std::uint64_t recoveries_ = 0;                // the observer's, as of the previous period
   std::atomic<bool> clear_requested_{false};
+  std::atomic<bool> bus_stalled_{false};
 };
 
 }  // namespace mrd::firmware

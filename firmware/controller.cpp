@@ -155,7 +155,9 @@ int run_controller(const config::ControllerConfig& config, const RunOptions& opt
       .tick =
           [&](hal::Timestamp now) {
             log_transitions(feed, journal, start, lost_logged, bounds_logged);
-            notifier.tick(now, service_status(config, stats, feed));
+            runtime::ServiceStatus status = service_status(config, stats, feed);
+            status.bus_stalled = loop.bus_stalled();
+            notifier.tick(now, status);
           }};
   runtime::run_real_time(run, signals, unblock, rt, stats, cycle, hooks);
   // The loop thread has ended (joined): the final cycle's transition is in the feed.

@@ -73,6 +73,8 @@ HalSet::HalSet(const config::ControllerConfig& config, const hal::Clock& clock) 
     load_cell_ =
         choose<hal::LoadCellSource>(*b.load_cell, mock_ ? &mock_->load_cell : nullptr, modbus_.get(), can_.get());
   }
+  if (modbus_) threads_.push_back(&modbus_->io_thread());
+  if (can_) threads_.push_back(&can_->io_thread());
   lines_ = gpio_ ? static_cast<hal::DigitalLines*>(gpio_.get()) : &mock_->lines;
   if (b.driver == config::DeviceBackend::kCan) {
     can_enable_ = std::make_unique<CanEnableLines>(*lines_, *can_);
@@ -96,13 +98,6 @@ hal::StartResult HalSet::start() {
 void HalSet::stop() {
   if (modbus_) modbus_->stop();
   if (can_) can_->stop();
-}
-
-std::vector<hal::IoThread*> HalSet::io_threads() {
-  std::vector<hal::IoThread*> threads;
-  if (modbus_) threads.push_back(&modbus_->io_thread());
-  if (can_) threads.push_back(&can_->io_thread());
-  return threads;
 }
 
 std::string HalSet::counters() const {

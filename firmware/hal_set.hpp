@@ -29,10 +29,10 @@ class HalSet {
   [[nodiscard]] hal::StartResult start();
   void stop();
 
-  [[nodiscard]] HalDevices devices() { return {*lvdt_, *driver_, *lines_, demand_, load_cell_}; }
+  [[nodiscard]] HalDevices devices() { return {*lvdt_, *driver_, *lines_, demand_, load_cell_, threads_}; }
   [[nodiscard]] hal::mock::MockHal* mock() { return mock_.get(); }
-  // The bus back ends' I/O threads (after start()), for the real-time set-up.
-  [[nodiscard]] std::vector<hal::IoThread*> io_threads();
+  // The bus back ends' I/O threads (running after start()), for the real-time set-up.
+  [[nodiscard]] const std::vector<hal::IoThread*>& io_threads() const { return threads_; }
   // One line per bus back end with its counters, for the statistics printout.
   [[nodiscard]] std::string counters() const;
 
@@ -49,6 +49,7 @@ class HalSet {
   hal::DigitalLines* lines_ = nullptr;
   hal::DemandSource* demand_ = nullptr;  // force mode only
   hal::LoadCellSource* load_cell_ = nullptr;  // force mode with backends.load_cell only
+  std::vector<hal::IoThread*> threads_;
 };
 
 }  // namespace mrd::firmware

@@ -15,6 +15,13 @@ struct SetpointAcks {
   std::uint64_t refused = 0;  // the device answered the write with a refusal (a Modbus exception)
 };
 
+// A back end whose bus thread takes the setpoints write_setpoint queues: how many it took since
+// start, and the longest a live, linked thread may go without taking one.
+struct SetpointHandover {
+  std::uint64_t taken = 0;
+  Timestamp within{};
+};
+
 struct CurrentReading {
   double value = 0.0;     // A, as the driver measured it
   Timestamp timestamp{};  // when the back end received it
@@ -30,6 +37,8 @@ class CurrentDriver {
   [[nodiscard]] virtual std::optional<CurrentReading> measured() = 0;
   // What the device answered to the setpoints written after write_setpoint queued them.
   [[nodiscard]] virtual SetpointAcks setpoint_acks() const { return {}; }
+  // nullopt: write_setpoint delivers the setpoint itself, on the caller's thread.
+  [[nodiscard]] virtual std::optional<SetpointHandover> handover() const { return std::nullopt; }
 };
 
 }  // namespace mrd::hal

@@ -3,6 +3,7 @@
 #include <pthread.h>
 #include <sched.h>
 
+#include <algorithm>
 #include <cerrno>
 
 namespace mrd::hal {
@@ -41,7 +42,13 @@ bool IoThread::stop_requested() const {
 
 bool IoThread::wait_until(std::chrono::steady_clock::time_point deadline) {
   std::unique_lock lock(mutex_);
-  return !cv_.wait_until(lock, deadline, [this] { return stop_; });
+  // In slices: a long back-off is a live thread, and says so.
+  for (;;) {
+    beat();
+    const auto slice = std::min(deadline, std::chrono::steady_clock::now() + kBeatSlice);
+    if (cv_.wait_until(lock, slice, [this] { return stop_; })) return false;
+    if (slice == deadline) return true;
+  }
 }
 
 }  // namespace mrd::hal

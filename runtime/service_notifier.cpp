@@ -9,8 +9,9 @@ namespace mrd::runtime {
 
 std::string format_status(const ServiceStatus& s) {
   char line[192];
-  std::snprintf(line, sizeof line, "%s%s, %.0f Hz, wake-up p99 %.1f us, overruns %" PRIu64 ", cycles %" PRIu64,
-                std::string(to_string(s.state)).c_str(), s.latched ? " latched (clear: SIGUSR2)" : "", s.rate, static_cast<double>(s.wake_p99_ns) * 1e-3,
+  std::snprintf(line, sizeof line, "%s%s%s, %.0f Hz, wake-up p99 %.1f us, overruns %" PRIu64 ", cycles %" PRIu64,
+                std::string(to_string(s.state)).c_str(), s.latched ? " latched (clear: SIGUSR2)" : "",
+                s.bus_stalled ? ", bus thread stalled" : "", s.rate, static_cast<double>(s.wake_p99_ns) * 1e-3,
                 s.overruns, s.cycles);
   return line;
 }
@@ -33,13 +34,13 @@ void ServiceNotifier::stopping(const std::string& why) { send("STOPPING=1\nSTATU
 
 void ServiceNotifier::tick(hal::Timestamp now, const ServiceStatus& status) {
   if (watchdog_.count() > 0 && now - last_kick_ >= watchdog_ / 2) {
-    if (status.cycles > cycles_at_kick_) {
+    if (status.cycles > cycles_at_kick_ && !status.bus_stalled) {
       send("WATCHDOG=1");
       ++kicks_;
       last_kick_ = now;
       cycles_at_kick_ = status.cycles;
     } else {
-      ++withheld_;  // the loop did not move: let systemd's timer run out
+      ++withheld_;  // the loop or a bus thread did not move: let systemd's timer run out
     }
   }
   if (now - last_status_ >= status_period_) {

@@ -17,6 +17,7 @@ struct ServiceStatus {
   std::uint64_t cycles = 0;
   std::uint64_t overruns = 0;
   std::uint64_t wake_p99_ns = 0;   // since start
+  bool bus_stalled = false;        // a bus I/O thread is hung: the watchdog is not fed
 };
 // "RUN, 1000 Hz, wake-up p99 42.1 us, overruns 0, cycles 120000"; a latched SAFE reads
 // "SAFE latched (clear: SIGUSR2), 1000 Hz, ...", so `systemctl status` says what to do.
@@ -34,9 +35,10 @@ class ServiceNotifier {
   void ready(const ServiceStatus& status, hal::Timestamp now);
   // STOPPING=1 with a last STATUS= when the run ends.
   void stopping(const std::string& why);
-  // Periodically: WATCHDOG=1 when at least half the interval has passed since the last one
-  // and the loop's cycle count advanced since then (a stalled loop starves the watchdog and
-  // systemd kills the service); STATUS= every status period.
+  // Periodically: WATCHDOG=1 when at least half the interval has passed since the last one,
+  // the loop's cycle count advanced since then and no bus thread is stalled (a stalled loop or
+  // bus thread starves the watchdog and systemd restarts the service); STATUS= every status
+  // period.
   void tick(hal::Timestamp now, const ServiceStatus& status);
 
   [[nodiscard]] std::chrono::nanoseconds watchdog_interval() const { return watchdog_; }
@@ -52,7 +54,7 @@ class ServiceNotifier {
   hal::Timestamp last_status_{};
   std::uint64_t cycles_at_kick_ = 0;
   std::uint64_t kicks_ = 0;
-  std::uint64_t withheld_ = 0;  // kicks due while the cycle count stood still
+  std::uint64_t withheld_ = 0;  // kicks due while the cycle count or a bus thread stood still
 };
 
 }  // namespace mrd::runtime

@@ -112,6 +112,8 @@ StartResult SocketCanBackend::start_on(int fd) {
     return r;
   }
   fd_ = fd;
+  // recv() returns at least every receive_timeout; a frame's decoding takes microseconds.
+  thread_.set_max_silence(config_.receive_timeout + IoThread::kBeatSlice);
   thread_.start("mrd-can-rx", [this] { run(); });
   return StartResult::success();
 }
@@ -166,6 +168,7 @@ IoStatus SocketCanBackend::write_setpoint(double amps) {
 void SocketCanBackend::run() {
   can_frame frame{};
   while (!thread_.stop_requested()) {
+    thread_.beat();
     const ssize_t n = recv(fd_, &frame, sizeof frame, 0);
     if (n == static_cast<ssize_t>(sizeof frame)) on_frame(frame);
     // n < 0: SO_RCVTIMEO expired (EAGAIN) or an interrupted call; loop to check for stop.

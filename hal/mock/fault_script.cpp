@@ -28,6 +28,7 @@ std::string_view to_string(FaultKind k) {
     case FaultKind::kDemandStale: return "demand_stale";
     case FaultKind::kDemandNotFinite: return "demand_not_finite";
     case FaultKind::kDemandOutOfRange: return "demand_out_of_range";
+    case FaultKind::kOldTimestamp: return "old_timestamp";
     case FaultKind::kCount: break;
   }
   return "unknown";

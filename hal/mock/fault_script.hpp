@@ -34,6 +34,8 @@ enum class FaultKind : std::uint8_t {
   kDemandStale,        // the previous demand again: same value, timestamp and sequence
   kDemandNotFinite,    // value NaN, flagged valid
   kDemandOutOfRange,   // value = parameter [N], flagged valid
+  kOldTimestamp,       // a new sample (sequence number) stamped parameter [s] before the clock:
+                       // a bus that delivers late
   kCount
 };
 [[nodiscard]] std::string_view to_string(FaultKind k);

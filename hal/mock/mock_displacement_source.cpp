@@ -39,6 +39,9 @@ std::optional<DisplacementSample> MockDisplacementSource::latest() {
   if (const ScriptedFault* f = script_.active(FaultKind::kFutureTimestamp, now)) {
     s.timestamp += std::chrono::duration_cast<Timestamp>(std::chrono::duration<double>(f->parameter));
   }
+  if (const ScriptedFault* f = script_.active(FaultKind::kOldTimestamp, now)) {
+    s.timestamp -= std::chrono::duration_cast<Timestamp>(std::chrono::duration<double>(f->parameter));
+  }
   if (script_.is_active(FaultKind::kCorruptedFrame, now)) s.flags = kSampleCorrupted;
   if (script_.is_active(FaultKind::kFrozenValue, now)) {
     if (!frozen_) frozen_ = last_ ? last_->value : s.value;

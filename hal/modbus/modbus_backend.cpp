@@ -80,6 +80,8 @@ StartResult ModbusBackend::start() {
   if (modbus_set_byte_timeout(ctx_, sec, usec) != 0) {
     return StartResult::failure(modbus_error("modbus: cannot set byte timeout"));
   }
+  // A TCP connect waits up to the response timeout too; a back-off wait beats on its own.
+  thread_.set_max_silence(longest_poll() + IoThread::kBeatSlice);
   thread_.start("mrd-modbus", [this] { run(); });
   return StartResult::success();
 }
@@ -112,6 +114,7 @@ void ModbusBackend::run() {
   };
 
   while (thread_.wait_until(next_poll)) {
+    thread_.beat();
     if (!linked) {
       if (modbus_connect(ctx_) != 0) {
         last_errno_.store(errno, std::memory_order_relaxed);
@@ -157,7 +160,10 @@ ModbusBackend::Outcome ModbusBackend::classify_failure(ModbusEvent counter) {
 }
 
 ModbusBackend::Outcome ModbusBackend::write_pending_setpoint() {
-  if (auto newest = setpoints_.take()) pending_setpoint_ = newest;
+  if (auto newest = setpoints_.take()) {
+    pending_setpoint_ = newest;
+    taken_.fetch_add(1, std::memory_order_relaxed);
+  }
   if (!pending_setpoint_) return Outcome::kOk;
   const auto words = pending_setpoint_->view();
   const int address = config_.registers.setpoint_address;

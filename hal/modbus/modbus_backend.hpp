@@ -80,6 +80,11 @@ class ModbusBackend final : public DisplacementSource,
     return {counters_.get(ModbusEvent::kWritesOk), counters_.get(ModbusEvent::kWritesRefused)};
   }
 
+  // Setpoints taken from the mailbox, within a poll's worst case (longest_poll()).
+  [[nodiscard]] std::optional<SetpointHandover> handover() const override {
+    return SetpointHandover{taken_.load(std::memory_order_relaxed), longest_poll()};
+  }
+
   [[nodiscard]] ModbusCounters counters() const { return counters_.snapshot(); }
   // Its I/O thread, for the caller's scheduling set-up.
   [[nodiscard]] IoThread& io_thread() { return thread_; }
@@ -88,6 +93,12 @@ class ModbusBackend final : public DisplacementSource,
 
  private:
   enum class Outcome { kOk, kDeviceRefused, kLinkFailed };
+  // A poll's period and its transactions (setpoint, LVDT, demand and counter, readback, load
+  // cell), each answered at the last moment: the longest a live thread blocks between beats.
+  static constexpr int kMaxTransactions = 6;
+  [[nodiscard]] Timestamp longest_poll() const {
+    return config_.poll_period + kMaxTransactions * (config_.response_timeout + config_.byte_timeout);
+  }
 
   void run();
   Outcome poll_once();
@@ -122,6 +133,7 @@ class ModbusBackend final : public DisplacementSource,
   std::optional<std::uint16_t> demand_counter_;
   std::uint32_t load_cell_sequence_ = 0;          // I/O thread only
 
+  std::atomic<std::uint64_t> taken_{0};  // setpoints the I/O thread took from setpoints_
   std::atomic<bool> connected_{false};
   std::atomic<int> last_errno_{0};
   EventCounters<ModbusEvent> counters_;

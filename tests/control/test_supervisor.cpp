@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <limits>
 
 namespace {
 
@@ -165,6 +166,91 @@ TEST(Supervisor, ConfigValidationNamesEachNewBadKey) {
   waits_for_nothing.require_readback = true;
   waits_for_nothing.readback_timeout_periods = 0;
   EXPECT_TRUE(waits_for_nothing.validate().mentions("require_readback"));
+}
+
+// Start-up with a link that takes a while (a Modbus device still booting): INIT waits as for a
+// missing sample, its queued fail-safe setpoint is no failed write, and RUN needs the link.
+SupervisorConfig linked(double timeout) {
+  SupervisorConfig c = quick();
+  c.link_timeout = timeout;
+  return c;
+}
+
+TEST(Supervisor, InitWaitsForTheLinkUpToItsTimeoutWithoutCountingFailedWrites) {
+  Clocked c{Supervisor(linked(0.010))};  // 10 periods of 1 ms, counted from the first step
+  const SupervisorInputs down{.sample = SampleCheck::kMissing, .link_down = true};
+  for (int i = 0; i < 5; ++i) ASSERT_EQ(c.step(down).state, SupervisorState::kInit) << "period " << i;
+  // Fresh samples (another bus) while the driver's link is still down, up to 1 ms short of the
+  // timeout: no RUN without the link.
+  const SupervisorInputs fresh_but_down{.link_down = true};
+  for (int i = 0; i < 5; ++i) ASSERT_EQ(c.step(fresh_but_down).state, SupervisorState::kInit);
+  EXPECT_EQ(c.step().state, SupervisorState::kRun);  // the good periods counted while it waited
+  EXPECT_EQ(c.sup.transitions().total(), 1u);
+  EXPECT_EQ(c.sup.transitions().into(SupervisorState::kSafe), 0u);
+}
+
+TEST(Supervisor, ALinkStillDownAtTheTimeoutIsSafeWithItsOwnTriggerAndRecoversOnceUp) {
+  Clocked c{Supervisor(linked(0.010))};
+  const SupervisorInputs down{.sample = SampleCheck::kMissing, .link_down = true};
+  // The first step is at 1 ms: the timeout is reached at 11 ms, the eleventh step.
+  for (int i = 0; i < 10; ++i) ASSERT_EQ(c.step(down).state, SupervisorState::kInit) << "period " << i;
+  const auto d = c.step(down);
+  EXPECT_EQ(d.state, SupervisorState::kSafe);
+  EXPECT_EQ(d.trigger, Trigger::kLinkTimeout);
+  EXPECT_FALSE(d.latched);
+  EXPECT_EQ(to_string(Trigger::kLinkTimeout), "link_timeout");
+  // Still down in SAFE: a failed write, so no recovery; once up, RUN after recovery_periods.
+  for (int i = 0; i < 10; ++i) ASSERT_EQ(c.step({.link_down = true}).state, SupervisorState::kSafe);
+  EXPECT_EQ(c.step().state, SupervisorState::kSafe);
+  EXPECT_EQ(c.step().state, SupervisorState::kSafe);
+  EXPECT_EQ(c.step().trigger, Trigger::kGoodPeriods);
+}
+
+TEST(Supervisor, PastInitALinkDownIsAFailedWrite) {
+  Clocked c{Supervisor(linked(0.010))};
+  while (c.step().state != SupervisorState::kRun) {
+  }
+  const SupervisorInputs down{.link_down = true};
+  EXPECT_EQ(c.step(down).trigger, Trigger::kSetpointWriteFailed);  // DEGRADED
+  EXPECT_EQ(c.step(down).state, SupervisorState::kDegraded);
+  const auto d = c.step(down);
+  EXPECT_EQ(d.state, SupervisorState::kSafe);
+  EXPECT_EQ(d.trigger, Trigger::kSetpointWriteFailed);
+}
+
+TEST(Supervisor, LinkTimeoutMustBeAPositiveFiniteTimeUpToAnHour) {
+  for (const double bad : {0.0, -1.0, 3600.5, std::numeric_limits<double>::quiet_NaN(),
+                           std::numeric_limits<double>::infinity()}) {
+    SupervisorConfig c;
+    c.link_timeout = bad;
+    EXPECT_TRUE(c.validate().mentions("link_timeout")) << bad;
+    EXPECT_EQ(c.validate().issues().size(), 1u) << bad;
+  }
+  SupervisorConfig longest;
+  longest.link_timeout = 3600.0;
+  EXPECT_TRUE(longest.validate().ok());
+}
+
+// The latch's window: driver_fault_limit driver-side SAFE entries latch when the last comes
+// less than driver_fault_window periods after the first; exactly the window apart they do not.
+bool latches_with_entries_apart(int periods_apart, int window) {
+  SupervisorConfig cfg = quick();
+  cfg.driver_fault_limit = 2;
+  cfg.driver_fault_window = window;
+  Clocked c{Supervisor(cfg)};
+  const SupervisorInputs fault{.driver_fault = true};
+  EXPECT_EQ(c.step(fault).trigger, Trigger::kDriverFault);  // INIT -> SAFE, period 1
+  for (int i = 1; i < periods_apart; ++i) c.step();          // RUN again after 3
+  EXPECT_EQ(c.sup.state(), SupervisorState::kRun);
+  const auto d = c.step(fault);                               // period 1 + periods_apart
+  EXPECT_EQ(d.state, SupervisorState::kSafe);
+  return d.latched;
+}
+
+TEST(Supervisor, DriverFaultsLatchOnlyWithinTheWindow) {
+  EXPECT_TRUE(latches_with_entries_apart(9, 10));
+  EXPECT_FALSE(latches_with_entries_apart(10, 10));
+  EXPECT_FALSE(latches_with_entries_apart(11, 10));
 }
 
 }  // namespace

@@ -39,6 +39,18 @@ TEST(SupervisorReaction, StaleRepeatedSampleIsTreatedLikeNoSample) {
   expect_recovery(r);
 }
 
+// A bus that delivers late: each sample new (its own sequence number) but stamped twice the
+// allowed age (stale_periods periods) before the cycle.
+TEST(SupervisorReaction, AnOldSampleWithANewSequenceNumberIsTreatedLikeNoSample) {
+  const double max_age = kLimits.stale_periods * std::chrono::duration<double>(LoopRig::kPeriod).count();
+  LoopRig rig(script_of(FaultKind::kOldTimestamp, 2.0 * max_age));
+  const Reaction r = react(rig);
+  EXPECT_EQ(r.degraded, kFaultStart);
+  EXPECT_EQ(r.safe, kFaultStart + kLimits.stale_periods);
+  expect_recovery(r);
+  EXPECT_EQ(rig.loop().supervisor().transitions().get(kDegraded, kSafe, Trigger::kSensorStale), 1u);
+}
+
 // A frozen LVDT: new frames, one value (the sensor or its converter stuck).
 TEST(SupervisorReaction, FrozenValueIsABadSampleAfterFrozenPeriodsRepeatsWhenChecked) {
   SupervisorConfig limits;
@@ -196,6 +208,32 @@ TEST(SupervisorReaction, ShutdownDrivesFailSafeCurrentAtOnceAndNeverRecovers) {
   rig.run_to(kFaultStart + 2 * limits.recovery_periods);
   EXPECT_EQ(rig.loop().state(), kSafe);
   EXPECT_EQ(rig.loop().supervisor().transitions().get(kRun, kSafe, Trigger::kShutdown), 1u);
+}
+
+// A non-zero fail-safe current ("passive on") with enable kept: driven from the first INIT period
+// and in every SAFE period of a fault, and control resumes from it under the slew limit.
+TEST(SupervisorReaction, ANonZeroFailSafeCurrentHoldsInInitAndThroughAFaultsSafe) {
+  SupervisorConfig limits;
+  limits.enable_in_safe = true;
+  limits.fail_safe_current = 0.3;
+  LoopRig rig(script_of(FaultKind::kSensorTimeout), limits);
+  EXPECT_EQ(rig.step(), kInit);
+  EXPECT_EQ(rig.hal().driver.last_setpoint(), 0.3);
+  EXPECT_TRUE(rig.hal().lines.enabled());
+  rig.run_to(kFaultStart);
+  ASSERT_EQ(rig.loop().state(), kRun);
+  ASSERT_GE(rig.run_until(kSafe), kFaultStart);
+  std::int64_t safe_periods = 1;
+  EXPECT_EQ(rig.hal().driver.last_setpoint(), 0.3);
+  while (rig.step() == kSafe) {
+    ++safe_periods;
+    ASSERT_EQ(rig.hal().driver.last_setpoint(), 0.3) << "cycle " << rig.cycle() - 1;
+    ASSERT_TRUE(rig.hal().lines.enabled());
+  }
+  EXPECT_GT(safe_periods, limits.recovery_periods);
+  ASSERT_EQ(rig.loop().state(), kRun);
+  // 100 A/s at 1 kHz: 0.1 A per period from the fail-safe current.
+  EXPECT_NEAR(rig.hal().driver.last_setpoint(), 0.3, 0.1 + 1e-9);
 }
 
 TEST(SupervisorReaction, ControlResumesFromTheFailSafeCurrentNotFromTheOldCommand) {

@@ -95,15 +95,6 @@ inline std::size_t expect_table4_followed(const HilResult& r) {
   return in_control;
 }
 
-// Every state change, for failure messages.
-inline std::string transitions(const HilResult& r) {
-  std::string out;
-  for (const auto& c : mrd::tools::state_changes(r.telemetry)) {
-    out += "  " + to_string(c) + " fault clock t " + std::to_string(c.time + r.offset - r.fault_origin) + "\n";
-  }
-  return out;
-}
-
 // No SAFE before the shutdown cycle.
 inline void expect_never_safe_before_shutdown(const HilResult& r) {
   for (std::size_t i = 0; i + 1 < r.telemetry.size(); ++i) {

@@ -1,10 +1,15 @@
 #include "tests/hil/hil_run.hpp"
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
 #include <signal.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <regex>
 
 #include "tests/hil/child_process.hpp"
@@ -27,6 +32,21 @@ void write_file(const std::filesystem::path& path, const std::string& text) {
   std::ofstream(path) << text;
 }
 
+// A port on 127.0.0.1 nothing listens on now (bound, read, released; libmodbus's listener
+// reuses the address).
+int free_tcp_port() {
+  const int fd = socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  if (fd < 0) return -1;
+  sockaddr_in a{};
+  a.sin_family = AF_INET;
+  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  socklen_t size = sizeof a;
+  const bool ok = bind(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) == 0 &&
+                  getsockname(fd, reinterpret_cast<sockaddr*>(&a), &size) == 0;
+  close(fd);
+  return ok ? ntohs(a.sin_port) : -1;
+}
+
 }  // namespace
 
 HilResult run_hil(const HilScenario& s) {
@@ -43,37 +63,62 @@ HilResult run_hil(const HilScenario& s) {
                                "\"\nlog = \"" + plant_log.string() + "\"\n" + s.plant_toml);
 
   std::vector<std::string> plant_args{binary("MRD_PLANT", MRD_PLANT_BINARY), "--config", plant_config.string()};
-  if (s.ephemeral_port) {
-    plant_args.insert(plant_args.end(), {"--port", "0"});
-  }
-  ChildProcess plant(plant_args);
-  if (!plant.started()) {
-    r.failure = "cannot start mrd-plant";
-    return r;
-  }
-  if (s.ephemeral_port) {
-    const auto port = plant.wait_for_line(std::regex(R"(modbus tcp [0-9.]+:(\d+))"), 10s);
-    if (!port) {
-      r.failure = "mrd-plant never listened:\n" + plant.output();
+  const std::vector<std::string> controller_args{binary("MRD_CONTROLLER", MRD_CONTROLLER_BINARY), "--config",
+                                                 controller_config.string(), "--duration",
+                                                 std::to_string(s.controller_duration), "--telemetry",
+                                                 telemetry.string()};
+  std::optional<ChildProcess> plant;
+  std::optional<ChildProcess> controller;
+  if (s.plant_delay >= 0.0) {
+    // The controller cannot be told a port the plant has not picked yet: the run picks it.
+    const int port = free_tcp_port();
+    if (port <= 0) {
+      r.failure = "no free TCP port";
       return r;
     }
-    // The controller reads the port the plant got; the rest of its config is unchanged.
-    write_file(controller_config, s.controller_toml + "\n[modbus.tcp]\nport = " + (*port)[1] + "\n");
+    write_file(controller_config, s.controller_toml + "\n[modbus.tcp]\nport = " + std::to_string(port) + "\n");
+    plant_args.insert(plant_args.end(), {"--port", std::to_string(port)});
+    controller.emplace(controller_args);
+    // The late start is the scenario, not a wait for an event: the controller's output is read
+    // meanwhile.
+    const auto plant_at = std::chrono::steady_clock::now() + std::chrono::duration<double>(s.plant_delay);
+    while (std::chrono::steady_clock::now() < plant_at &&
+           controller->read_for(std::chrono::ceil<std::chrono::milliseconds>(plant_at - std::chrono::steady_clock::now()))) {
+    }
+    plant.emplace(plant_args);
+    if (!plant->started()) {
+      r.failure = "cannot start mrd-plant";
+      return r;
+    }
+  } else {
+    if (s.ephemeral_port) plant_args.insert(plant_args.end(), {"--port", "0"});
+    plant.emplace(plant_args);
+    if (!plant->started()) {
+      r.failure = "cannot start mrd-plant";
+      return r;
+    }
+    if (s.ephemeral_port) {
+      const auto port = plant->wait_for_line(std::regex(R"(modbus tcp [0-9.]+:(\d+))"), 10s);
+      if (!port) {
+        r.failure = "mrd-plant never listened:\n" + plant->output();
+        return r;
+      }
+      // The controller reads the port the plant got; the rest of its config is unchanged.
+      write_file(controller_config, s.controller_toml + "\n[modbus.tcp]\nport = " + (*port)[1] + "\n");
+    }
+    if (!plant->wait_for_line(std::regex("mrd-plant: ready"), 10s)) {
+      r.failure = "mrd-plant never got ready:\n" + plant->output();
+      return r;
+    }
+    controller.emplace(controller_args);
   }
-  if (!plant.wait_for_line(std::regex("mrd-plant: ready"), 10s)) {
-    r.failure = "mrd-plant never got ready:\n" + plant.output();
-    return r;
-  }
-
-  ChildProcess controller({binary("MRD_CONTROLLER", MRD_CONTROLLER_BINARY), "--config", controller_config.string(), "--duration",
-                           std::to_string(s.controller_duration), "--telemetry", telemetry.string()});
-  if (s.while_running) r.observed = s.while_running(controller);
+  if (s.while_running) r.observed = s.while_running(*controller);
   const auto limit = std::chrono::milliseconds(static_cast<long>(s.controller_duration * 1000.0)) + 20s;
-  const auto controller_exit = controller.wait_exit(limit);
-  plant.signal(SIGTERM);
-  const auto plant_exit = plant.wait_exit(20s);
-  r.controller_output = controller.output();
-  r.plant_output = plant.output();
+  const auto controller_exit = controller->wait_exit(limit);
+  plant->signal(SIGTERM);
+  const auto plant_exit = plant->wait_exit(20s);
+  r.controller_output = controller->output();
+  r.plant_output = plant->output();
   if (!controller_exit || !plant_exit) {
     r.failure = "a process did not exit in time:\n--- controller\n" + r.controller_output +
                 "--- plant\n" + r.plant_output;
@@ -99,6 +144,19 @@ HilResult run_hil(const HilScenario& s) {
     r.failure = e.what();
   }
   return r;
+}
+
+std::string transitions(const HilResult& r) {
+  std::string out;
+  for (const auto& c : tools::state_changes(r.telemetry)) {
+    out += "  " + to_string(c) + " fault clock t " + std::to_string(c.time + r.offset - r.fault_origin) + "\n";
+  }
+  return out;
+}
+
+std::string diagnosis(const HilResult& r) {
+  return "transitions:\n" + transitions(r) + "--- controller\n" + r.controller_output + "--- plant\n" +
+         r.plant_output;
 }
 
 }  // namespace mrd::test

@@ -22,6 +22,9 @@ struct HilScenario {
   bool ephemeral_port = true;       // Modbus TCP: the plant picks a port, the controller is told
   // Called while the controller runs (e.g. to watch GPIO lines); its text lands in `observed`.
   std::function<std::string(ChildProcess&)> while_running;
+  // >= 0: the controller starts first and the plant this long after it [s] (Modbus TCP, on a
+  // port the run picks); < 0: the plant first, the controller once it serves.
+  double plant_delay = -1.0;
 };
 
 struct HilResult {
@@ -45,6 +48,13 @@ struct HilResult {
 // Starts the plant, waits until it serves, runs the controller for its duration, stops the
 // plant, and reads both files. Bounded waits throughout.
 HilResult run_hil(const HilScenario& scenario);
+
+// Every state change, for failure messages.
+std::string transitions(const HilResult& r);
+
+// What a failed expectation on a run prints: the supervisor's transitions and both processes'
+// output (SCOPED_TRACE(diagnosis(r)) in each test).
+std::string diagnosis(const HilResult& r);
 
 // Consecutive rows ending at `index` (inclusive, going back) for which `pred` holds.
 template <typename Pred>

@@ -40,6 +40,7 @@ std::string plant_toml() {
 
 TEST(HilForceLoadCell, TheScaleMovesTowardTheDriftedPlantsYieldRatio) {
   const HilResult r = run_hil({"force_load_cell", controller_toml(), plant_toml(), 6.0, true, {}});
+  SCOPED_TRACE(diagnosis(r));
   expect_clean_run(r, 6.0, kRate);
   double last_scale = 1.0;
   std::size_t in_run = 0;

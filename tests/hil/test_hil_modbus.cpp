@@ -65,6 +65,7 @@ HilResult run(const std::string& name, const std::string& faults, double duratio
 
 TEST(HilModbus, Table4SineRunsWithTheScheduleFollowedAndNoRecordLost) {
   const HilResult r = run("nominal", "");
+  SCOPED_TRACE(diagnosis(r));
   expect_clean_run(r, 4.0, kRate);
   const std::size_t run_at = expect_first_run(r, safety());
 
@@ -127,11 +128,76 @@ TEST(HilModbus, Table4SineRunsWithTheScheduleFollowedAndNoRecordLost) {
   RecordProperty("lag_ms", std::to_string(j.lag * 1e3));
 }
 
+// The plant (the Modbus device) started after the controller. The back-off is capped at 0.1 s
+// here so that the link comes up soon after the plant listens (the back-off is not under test).
+HilResult run_late(const std::string& name, double plant_delay, double duration) {
+  return mrd::test::run_hil({.name = name,
+                             .controller_toml = std::regex_replace(controller_toml(), std::regex("\\[modbus\\]\n"),
+                                                                   "[modbus]\nreconnect_max = 0.1\n"),
+                             .plant_toml = "[profile]\nkind = \"sine\"\namplitude = 0.040\nfrequency = 0.5\n",
+                             .controller_duration = duration,
+                             .plant_delay = plant_delay});
+}
+
+// 30 ms and 0.5 s late are within safety.link_timeout (2 s by default): INIT waits as for a
+// missing sample, then RUN after exactly recovery_periods fresh periods; no SAFE, and the
+// setpoints queued while the link was down are no failed writes.
+void expect_late_plant_waited_for(const HilResult& r, double duration) {
+  ASSERT_NO_FATAL_FAILURE(expect_clean_run(r, duration, kRate));
+  expect_first_run(r, safety());
+  expect_never_safe_before_shutdown(r);
+  EXPECT_EQ(r.controller_output.find("setpoint_write_failed"), std::string::npos);
+}
+
+TEST(HilModbus, PlantStarted30msLateIsWaitedForInInit) {
+  const HilResult r = run_late("late_30ms", 0.030, 2.5);
+  SCOPED_TRACE(diagnosis(r));
+  expect_late_plant_waited_for(r, 2.5);
+}
+
+TEST(HilModbus, PlantStartedHalfASecondLateIsWaitedForInInit) {
+  const HilResult r = run_late("late_500ms", 0.5, 3.0);
+  SCOPED_TRACE(diagnosis(r));
+  ASSERT_NO_FATAL_FAILURE(expect_late_plant_waited_for(r, 3.0));
+  // The wait was real: the first periods had no sample.
+  EXPECT_GE(run_length_before(r.telemetry, 10, no_sample), 11u);
+}
+
+// 3 s late exceeds the default link_timeout of 2 s: SAFE (link_timeout) at the first period 2 s
+// or more after the first, and RUN once the link is up and recovery_periods good periods passed.
+TEST(HilModbus, PlantStartedThreeSecondsLateTripsLinkTimeoutThenRuns) {
+  const double timeout = mrd::control::SupervisorConfig{}.link_timeout;
+  ASSERT_LT(timeout, 3.0) << "the test's premise: the default times out before the plant starts";
+  const HilResult r = run_late("late_3s", 3.0, 5.0);
+  SCOPED_TRACE(diagnosis(r));
+  ASSERT_NO_FATAL_FAILURE(expect_clean_run(r, 5.0, kRate));
+  const std::size_t safe = first_in(r, SupervisorState::kSafe, -1e9);
+  ASSERT_LT(safe, r.telemetry.size()) << "never went SAFE";
+  ASSERT_GT(safe, 0u);
+  EXPECT_EQ(r.telemetry[safe].trigger, Trigger::kLinkTimeout);
+  EXPECT_EQ(r.telemetry[safe - 1].state, SupervisorState::kInit);
+  const double t0 = r.telemetry.front().time;
+  EXPECT_LT(r.telemetry[safe - 1].time - t0, timeout - 1e-9);
+  EXPECT_GE(r.telemetry[safe].time - t0, timeout - 1e-9);
+  EXPECT_NE(r.controller_output.find("INIT -> SAFE (link_timeout): 1"), std::string::npos);
+  // A start-up matter, not the driver's: no latch, and RUN once the plant answers.
+  std::size_t back = safe;
+  while (back < r.telemetry.size() && r.telemetry[back].state == SupervisorState::kSafe) ++back;
+  ASSERT_LT(back, r.telemetry.size()) << "never left SAFE";
+  EXPECT_EQ(r.telemetry[back].state, SupervisorState::kRun);
+  EXPECT_EQ(r.telemetry[back].trigger, Trigger::kGoodPeriods);
+  EXPECT_FALSE(r.telemetry[back - 1].latched);
+  expect_recovery_length(r, back, safety());
+  EXPECT_GE(r.telemetry[back].time - t0, 3.0);
+  expect_table4_followed(r);
+}
+
 // The server takes requests but answers none for 0.5 s: the loop gets no sample, DEGRADED at
 // once, SAFE (sensor_stale) after more than stale_periods periods without one, and RUN again
 // recovery_periods good periods after the answers return.
 TEST(HilModbus, ServerStallTripsSafeAfterStalePeriodsAndRecovers) {
   const HilResult r = run("stall", "[faults.stall]\nkind = \"server_stall\"\nstart = 2.0\nduration = 0.5\n", 5.0);
+  SCOPED_TRACE(diagnosis(r));
   expect_clean_run(r, 5.0, kRate);
   expect_first_run(r, safety());
   const std::size_t safe = first_in(r, SupervisorState::kSafe, 2.0);
@@ -155,6 +221,7 @@ TEST(HilModbus, ServerStallTripsSafeAfterStalePeriodsAndRecovers) {
 // fail and samples stop; SAFE within stale_periods + 1 periods, RUN again after the reconnect.
 TEST(HilModbus, ServerRestartTripsSafeAndTheControllerReconnects) {
   const HilResult r = run("restart", "[faults.restart]\nkind = \"server_restart\"\nstart = 2.0\nduration = 0.3\n", 5.0);
+  SCOPED_TRACE(diagnosis(r));
   expect_clean_run(r, 5.0, kRate);
   expect_first_run(r, safety());
   const std::size_t safe = first_in(r, SupervisorState::kSafe, 2.0);
@@ -176,6 +243,7 @@ TEST(HilModbus, ServerRestartTripsSafeAndTheControllerReconnects) {
 // than stale_periods in a row: no SAFE.
 TEST(HilModbus, SlowResponsesDegradeWithoutTrippingSafe) {
   const HilResult r = run("slow", "[faults.slow]\nkind = \"delay\"\nvalue = " + std::to_string(1.5 * kPeriod) + "\nstart = 2.0\nduration = 1.0\n", 4.5);
+  SCOPED_TRACE(diagnosis(r));
   expect_clean_run(r, 4.5, kRate);
   expect_first_run(r, safety());
   std::size_t degraded = 0;
@@ -198,6 +266,7 @@ TEST(HilModbus, SlowResponsesDegradeWithoutTrippingSafe) {
 // An out-of-range LVDT value trips SAFE after bad_sample_periods periods.
 TEST(HilModbus, OutOfRangeLvdtTripsSafeAfterBadSamplePeriods) {
   const HilResult r = run("range", "[faults.range]\nkind = \"lvdt_out_of_range\"\nvalue = 0.060\nstart = 2.0\nduration = 0.2\n", 5.0);
+  SCOPED_TRACE(diagnosis(r));
   expect_clean_run(r, 5.0, kRate);
   expect_first_run(r, safety());
   const std::size_t safe = first_in(r, SupervisorState::kSafe, 2.0);
@@ -242,6 +311,7 @@ TEST(HilModbus, ForceModeFollowsThePlantsDemandAndAStaleDemandTripsSafe) {
            "\n[profile]\nkind = \"sine\"\namplitude = 0.040\nfrequency = 0.5\n"
            "[faults.quiet]\nkind = \"demand_stale\"\nstart = 2.0\n",
        4.0, true, {}});
+  SCOPED_TRACE(diagnosis(r));
   ASSERT_NO_FATAL_FAILURE(expect_processes_ran(r));
   const auto& safety = force_safety();
   const std::size_t run_at = expect_first_run(r, safety, fresh_with_demand);
@@ -334,6 +404,7 @@ TEST(HilModbus, Table4SineOverRtuOnAPty) {
   const std::string toml = loop_toml("rtu") + "[modbus.rtu]\ndevice = \"" + device.string() + "\"\n";
   const HilResult r = mrd::test::run_hil(
       {"rtu", toml, "rate = 1000.0\n[profile]\nkind = \"sine\"\namplitude = 0.040\nfrequency = 0.5\n", 4.0, false, {}});
+  SCOPED_TRACE(diagnosis(r));
   expect_clean_run(r, 4.0, kRate);
   const auto rtu_safety = mrd::config::load_config_text(toml, "rtu").config.safety;
   expect_first_run(r, rtu_safety);

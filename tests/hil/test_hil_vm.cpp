@@ -198,6 +198,7 @@ TEST_F(HilVm, Table4SineOverVcanWithGpioSimLinesAndAFaultPull) {
     return std::string();
   });
   pull(fault_line(), false);
+  SCOPED_TRACE(diagnosis(r));
   expect_clean_run(r, 5.0, kRate);
   expect_first_run(r, safety());
   EXPECT_TRUE(w.enabled) << "enable never went high on gpio-sim";
@@ -257,6 +258,7 @@ TEST_F(HilVm, CanFaultsTripTheDocumentedReactions) {
                           "[faults.busoff]\nkind = \"bus_off\"\nstart = 8.0\nduration = 0.1\n"
                           "[faults.frozen]\nkind = \"lvdt_frozen\"\nstart = 9.8\nduration = 0.5\n",
                           11.3);
+  SCOPED_TRACE(diagnosis(r));
   expect_clean_run(r, 11.3, kRate);
   expect_first_run(r, safety());
   ASSERT_NE(r.plant_output.find("the first command"), std::string::npos) << r.plant_output;
@@ -363,6 +365,7 @@ TEST_F(HilVm, ForceModeOverVcanTripsSafeWhenTheDemandStops) {
                                "[profile]\nkind = \"sine\"\namplitude = 0.040\nfrequency = 0.5\n"
                                "[faults.quiet]\nkind = \"demand_stale\"\nstart = 1.0\n",
                                2.0, false, {}});
+  SCOPED_TRACE(diagnosis(r));
   ASSERT_NO_FATAL_FAILURE(expect_processes_ran(r));
   const std::size_t run_at = expect_first_run(r, force_safety, fresh_with_demand);
   // The demand was c v, not the idle 0: the sine's peak c v is 31.4 kN.

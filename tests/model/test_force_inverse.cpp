@@ -214,6 +214,27 @@ TEST(ForceInverse, ClipsANonDissipativeDemandToTheLeastForce) {
   }
 }
 
+// The semi-active clip's edge, period by period: a demand 2 % above the least force the motion
+// gives (zero field) is followed unclipped, 2 % below it is clipped to that least force, and so is
+// the same force against the motion's sign; both directions of travel.
+TEST(ForceInverse, TheClipLiesAtTheLeastForceOfTheMotionInBothDirections) {
+  const DamperModel m;
+  const mrd::model::BinghamDamper bingham(m.geometry, m.fluid.viscosity);
+  const double zero_field_stress = 1083.2 * m.fluid.volume_fraction - 287.03;
+  for (const double v : {0.05, -0.05}) {
+    const double least = bingham.force(v, zero_field_stress);
+    ASSERT_GT(least * v, 0.0);
+    const auto clipped = [&](double force) {
+      Observer law(m);
+      ForceInverse inverse(law, bipolar());
+      return inverse.step({.force = force, .velocity = v}, law).clipped;
+    };
+    EXPECT_FALSE(clipped(1.02 * least)) << v;
+    EXPECT_TRUE(clipped(0.98 * least)) << v;
+    EXPECT_TRUE(clipped(-least)) << v;
+  }
+}
+
 // Above the yield force of the maximum current: clipped to it, and the current goes to the
 // top and stays there.
 TEST(ForceInverse, ClipsADemandAboveTheMaximumYieldForce) {

@@ -88,6 +88,30 @@ TEST(ServiceNotifier, ReadyFirstThenWatchdogOnlyWhileCyclesAdvance) {
   EXPECT_EQ(systemd.messages(), std::vector<std::string>{"WATCHDOG=1"});
 }
 
+// A hung bus thread: the loop still cycles (SAFE, its setpoints going nowhere), so the cycle
+// count alone would feed the watchdog; the stall withholds it, and STATUS= says why.
+TEST(ServiceNotifier, AStalledBusThreadStarvesTheWatchdogWhileTheLoopCycles) {
+  mrd::test::FakeNotifySocket systemd;
+  ASSERT_TRUE(systemd.ok());
+  const WatchdogEnv env("1000000");
+  ServiceNotifier notifier(std::chrono::seconds(10));
+  notifier.ready(status(0, SupervisorState::kInit), milliseconds(0));
+  systemd.messages();
+  ServiceStatus stalled = status(500, SupervisorState::kSafe);
+  stalled.bus_stalled = true;
+  EXPECT_EQ(format_status(stalled),
+            "SAFE, bus thread stalled, 1000 Hz, wake-up p99 42.1 us, overruns 2, cycles 500");
+  for (int t = 500; t <= 2000; t += 100) {
+    stalled.cycles = static_cast<std::uint64_t>(t);
+    notifier.tick(milliseconds(t), stalled);
+  }
+  EXPECT_TRUE(only(systemd.messages(), "WATCHDOG=").empty());
+  EXPECT_EQ(notifier.watchdog_kicks(), 0u);
+  EXPECT_GT(notifier.withheld_kicks(), 0u);
+  notifier.tick(milliseconds(2100), status(2100));  // the thread moves again
+  EXPECT_EQ(systemd.messages(), std::vector<std::string>{"WATCHDOG=1"});
+}
+
 TEST(ServiceNotifier, StatusEveryPeriodAndStoppingAtTheEnd) {
   mrd::test::FakeNotifySocket systemd;
   ServiceNotifier notifier(std::chrono::seconds(1));  // no WATCHDOG_USEC: no watchdog

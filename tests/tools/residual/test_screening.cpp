@@ -54,6 +54,61 @@ mrd::record::RecordedRun with_faulted_end(mrd::record::RecordedRun run, double s
   return run;
 }
 
+// A 1 kHz run whose force climbs at `slope` N per sample to a peak it holds for `plateau`
+// samples, then falls at the same slope; elsewhere it steps by 1 N (its resolution q). The
+// displacement moves throughout.
+mrd::record::RecordedRun peaked_run(std::size_t plateau, double slope) {
+  mrd::record::RecordedRun run;
+  run.sample_rate = 1000.0;
+  double f = 0.0;
+  const auto add = [&](double step, std::size_t n) {
+    for (std::size_t k = 0; k < n; ++k) {
+      f += step;
+      run.force.push_back(f);
+    }
+  };
+  add(1.0, 100);
+  add(slope, 20);
+  add(0.0, plateau - 1);  // with the last climb's sample: `plateau` at the peak
+  add(-slope, 20);
+  add(-1.0, 100);
+  for (std::size_t i = 0; i < run.force.size(); ++i) {
+    run.time.push_back(static_cast<double>(i) * 1e-3);
+    run.displacement.push_back(1e-4 * static_cast<double>(i));
+  }
+  return run;
+}
+
+bool clipped_force(const Screening& s) {
+  return std::ranges::any_of(s.spans, [](const ScreenedSpan& span) {
+    return span.channel == "force" && span.reason == ScreenReason::kClipped;
+  });
+}
+
+// min_flat (8) samples at a peak cut at speed are a clip; one fewer is no flat run at all.
+TEST(Screening, AClipOfExactlyTheMinimumRunLengthIsFoundAndOneShorterIsNot) {
+  ASSERT_EQ(ScreeningOptions{}.min_flat, 8u);
+  const Screening eight = screen_run(peaked_run(8, 5.0));
+  EXPECT_TRUE(clipped_force(eight)) << describe(eight);
+  ASSERT_EQ(eight.spans.size(), 1u) << describe(eight);
+  // The peak's samples 119-126, and the margin either side.
+  EXPECT_LE(eight.spans[0].first, 119u);
+  EXPECT_GE(eight.spans[0].last, 126u);
+  EXPECT_LE(eight.spans[0].last - eight.spans[0].first, 8u + 12u);
+  const Screening seven = screen_run(peaked_run(7, 5.0));
+  EXPECT_TRUE(seven.spans.empty()) << describe(seven);
+}
+
+// Short clips: the signal, continued at the slope it had outside, would have left the level
+// by more than 8 resolution steps over the plateau's length. Exactly 8 is a natural peak's
+// flattening; a little more is a cut.
+TEST(Screening, AShortClipIsCutAtSpeedBeyondEightResolutionStepsOverItsLength) {
+  EXPECT_TRUE(clipped_force(screen_run(peaked_run(8, 1.25))));  // 10 q
+  EXPECT_TRUE(clipped_force(screen_run(peaked_run(9, 1.0))));   // 9 q
+  const Screening natural = screen_run(peaked_run(8, 1.0));     // 8 q
+  EXPECT_FALSE(clipped_force(natural)) << describe(natural);
+}
+
 TEST(Screening, CleanSimulatedRunsLoseNothing) {
   for (const RunProfile p : {RunProfile::kTable4, RunProfile::kTelegraph, RunProfile::kSine}) {
     for (const char* damper : {"1kN", "50kN"}) {
