@@ -5,9 +5,12 @@
 
 #include <cstdint>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <mutex>
 
 #include "record/csv.hpp"
+#include "record/mat_v5_check.hpp"
 
 namespace mrd::record {
 
@@ -83,6 +86,14 @@ struct MatFile::Handle {
 
 MatFile::MatFile(const std::string& path) : path_(path), handle_(std::make_unique<Handle>()) {
   quiet_libraries();
+  {
+    std::ifstream file(path, std::ios::binary);
+    if (!file) throw InputError(path + ": cannot open the file");
+    const std::string bytes{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+    if (const std::string why = check_mat_v5_structure(bytes, kMaxMatElements * sizeof(double) + (1 << 20));
+        !why.empty())
+      throw InputError(path + ": a damaged .mat file: " + why);
+  }
   last_complaint.clear();
   handle_->mat = Mat_Open(path.c_str(), MAT_ACC_RDONLY);
   if (handle_->mat == nullptr)

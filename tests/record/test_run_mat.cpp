@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "record/csv.hpp"
+#include "record/mat_v5_check.hpp"
 #include "record/run_csv.hpp"
 #include "record/run_mat.hpp"
 #include "record/run_reader.hpp"
@@ -206,6 +207,36 @@ TEST(RunFormatsErrors, MatErrorsNameTheFileTheVariableAndTheFault) {
   EXPECT_EQ(mat_error_of({I, data}, with_columns("data:1=displacement_mm,I=current_A")),
             file + ": no time: expected a time_s or time_ms vector, a sample_time_s or sample_rate_Hz scalar, or "
                    "--sample-rate");
+}
+
+// Found by fuzz_run_mat: a dimensions tag declaring 4 GB made libmatio allocate 8 GB before
+// reading a byte of it. The structure is checked first; the same file with the tag's true size
+// reads. Also a cell array that claims more cells than it holds, and a compressed variable.
+TEST(RunFormatsErrors, ATagLargerThanItsFileIsRefusedBeforeLibmatioAllocatesIt) {
+  const std::string path = scratch("tags.mat").string();
+  ASSERT_TRUE(write_mat(path, MatVersion::kV5, {vector_var("time_s", {0, 1}), vector_var("displacement_mm", {1, 2}),
+                                                vector_var("current_A", {0, 0})}));
+  const std::string good = mrd::record::read_text_file(path);
+  EXPECT_EQ(mrd::record::check_mat_v5_structure(good, 1 << 20), "");
+  std::string bad = good;
+  const std::size_t dims_tag = 128 + 8 + 16;  // after the first matrix's tag and array flags
+  ASSERT_EQ(bad[dims_tag], '\x05');            // miINT32, the dimensions
+  bad.replace(dims_tag + 4, 4, "\xff\xff\xff\xff");
+  EXPECT_EQ(mrd::record::check_mat_v5_structure(bad, 1 << 20),
+            "element at byte 128: a rank of 1073741823 (1 to 32 fit)");
+  ASSERT_TRUE(mrd::record::write_text_file(path, bad));
+  EXPECT_EQ(input_error_of([&] { (void)mrd::record::read_recorded_run(path); }),
+            path + ": a damaged .mat file: element at byte 128: a rank of 1073741823 (1 to 32 fit)");
+
+  std::string cells = good;
+  cells[128 + 16] = '\x01';  // the first variable's class: a cell array of 2 cells, holding none
+  EXPECT_EQ(mrd::record::check_mat_v5_structure(cells, 1 << 20),
+            "element at byte 128: a cell array or struct of 2 elements holds 0 matrices");
+
+  ASSERT_TRUE(write_mat(path, MatVersion::kV5Compressed, {vector_var("time_s", {0, 1, 2, 3})}));
+  const std::string compressed = mrd::record::read_text_file(path);
+  EXPECT_EQ(mrd::record::check_mat_v5_structure(compressed, 1 << 20), "");
+  EXPECT_EQ(mrd::record::check_mat_v5_structure(compressed, 16), "element at byte 128: inflates to more than 16 bytes");
 }
 
 TEST(RunFormatsErrors, NotAMatFileThoughItsHeaderSaysSo) {
