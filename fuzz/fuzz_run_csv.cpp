@@ -1,7 +1,8 @@
-// libFuzzer target: the recorded-run CSV reader (tools/replay/run_csv). Any text, read as the
-// project's own format, through a column mapping by name or by position, or with a constant
-// current and a sample rate. The only acceptable failure is InputError; a run it accepts must
-// pass check_run.
+// libFuzzer target: the recorded-run reader on text (record/run_reader: parse_recorded_run, which
+// hands delimited text to parse_run_csv). Any text, read as the project's own format, through a
+// column mapping by name or by position, or with a constant current and a sample rate; the
+// delimiter (comma, semicolon with decimal commas, tab, blanks) comes from the first line. The
+// only acceptable failure is InputError; a run it accepts must pass check_run.
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
@@ -9,7 +10,7 @@
 #include "fuzz/run_invariants.hpp"
 #include "record/csv.hpp"
 #include "record/run_columns.hpp"
-#include "record/run_csv.hpp"
+#include "record/run_reader.hpp"
 
 namespace {
 
@@ -41,7 +42,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const auto options = options_for(data[0]);
   const std::string_view text(reinterpret_cast<const char*>(data) + 1, size - 1);
   try {
-    mrd::fuzz::check_run(mrd::record::parse_run_csv(text, "fuzz.csv", options));
+    mrd::fuzz::check_run(mrd::record::parse_recorded_run(text, "fuzz.csv", options));
   } catch (const mrd::record::InputError&) {
   }
   return 0;

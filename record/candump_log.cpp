@@ -67,7 +67,7 @@ class CandumpParser {
   }
 
   void read_line(std::string_view line) {
-    const auto tokens = split_csv_line(line, true);
+    const auto tokens = split_csv_line(line, Delimiter::kBlanks);
     const double time = read_timestamp(tokens[0]);
     const std::string_view stamp = tokens[0].substr(1, tokens[0].size() - 2);
     if (tokens.size() < 2) throw fail("interface", "missing: expected '(time) interface id#data'");

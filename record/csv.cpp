@@ -85,9 +85,15 @@ std::string read_text_file(const std::string& path) {
   return text;
 }
 
-std::vector<std::string_view> split_csv_line(std::string_view line, bool whitespace_separated) {
+Delimiter find_delimiter(std::string_view line) {
+  for (const Delimiter d : {Delimiter::kSemicolon, Delimiter::kComma, Delimiter::kTab})
+    if (line.find(static_cast<char>(d)) != std::string_view::npos) return d;
+  return Delimiter::kBlanks;
+}
+
+std::vector<std::string_view> split_csv_line(std::string_view line, Delimiter delimiter) {
   std::vector<std::string_view> fields;
-  if (whitespace_separated) {
+  if (delimiter == Delimiter::kBlanks) {
     std::size_t i = 0;
     while (i < line.size()) {
       while (i < line.size() && is_blank(line[i])) ++i;
@@ -97,12 +103,13 @@ std::vector<std::string_view> split_csv_line(std::string_view line, bool whitesp
     }
     return fields;
   }
+  const char separator = static_cast<char>(delimiter);
   std::size_t start = 0;
   while (true) {
-    const std::size_t comma = line.find(',', start);
-    fields.push_back(trim(line.substr(start, comma == std::string_view::npos ? comma : comma - start)));
-    if (comma == std::string_view::npos) break;
-    start = comma + 1;
+    const std::size_t end = line.find(separator, start);
+    fields.push_back(trim(line.substr(start, end == std::string_view::npos ? end : end - start)));
+    if (end == std::string_view::npos) break;
+    start = end + 1;
   }
   if (fields.size() > 1 && fields.back().empty()) fields.pop_back();
   return fields;
@@ -115,9 +122,16 @@ std::string_view unquote(std::string_view field) {
   return field;
 }
 
-std::optional<double> parse_finite(std::string_view field) {
+std::optional<double> parse_finite(std::string_view field, bool decimal_comma) {
   field = trim(field);
   if (!field.empty() && field.front() == '+') field.remove_prefix(1);
+  std::string swapped;  // only for a decimal comma: from_chars reads a point
+  if (decimal_comma && field.find(',') != std::string_view::npos) {
+    if (field.find('.') != std::string_view::npos) return std::nullopt;
+    swapped = field;
+    swapped[swapped.find(',')] = '.';
+    field = swapped;
+  }
   double value = 0.0;
   const auto [end, ec] = std::from_chars(field.data(), field.data() + field.size(), value);
   if (ec != std::errc{} || end != field.data() + field.size() || !std::isfinite(value)) {

@@ -52,17 +52,24 @@ std::string read_text_file(const std::string& path);
 // Writes `text` to `path`, replacing the file; false when it cannot.
 bool write_text_file(const std::string& path, const std::string& text);
 
-// Splits one CSV line on `separator` (',' or, when whitespace_separated, runs of blanks),
-// trimming blanks and a trailing '\r'. A trailing separator yields no extra empty field,
-// since some instruments end every line with one.
-std::vector<std::string_view> split_csv_line(std::string_view line, bool whitespace_separated = false);
+// What separates the fields of a line: one character, or runs of blanks (spaces and tabs).
+enum class Delimiter : char { kComma = ',', kSemicolon = ';', kTab = '\t', kBlanks = ' ' };
+
+// The delimiter a file's header (or first) line uses: a semicolon where it has one (spreadsheets
+// where the comma is the decimal point), else a comma, else a tab, else blanks.
+[[nodiscard]] Delimiter find_delimiter(std::string_view line);
+
+// Splits one line on `delimiter`, trimming blanks and a trailing '\r' from each field. A
+// trailing delimiter yields no extra empty field, since some instruments end every line with one.
+std::vector<std::string_view> split_csv_line(std::string_view line, Delimiter delimiter = Delimiter::kComma);
 
 // The field without one pair of surrounding double quotes ("t" -> t), as spreadsheet and
 // MATLAB exports write header names.
 std::string_view unquote(std::string_view field);
 
-// The whole field must be a finite decimal number; nullopt otherwise.
-std::optional<double> parse_finite(std::string_view field);
+// The whole field must be a finite decimal number; nullopt otherwise. With decimal_comma, the
+// one decimal separator is a comma ("0,25"), as semicolon-delimited exports write it.
+std::optional<double> parse_finite(std::string_view field, bool decimal_comma = false);
 
 // "file:line: column 'name': message", the one shape every input error takes.
 std::string input_error_message(std::string_view file, std::size_t line, std::string_view column,

@@ -29,6 +29,10 @@ constexpr std::array kUnits{
     ColumnUnit{RunQuantity::kFluxDensity, "B_mT", 1e-3},
     ColumnUnit{RunQuantity::kTemperature, "temperature_C", 1.0},
     ColumnUnit{RunQuantity::kTemperature, "temperature_K", 1.0, -273.15},
+    ColumnUnit{RunQuantity::kSampleTime, "sample_time_s", 1.0},
+    ColumnUnit{RunQuantity::kSampleTime, "sample_time_ms", 1e-3},
+    ColumnUnit{RunQuantity::kSampleRate, "sample_rate_Hz", 1.0},
+    ColumnUnit{RunQuantity::kSampleRate, "sample_rate_kHz", 1e3},
 };
 
 // "a, b or c"
@@ -63,6 +67,8 @@ std::string_view to_string(RunQuantity q) {
     case RunQuantity::kVelocity: return "velocity";
     case RunQuantity::kFluxDensity: return "B";
     case RunQuantity::kTemperature: return "temperature";
+    case RunQuantity::kSampleTime: return "sample time";
+    case RunQuantity::kSampleRate: return "sample rate";
   }
   return "unknown";
 }

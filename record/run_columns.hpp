@@ -18,6 +18,9 @@ enum class RunQuantity : std::uint8_t {
   kVelocity,
   kFluxDensity,
   kTemperature,
+  // A .mat file's scalars that give the time where the run has no time vector.
+  kSampleTime,
+  kSampleRate,
 };
 [[nodiscard]] std::string_view to_string(RunQuantity q);
 

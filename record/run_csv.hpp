@@ -8,7 +8,9 @@
 
 namespace mrd::record {
 
-// Reads a run from delimited text: commas when the first line has one, otherwise blanks.
+// Reads a run from delimited text, split on the delimiter its first line uses (find_delimiter:
+// semicolon, comma, tab, else blanks); in a semicolon file a number may have a decimal comma.
+// CRLF line ends and a UTF-8 byte-order mark are accepted.
 //
 // - The project's own format: a header naming every column with its unit (time_s,
 //   displacement_mm, current_A or voltage_V, force_N or force_kN, velocity_mm_s, B_T, temperature_C, ...;
@@ -18,8 +20,9 @@ namespace mrd::record {
 //   position for files without a header.
 //
 // Every row has as many fields as the header (or the first row). Each used cell must be a
-// finite number; time must increase from row to row. Blank lines are skipped. A bad file
-// throws InputError "file:line: column 'name': message", the first problem found.
+// number; an empty, nan or inf cell, a repeated row and a time that does not increase set their
+// row aside (RunAssembler). Blank lines are skipped. A bad file throws InputError
+// "file:line: column 'name': message", the first problem found.
 RecordedRun parse_run_csv(std::string_view text, const std::string& name,
                           const RunReadOptions& options = {});
 

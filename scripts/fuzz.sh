@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-30}
 shift || true
 targets=("$@")
-((${#targets[@]})) || targets=(run_csv candump config can_codec register_codec bh_curve)
+((${#targets[@]})) || targets=(run_csv run_mat candump config can_codec register_codec bh_curve)
 jobs=${FUZZ_JOBS:-1}
 
 cmake --preset fuzz >/dev/null

@@ -7,6 +7,7 @@ packages=(
   # libboost-dev: Boost.Lockfree for the rings; Boost.Odeint for the tests' J-A reference.
   libeigen3-dev libboost-dev libmodbus-dev libgpiod-dev libtomlplusplus-dev libcli11-dev
   nlohmann-json3-dev  # the host tools' JSON (header-only, Multi-Arch foreign)
+  libmatio-dev    # MATLAB .mat runs (record/; HDF5 for v7.3); host only, docs/DEPLOY.md
   libsystemd-dev  # sd_notify: the unit's Type=notify and watchdog
   rt-tests        # cyclictest, the reference of scripts/bench-loop.sh
   libpagmo-dev

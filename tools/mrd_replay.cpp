@@ -35,8 +35,8 @@ int main(int argc, char** argv) {
   ReplayOptions replay_options;
   app.add_option(
          "run", run_path,
-         "the run: the project's CSV (header names units), a foreign CSV with --columns, or a "
-         "candump -l log")
+         "the run: the project's CSV (header names units), a foreign delimited file or MATLAB .mat "
+         "file with --columns, or a candump -l log")
       ->required();
   RunOptionsCli run_options;
   run_options.add_to(app);

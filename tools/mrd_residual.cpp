@@ -37,7 +37,8 @@ int main(int argc, char** argv) {
   FitSeriesOptions series_options;
   ResidualOptions options;
   app.add_option("runs", run_paths,
-                 "one run, or several analysed together (one model for all, e.g. tests at several currents)")
+                 "one run, or several analysed together (one model for all, e.g. tests at several currents): "
+                 "delimited text, a MATLAB .mat file or a candump -l log, as mrd-replay reads them")
       ->required();
   RunOptionsCli run_options;
   run_options.add_to(app);

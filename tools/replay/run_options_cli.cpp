@@ -11,8 +11,12 @@ namespace mrd::tools {
 void RunOptionsCli::add_to(CLI::App& app) {
   app.add_option("--columns", columns_,
                  "map a foreign file's columns: t=time_s,D=displacement_cm,... by header name, or "
-                 "1=time_s,2=displacement_mm,... by position (no header); units: " +
-                     record::known_unit_names())
+                 "1=time_s,2=displacement_mm,... by position (no header). Text is split on the delimiter "
+                 "its header uses (';' then decimal commas are read, ',', tab, or blanks). In a MATLAB .mat "
+                 "file (v5, v7.3) the names are variables, a matrix column is name:k (data:2=force_N), "
+                 "and Ts=sample_time_s or fs=sample_rate_Hz names a scalar that gives the time where "
+                 "there is no time vector; without --columns the variables named by unit are read. "
+                 "Units: " + record::known_unit_names())
       ->check(CLI::Validator(
           [](std::string& text) {
             try {
