@@ -132,10 +132,16 @@ FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const Fi
     if (!run.has_velocity()) {
       double cutoff = options.velocity_cutoff;
       if (cutoff <= 0.0) cutoff = motion_velocity_cutoff(run.displacement, rate);
-      velocity = zero_phase_velocity_by_stretch(run.displacement, run.time, run.sample_rate, cutoff, gap_filled.filled);
+      // A span set aside is no motion either: a long one splits the filter like a gap (its
+      // straight bridge would bend the velocity for the filter's length on both sides).
+      std::vector<std::uint8_t> unmeasured = gap_filled.filled;
+      for (std::size_t i = 0; i < screening.excluded.size(); ++i) unmeasured[i] |= screening.excluded[i];
+      velocity = zero_phase_velocity_by_stretch(run.displacement, run.time, run.sample_rate, cutoff, unmeasured);
       s.notes.push_back(run.name + ": velocity from the displacement, zero-phase low-pass at " +
                         std::to_string(cutoff) + " Hz" +
-                        (gap_filled.gaps.empty() ? "" : ", on each stretch between the logging gaps"));
+                        (gap_filled.gaps.empty() && screening.excluded_samples == 0
+                             ? ""
+                             : ", on each stretch between the logging gaps and the spans set aside"));
     }
     // After the velocity: the samples beside a gap are measurements, set aside but not bridged.
     set_aside_gaps(gap_filled, options.screening.margin_s, screening);
