@@ -15,6 +15,7 @@
 #include "runtime/loop_report.hpp"
 #include "runtime/rt_main.hpp"
 #include "runtime/service_notifier.hpp"
+#include "runtime/telemetry_alarm.hpp"
 #include "runtime/supervisor_feed.hpp"
 
 namespace mrd::firmware {
@@ -38,14 +39,21 @@ void print_stats(std::FILE* out, const runtime::LoopStatistics& stats, const run
   std::fflush(out);
 }
 
+// What telemetry lost so far (nothing without telemetry).
+runtime::TelemetryLosses telemetry_losses(const runtime::TelemetryQueue* queue, const runtime::CsvTelemetryWriter* writer) {
+  if (queue == nullptr || writer == nullptr) return {};
+  return {.dropped = queue->dropped(), .lost = writer->lost(), .error = writer->last_error()};
+}
+
 runtime::ServiceStatus service_status(const config::ControllerConfig& config, const runtime::LoopStatistics& stats,
-                                      const runtime::SupervisorFeed& feed) {
+                                      const runtime::SupervisorFeed& feed, const runtime::TelemetryLosses& telemetry) {
   return {.state = feed.state(),
           .latched = feed.latched(),
           .rate = config.rate,
           .cycles = stats.cycles.get(),
           .overruns = stats.overruns.get(),
-          .wake_p99_ns = stats.wake_latency.percentile(0.99)};
+          .wake_p99_ns = stats.wake_latency.percentile(0.99),
+          .telemetry = telemetry};
 }
 
 // The transitions the loop published since the last call, into the journal (main thread).
@@ -127,6 +135,7 @@ int run_controller(const config::ControllerConfig& config, const RunOptions& opt
   const hal::Timestamp start = clock.now();
   std::uint64_t lost_logged = 0;
   std::uint64_t bounds_logged = 0;
+  runtime::TelemetryAlarm telemetry_alarm;
   const runtime::RealTimeRun run{.realtime = config.realtime,
                                  .period = config.period(),
                                  .max_cycles = static_cast<std::uint64_t>(options.duration_s * config.rate + 0.5),
@@ -144,7 +153,7 @@ int run_controller(const config::ControllerConfig& config, const RunOptions& opt
             std::fprintf(out, "%s\n", runtime::describe_rt_setup(config.realtime, done, io_threads.size()).c_str());
             std::fflush(out);
             for (const auto& w : done.warnings) journal.write(runtime::Priority::kWarning, "warning: " + w);
-            notifier.ready(service_status(config, stats, feed), clock.now());
+            notifier.ready(service_status(config, stats, feed, {}), clock.now());
           },
       .print_stats = [&] { print_stats(out, stats, feed, loop, hal, options.bench); },
       .clear_latch =
@@ -155,7 +164,9 @@ int run_controller(const config::ControllerConfig& config, const RunOptions& opt
       .tick =
           [&](hal::Timestamp now) {
             log_transitions(feed, journal, start, lost_logged, bounds_logged);
-            notifier.tick(now, service_status(config, stats, feed));
+            const auto losses = telemetry_losses(queue.get(), writer.get());
+            if (const auto line = telemetry_alarm.check(losses, now)) journal.write(line->priority, line->text);
+            notifier.tick(now, service_status(config, stats, feed, losses));
           }};
   runtime::run_real_time(run, signals, unblock, rt, stats, cycle, hooks);
   // The loop thread has ended (joined): the final cycle's transition is in the feed.
@@ -172,18 +183,23 @@ int run_controller(const config::ControllerConfig& config, const RunOptions& opt
   print_stats(out, stats, feed, loop, hal, options.bench);
   std::fprintf(out, "final setpoint %.3f A (fail-safe %.3f A), enable %s\n", loop.last().setpoint,
                config.safety.fail_safe_current, loop.last().enable ? "on" : "off");
-  if (queue) {
-    std::fprintf(out, "telemetry: %llu records offered, %llu written, %llu dropped, %llu over the size cap -> %s\n",
-                 static_cast<unsigned long long>(queue->offered()),
-                 static_cast<unsigned long long>(writer->written()),
-                 static_cast<unsigned long long>(queue->dropped()),
-                 static_cast<unsigned long long>(writer->capped()), writer->path().c_str());
-    if (const auto t0 = writer->start_time()) {
-      std::fprintf(out, "telemetry: time_s 0 is CLOCK_MONOTONIC %.9f s\n",
-                   std::chrono::duration<double>(*t0).count());
-    }
+  if (!queue) return cli::kOk;
+  // A run whose file is incomplete exits with the I/O code: its record cannot be trusted whole.
+  const bool failed = writer->failures() > 0;
+  std::fprintf(out, "telemetry: %llu records offered, %llu written, %llu dropped, %llu over the size cap, %llu lost to I/O -> %s\n",
+               static_cast<unsigned long long>(queue->offered()), static_cast<unsigned long long>(writer->written()),
+               static_cast<unsigned long long>(queue->dropped()), static_cast<unsigned long long>(writer->capped()),
+               static_cast<unsigned long long>(writer->lost()), writer->path().c_str());
+  if (failed) {
+    const std::string error = "telemetry: FAILED, " + std::to_string(writer->failures()) + " write(s) failed (last: " +
+                              runtime::telemetry_error_text(writer->last_error()) + "); " + writer->path() + " is incomplete";
+    std::fprintf(out, "%s\n", error.c_str());
+    journal.write(runtime::Priority::kErr, error);
   }
-  return 0;
+  if (const auto t0 = writer->start_time()) {
+    std::fprintf(out, "telemetry: time_s 0 is CLOCK_MONOTONIC %.9f s\n", std::chrono::duration<double>(*t0).count());
+  }
+  return failed ? cli::kIo : cli::kOk;
 }
 
 }  // namespace mrd::firmware

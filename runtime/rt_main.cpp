@@ -46,6 +46,10 @@ sigset_t install_process_signals(ProcessSignals& signals) {
   sigaction(SIGUSR1, &sa, nullptr);
   sa.sa_handler = on_clear_signal;
   sigaction(SIGUSR2, &sa, nullptr);
+  // A telemetry FIFO (or stdout's pipe) whose reader went away is a write error (EPIPE) the
+  // writer counts, not the end of the process.
+  sa.sa_handler = SIG_IGN;
+  sigaction(SIGPIPE, &sa, nullptr);
   sigset_t mask;
   sigemptyset(&mask);
   for (const int s : {SIGTERM, SIGINT, SIGHUP, SIGUSR1, SIGUSR2}) sigaddset(&mask, s);

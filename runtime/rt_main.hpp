@@ -30,7 +30,7 @@ struct ProcessSignals {
 // CLOCK_MONOTONIC now: the time the hooks' `tick` gets.
 [[nodiscard]] hal::Timestamp monotonic_now();
 
-// Installs the handlers for `signals` and blocks those signals on the calling thread, so the
+// Installs the handlers for `signals` (and ignores SIGPIPE) and blocks those signals on the calling thread, so the
 // threads it starts afterwards inherit a mask without them and only the main thread takes
 // them. Returns the blocked set, for run_real_time to unblock once the threads run.
 sigset_t install_process_signals(ProcessSignals& signals);

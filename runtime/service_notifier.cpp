@@ -12,7 +12,7 @@ std::string format_status(const ServiceStatus& s) {
   std::snprintf(line, sizeof line, "%s%s, %.0f Hz, wake-up p99 %.1f us, overruns %" PRIu64 ", cycles %" PRIu64,
                 std::string(to_string(s.state)).c_str(), s.latched ? " latched (clear: SIGUSR2)" : "", s.rate, static_cast<double>(s.wake_p99_ns) * 1e-3,
                 s.overruns, s.cycles);
-  return line;
+  return s.telemetry.any() ? std::string(line) + "; telemetry: " + describe_losses(s.telemetry) : std::string(line);
 }
 
 ServiceNotifier::ServiceNotifier(std::chrono::nanoseconds status_period) : status_period_(status_period) {

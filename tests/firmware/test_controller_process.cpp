@@ -2,8 +2,10 @@
 // notify socket while it runs, a stop signal (SIGHUP like SIGTERM) through the fail-safe cycle
 // to exit code 0, and each start's own telemetry file. Every wait is for an event, bounded.
 #include <gtest/gtest.h>
+#include <fcntl.h>
 #include <signal.h>
 #include <stdlib.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -81,6 +83,29 @@ TEST_P(StopSignal, EndsTheRunThroughTheFailSafeCycleWithExitCodeZero) {
 
 INSTANTIATE_TEST_SUITE_P(HupAndTerm, StopSignal, ::testing::Values(SIGHUP, SIGTERM),
                          [](const ::testing::TestParamInfo<int>& p) { return std::string(p.param == SIGHUP ? "SIGHUP" : "SIGTERM"); });
+
+// A telemetry FIFO whose reader goes away: SIGPIPE would kill the process before its statistics
+// (exit 141); ignored, the writes fail with EPIPE, counted, and the exit code says so.
+TEST_F(ControllerProcess, ATelemetryReaderThatGoesAwayIsAnIoFailureNotADeath) {
+  const std::string fifo = (dir_ / "reader.csv").string();
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  // O_CLOEXEC: the controller must not hold a read end of its own.
+  const int reader = open(fifo.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  ASSERT_GE(reader, 0);
+  ChildProcess controller({MRD_CONTROLLER_BINARY, "--config", config(), "--telemetry", fifo, "--duration", "0.3"});
+  if (!controller.started()) GTEST_SKIP() << kCannotRun;
+  // The writer has opened the FIFO once the controller names its file.
+  const bool opened = controller.wait_for_line(std::regex("telemetry " + fifo), seconds(10)).has_value();
+  close(reader);
+  ASSERT_TRUE(opened) << controller.output();
+  const auto code = controller.wait_exit(seconds(10));
+  ASSERT_TRUE(code) << controller.output();
+  EXPECT_EQ(*code, 3) << controller.output();
+  const std::string& out = controller.output();
+  EXPECT_NE(out.find("--- mrd-controller statistics ---"), std::string::npos) << out;
+  EXPECT_NE(out.find("telemetry: FAILED"), std::string::npos) << out;
+  EXPECT_NE(out.find("(last: Broken pipe)"), std::string::npos) << out;
+}
 
 TEST_F(ControllerProcess, TwoStartsKeepTwoTelemetryFiles) {
   for (int run = 0; run < 2; ++run) {
