@@ -31,8 +31,9 @@ constexpr const char* kCannotRun = "cannot execute mrd-controller here (a foreig
 class ControllerProcess : public ::testing::Test {
  protected:
   void SetUp() override {
-    // The embedded config, without SCHED_FIFO (a test), telemetry into this test's directory.
-    std::ofstream(config()) << "[realtime]\npriority = 0\n[safety]\noverrun_limit = 1000000\n"
+    // The embedded config's mock back ends, without SCHED_FIFO (a test), telemetry into this test's directory.
+    std::ofstream(config()) << "[backends]\nlvdt = \"mock\"\ndriver = \"mock\"\nlines = \"mock\"\n"
+                               "[realtime]\npriority = 0\n[safety]\noverrun_limit = 1000000\n"
                                "[telemetry]\npath = \"telemetry.csv\"\ndirectory = \""
                             << dir_.path().string() << "\"\n";
   }
