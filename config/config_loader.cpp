@@ -440,9 +440,10 @@ LoadedConfig with_backends_named(LoadedConfig loaded, const std::string& file_na
 
 }  // namespace
 
-LoadedConfig load_config_file(const std::string& path) {
+LoadedConfig load_config_file(const std::string& path, std::string* text_out) {
   LoadedConfig out;
   const std::optional<std::string> text = read_config_file(path, out.errors);
+  if (text && text_out != nullptr) *text_out = *text;
   return text ? with_backends_named(load_config_text(*text, path), path) : out;
 }
 

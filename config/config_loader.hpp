@@ -25,7 +25,8 @@ struct LoadedConfig {
 LoadedConfig load_config_text(std::string_view text, const std::string& file_name);
 // A file must also name its back ends (backends.lvdt, driver, lines; demand in force mode): an
 // empty or truncated file is an error, never a silent run on the mock HAL.
-LoadedConfig load_config_file(const std::string& path);
+// `text`, if given, receives the file's text as read.
+LoadedConfig load_config_file(const std::string& path, std::string* text = nullptr);
 // Validates a config changed after loading (command-line overrides); `source` names the change.
 LoadedConfig revalidate(const ControllerConfig& config, const std::string& source);
 

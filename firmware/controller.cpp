@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common/cli/exit_code.hpp"
+#include "firmware/config_reload.hpp"
 #include "firmware/control_loop.hpp"
 #include "firmware/hal_set.hpp"
 #include "firmware/mock_drive.hpp"
@@ -160,6 +161,12 @@ int run_controller(const config::ControllerConfig& config, const RunOptions& opt
           [&] {
             loop.request_clear_latch();
             journal.write(runtime::Priority::kNotice, "SIGUSR2: an operator cleared the latch");
+          },
+      // Never a stop: the file checked again, the running config kept (ConfigReload).
+      .reload =
+          [&] {
+            const auto outcome = (options.reload != nullptr ? *options.reload : ConfigReload("", "")).check();
+            journal.write(outcome.priority, outcome.text);
           },
       .tick =
           [&](hal::Timestamp now) {

@@ -12,6 +12,9 @@ extern "C" void on_stop_signal(int signal) {
   g_signals->stop_signal.compare_exchange_strong(none, signal);
   g_signals->stop.store(true);
 }
+extern "C" void on_reload_signal(int) {
+  if (g_signals != nullptr) g_signals->reload.store(true);
+}
 extern "C" void on_stats_signal(int) {
   if (g_signals != nullptr) g_signals->print_stats.store(true);
 }
@@ -41,6 +44,7 @@ sigset_t install_process_signals(ProcessSignals& signals) {
   sa.sa_handler = on_stop_signal;
   sigaction(SIGTERM, &sa, nullptr);
   sigaction(SIGINT, &sa, nullptr);
+  sa.sa_handler = on_reload_signal;
   sigaction(SIGHUP, &sa, nullptr);
   sa.sa_handler = on_stats_signal;
   sigaction(SIGUSR1, &sa, nullptr);

@@ -1,6 +1,7 @@
 // mrd-controller as systemd runs it, a process of its own: READY=1 then WATCHDOG=1 on the
-// notify socket while it runs, a stop signal (SIGHUP like SIGTERM) through the fail-safe cycle
-// to exit code 0, and each start's own telemetry file. Every wait is for an event, bounded.
+// notify socket while it runs, a stop signal (SIGTERM, SIGINT) through the fail-safe cycle to
+// exit code 0, SIGHUP a check of the config file that never stops it, and each start's own
+// telemetry file. Every wait is for an event, bounded.
 #include <gtest/gtest.h>
 #include <fcntl.h>
 #include <signal.h>
@@ -11,6 +12,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <regex>
 #include <string>
 
@@ -72,7 +74,7 @@ TEST_P(StopSignal, EndsTheRunThroughTheFailSafeCycleWithExitCodeZero) {
   ASSERT_TRUE(code) << controller.output();
   EXPECT_EQ(*code, 0) << controller.output();
   const std::string& out = controller.output();
-  const std::string name = GetParam() == SIGHUP ? "SIGHUP" : "SIGTERM";
+  const std::string name = GetParam() == SIGINT ? "SIGINT" : "SIGTERM";
   EXPECT_TRUE(std::regex_search(out, std::regex("supervisor: (INIT|RUN|DEGRADED) -> SAFE \\(shutdown\\) at cycle")))
       << out;
   EXPECT_NE(out.find("stopped on " + name + ", fail-safe current written"), std::string::npos) << out;
@@ -82,8 +84,36 @@ TEST_P(StopSignal, EndsTheRunThroughTheFailSafeCycleWithExitCodeZero) {
   EXPECT_EQ(*stopping, "STOPPING=1\nSTATUS=stopped on " + name);
 }
 
-INSTANTIATE_TEST_SUITE_P(HupAndTerm, StopSignal, ::testing::Values(SIGHUP, SIGTERM),
-                         [](const ::testing::TestParamInfo<int>& p) { return std::string(p.param == SIGHUP ? "SIGHUP" : "SIGTERM"); });
+INSTANTIATE_TEST_SUITE_P(IntAndTerm, StopSignal, ::testing::Values(SIGINT, SIGTERM),
+                         [](const ::testing::TestParamInfo<int>& p) { return std::string(p.param == SIGINT ? "SIGINT" : "SIGTERM"); });
+
+// A logrotate `kill -HUP`: a bad file is reported and the run goes on, a changed good one is named
+// for the next start; the controller stops only on SIGTERM, with exit code 0.
+TEST_F(ControllerProcess, SighupChecksTheConfigFileAndNeverStops) {
+  ChildProcess controller({MRD_CONTROLLER_BINARY, "--config", config()});
+  if (!controller.started()) GTEST_SKIP() << kCannotRun;
+  ASSERT_TRUE(controller.wait_for_line(std::regex("^real-time: "), seconds(10))) << controller.output();
+  std::string good;
+  {
+    std::ifstream in(config());
+    good.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  std::ofstream(config()) << "[safety]\nstale_periods = 0\n";
+  controller.signal(SIGHUP);
+  ASSERT_TRUE(controller.wait_for_line(std::regex("SIGHUP: .* is not valid \\(4 error\\(s\\)\\), the running config stays"),
+                                       seconds(10)))
+      << controller.output();
+  std::ofstream(config()) << good << "[loop]\nrate = 500.0\n";
+  controller.signal(SIGHUP);
+  ASSERT_TRUE(controller.wait_for_line(std::regex("SIGHUP: .* is valid and differs from the running config"), seconds(10)))
+      << controller.output();
+  controller.signal(SIGTERM);
+  const auto code = controller.wait_exit(seconds(10));
+  ASSERT_TRUE(code) << controller.output();
+  EXPECT_EQ(*code, 0) << controller.output();
+  EXPECT_NE(controller.output().find("stopped on SIGTERM, fail-safe current written"), std::string::npos)
+      << controller.output();
+}
 
 // A telemetry FIFO whose reader goes away: SIGPIPE would kill the process before its statistics
 // (exit 141); ignored, the writes fail with EPIPE, counted, and the exit code says so.

@@ -99,6 +99,30 @@ TEST(ControllerRun, StopSignalFlagEndsTheRunWithTheFailSafeCycle) {
       << log;
 }
 
+// SIGHUP (its flag, as the handler sets it) never stops the run: the main thread answers it in
+// the log and the run goes on to its duration.
+TEST(ControllerRun, AReloadRequestNeverStopsTheRun) {
+  auto config = mrd::config::load_default_config().config;
+  config.realtime.priority = 0;
+  config.safety.overrun_limit = 1000000;
+  std::FILE* out = std::tmpfile();
+  std::FILE* log_file = std::tmpfile();
+  mrd::runtime::ProcessSignals signals;
+  signals.reload.store(true);
+  mrd::firmware::RunOptions options;
+  options.duration_s = 0.05;
+  options.log = log_file;
+  EXPECT_EQ(mrd::firmware::run_controller(config, options, signals, out), 0);
+  const std::string log = read_and_close(log_file);
+  const std::string text = read_and_close(out);
+  EXPECT_FALSE(signals.reload.load()) << "taken by the main thread";
+  EXPECT_NE(log.find("mrd-controller: SIGHUP: the embedded config runs (no --config): nothing to re-read"),
+            std::string::npos)
+      << log;
+  EXPECT_NE(log.find("stopped after the run's duration"), std::string::npos) << log;
+  EXPECT_NE(text.find("cycles 50,"), std::string::npos) << text;
+}
+
 // Under systemd: READY=1 before anything else, STATUS= lines with the state and the rate,
 // STOPPING=1 last (the watchdog's timing is ServiceNotifier's test, on scripted time).
 TEST(ControllerRun, TellsSystemdReadyStatusAndStopping) {
