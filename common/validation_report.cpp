@@ -6,14 +6,12 @@
 
 namespace mrd {
 
-namespace {
 std::string format_value(double v) {
   std::ostringstream s;
   s.precision(6);
   s << v;
   return s.str();
 }
-}  // namespace
 
 void ValidationReport::error(std::string_view field, std::string message) {
   issues_.push_back({ValidationIssue::Severity::kError, std::string(field), std::move(message)});
@@ -31,6 +29,12 @@ bool ValidationReport::check(bool ok, std::string_view field, std::string_view m
 void ValidationReport::require_positive(std::string_view field, double value) {
   if (!std::isfinite(value) || value <= 0.0) {
     error(field, "must be a finite value > 0, got " + format_value(value));
+  }
+}
+
+void ValidationReport::require_positive(std::string_view field, double value, double max) {
+  if (!std::isfinite(value) || value <= 0.0 || value > max) {
+    error(field, "must lie in (0, " + format_value(max) + "], got " + format_value(value));
   }
 }
 

@@ -18,6 +18,9 @@ struct ValidationIssue {
 // What validate() found in a config or parameter struct: the one report type of model/, hal/
 // and everything above them. Validation runs at start-up, never on the hot path, so it may
 // allocate.
+// A number as %g prints it ("1e+308", "-0", "0.001"), for messages.
+[[nodiscard]] std::string format_value(double v);
+
 class ValidationReport {
  public:
   void error(std::string_view field, std::string message);
@@ -27,6 +30,8 @@ class ValidationReport {
 
   // The common physical-range checks; each reports one error when it fails.
   void require_positive(std::string_view field, double value);
+  // In (0, max]: a physical bound on a positive quantity (1e308 is no magnetisation).
+  void require_positive(std::string_view field, double value, double max);
   void require_non_negative(std::string_view field, double value);
   void require_in_range(std::string_view field, double value, double lo, double hi, bool hi_open);
 

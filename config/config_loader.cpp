@@ -323,12 +323,12 @@ void check_register_overlaps(TomlReader& in, const hal::modbus::RegisterMap& r) 
 void cross_check(TomlReader& in, const ControllerConfig& c) {
   const auto& law = c.law;
   if (!(c.rate >= 10.0 && c.rate <= 20000.0)) {
-    in.error("loop.rate", "must be in 10..20000 Hz, got " + std::to_string(c.rate));
+    in.error("loop.rate", "must be in 10..20000 Hz, got " + format_value(c.rate));
   }
   for (std::size_t i = 0; i < law.schedule.currents.size(); ++i) {
     if (law.schedule.currents[i] > law.limits.max_current) {
       in.error("schedule.currents[" + std::to_string(i) + "]",
-               "must not exceed compensator.max_current (" + std::to_string(law.limits.max_current) +
+               "must not exceed compensator.max_current (" + format_value(law.limits.max_current) +
                    " A): the driver cannot reach it");
     }
   }
@@ -378,6 +378,8 @@ void validate_all(TomlReader& in, ControllerConfig& c) {
   report(in, c.telemetry.validate(), "telemetry");
   const ValidationReport law_report = validate(c.law);
   for (const auto& issue : law_report.issues()) {
+    // The sample period is 1 / loop.rate: a bad rate is reported once, as itself.
+    if (issue.field == "observer.sample_period" && !(c.rate >= 10.0 && c.rate <= 20000.0)) continue;
     if (issue.severity == ValidationIssue::Severity::kError) {
       in.error(file_key(issue.field), issue.message);
     } else {
@@ -418,16 +420,39 @@ LoadedConfig revalidate(const ControllerConfig& config, const std::string& sourc
   return out;
 }
 
-LoadedConfig load_config_file(const std::string& path) {
+namespace {
+
+// A file that leaves out a back end (an empty or truncated one among them) would run the mock,
+// drive nothing and report healthy: each must be named, the demand's in force mode too.
+LoadedConfig with_backends_named(LoadedConfig loaded, const std::string& file_name) {
+  std::vector<std::string_view> required{"backends.lvdt", "backends.driver", "backends.lines"};
+  if (loaded.config.law.mode == control::ControlMode::kForce) required.push_back("backends.demand");
+  for (const std::string_view key : required) {
+    if (std::find(loaded.defaulted.begin(), loaded.defaulted.end(), key) == loaded.defaulted.end()) continue;
+    loaded.errors.push_back({.file = file_name,
+                             .line = 0,
+                             .key = std::string(key),
+                             .message = std::string("must be named (") +
+                                        (key == "backends.lines" ? "mock | gpio" : "mock | modbus | can") +
+                                        "): a file without it would run the simulation and drive nothing"});
+  }
+  return loaded;
+}
+
+}  // namespace
+
+LoadedConfig load_config_file(const std::string& path, std::string* text_out) {
   LoadedConfig out;
   const std::optional<std::string> text = read_config_file(path, out.errors);
-  return text ? load_config_text(*text, path) : out;
+  if (text && text_out != nullptr) *text_out = *text;
+  return text ? with_backends_named(load_config_text(*text, path), path) : out;
 }
 
 std::string_view default_config_text() { return kDefaultConfigText; }
 
 LoadedConfig load_default_config() {
-  return load_config_text(default_config_text(), "<embedded etc/mrd/mrd.toml>");
+  const std::string name = "<embedded etc/mrd/mrd.toml>";
+  return with_backends_named(load_config_text(default_config_text(), name), name);
 }
 
 }  // namespace mrd::config

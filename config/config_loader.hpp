@@ -23,11 +23,15 @@ struct LoadedConfig {
 // Parses and validates. A syntax error stops parsing (one message with line and column);
 // otherwise every wrong type, unknown key and out-of-range value is reported at once.
 LoadedConfig load_config_text(std::string_view text, const std::string& file_name);
-LoadedConfig load_config_file(const std::string& path);
+// A file must also name its back ends (backends.lvdt, driver, lines; demand in force mode): an
+// empty or truncated file is an error, never a silent run on the mock HAL.
+// `text`, if given, receives the file's text as read.
+LoadedConfig load_config_file(const std::string& path, std::string* text = nullptr);
 // Validates a config changed after loading (command-line overrides); `source` names the change.
 LoadedConfig revalidate(const ControllerConfig& config, const std::string& source);
 
-// The config compiled into the binary: etc/mrd/mrd.toml, the simulated rig on the mock HAL.
+// The config compiled into the binary: etc/mrd/mrd.toml, the simulated rig on the mock HAL,
+// its mock back ends named as a file's must be.
 std::string_view default_config_text();
 LoadedConfig load_default_config();
 

@@ -13,6 +13,7 @@
 
 #include <toml++/toml.h>
 
+#include "common/validation_report.hpp"
 #include "config/config_message.hpp"
 
 namespace mrd::config {
@@ -86,13 +87,12 @@ void TomlReader::get_seconds(std::string_view path, std::chrono::duration<Rep, P
   double seconds = std::chrono::duration<double>(value).count();
   if (!get_number(path, seconds)) return;
   if (!(seconds >= -1e6 && seconds <= 1e6)) {
-    error(path, "must be a finite number of seconds, got " + std::to_string(seconds));
+    error(path, "must be a finite number of seconds, got " + format_value(seconds));
     return;
   }
   value = std::chrono::round<std::chrono::duration<Rep, Period>>(std::chrono::duration<double>(seconds));
   if (seconds > 0.0 && value.count() == 0) {
-    error(path, "must be at least one tick of " +
-                    std::to_string(static_cast<double>(Period::num) / Period::den) + " s");
+    error(path, "must be at least one tick of " + format_value(static_cast<double>(Period::num) / Period::den) + " s");
   }
 }
 

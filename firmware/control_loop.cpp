@@ -138,7 +138,12 @@ const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
     law_.correct_force_scale(check == control::SampleCheck::kFresh ? load_cell : control::LoadCellStatus::kNone,
                              load_cell_force);
     command = law_.command(demand);
-    if (!std::isfinite(command.current)) d = supervisor_.veto(control::Trigger::kCommandNotFinite, now);
+    // A non-finite target is control lost as surely as a non-finite current (a finite 0 A beside
+    // target_B = NaN drives nothing): the same veto. The observer's J-A state resets itself
+    // (observer_recovered above).
+    if (!std::isfinite(command.current) || !std::isfinite(command.target_B)) {
+      d = supervisor_.veto(control::Trigger::kCommandNotFinite, now);
+    }
   }
   if (!d.in_control) law_.hold(fail_safe_current_);
   const double setpoint = d.in_control ? command.current : fail_safe_current_;

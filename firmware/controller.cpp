@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common/cli/exit_code.hpp"
+#include "firmware/config_reload.hpp"
 #include "firmware/control_loop.hpp"
 #include "firmware/hal_set.hpp"
 #include "firmware/mock_drive.hpp"
@@ -15,6 +16,7 @@
 #include "runtime/loop_report.hpp"
 #include "runtime/rt_main.hpp"
 #include "runtime/service_notifier.hpp"
+#include "runtime/telemetry_alarm.hpp"
 #include "runtime/supervisor_feed.hpp"
 
 namespace mrd::firmware {
@@ -38,14 +40,21 @@ void print_stats(std::FILE* out, const runtime::LoopStatistics& stats, const run
   std::fflush(out);
 }
 
+// What telemetry lost so far (nothing without telemetry).
+runtime::TelemetryLosses telemetry_losses(const runtime::TelemetryQueue* queue, const runtime::CsvTelemetryWriter* writer) {
+  if (queue == nullptr || writer == nullptr) return {};
+  return {.dropped = queue->dropped(), .lost = writer->lost(), .error = writer->last_error()};
+}
+
 runtime::ServiceStatus service_status(const config::ControllerConfig& config, const runtime::LoopStatistics& stats,
-                                      const runtime::SupervisorFeed& feed) {
+                                      const runtime::SupervisorFeed& feed, const runtime::TelemetryLosses& telemetry) {
   return {.state = feed.state(),
           .latched = feed.latched(),
           .rate = config.rate,
           .cycles = stats.cycles.get(),
           .overruns = stats.overruns.get(),
-          .wake_p99_ns = stats.wake_latency.percentile(0.99)};
+          .wake_p99_ns = stats.wake_latency.percentile(0.99),
+          .telemetry = telemetry};
 }
 
 // The transitions the loop published since the last call, into the journal (main thread).
@@ -127,6 +136,7 @@ int run_controller(const config::ControllerConfig& config, const RunOptions& opt
   const hal::Timestamp start = clock.now();
   std::uint64_t lost_logged = 0;
   std::uint64_t bounds_logged = 0;
+  runtime::TelemetryAlarm telemetry_alarm;
   const runtime::RealTimeRun run{.realtime = config.realtime,
                                  .period = config.period(),
                                  .max_cycles = static_cast<std::uint64_t>(options.duration_s * config.rate + 0.5),
@@ -144,7 +154,7 @@ int run_controller(const config::ControllerConfig& config, const RunOptions& opt
             std::fprintf(out, "%s\n", runtime::describe_rt_setup(config.realtime, done, io_threads.size()).c_str());
             std::fflush(out);
             for (const auto& w : done.warnings) journal.write(runtime::Priority::kWarning, "warning: " + w);
-            notifier.ready(service_status(config, stats, feed), clock.now());
+            notifier.ready(service_status(config, stats, feed, {}), clock.now());
           },
       .print_stats = [&] { print_stats(out, stats, feed, loop, hal, options.bench); },
       .clear_latch =
@@ -152,10 +162,18 @@ int run_controller(const config::ControllerConfig& config, const RunOptions& opt
             loop.request_clear_latch();
             journal.write(runtime::Priority::kNotice, "SIGUSR2: an operator cleared the latch");
           },
+      // Never a stop: the file checked again, the running config kept (ConfigReload).
+      .reload =
+          [&] {
+            const auto outcome = (options.reload != nullptr ? *options.reload : ConfigReload("", "")).check();
+            journal.write(outcome.priority, outcome.text);
+          },
       .tick =
           [&](hal::Timestamp now) {
             log_transitions(feed, journal, start, lost_logged, bounds_logged);
-            runtime::ServiceStatus status = service_status(config, stats, feed);
+            const auto losses = telemetry_losses(queue.get(), writer.get());
+            if (const auto line = telemetry_alarm.check(losses, now)) journal.write(line->priority, line->text);
+            runtime::ServiceStatus status = service_status(config, stats, feed, losses);
             status.bus_stalled = loop.bus_stalled();
             notifier.tick(now, status);
           }};
@@ -174,18 +192,23 @@ int run_controller(const config::ControllerConfig& config, const RunOptions& opt
   print_stats(out, stats, feed, loop, hal, options.bench);
   std::fprintf(out, "final setpoint %.3f A (fail-safe %.3f A), enable %s\n", loop.last().setpoint,
                config.safety.fail_safe_current, loop.last().enable ? "on" : "off");
-  if (queue) {
-    std::fprintf(out, "telemetry: %llu records offered, %llu written, %llu dropped, %llu over the size cap -> %s\n",
-                 static_cast<unsigned long long>(queue->offered()),
-                 static_cast<unsigned long long>(writer->written()),
-                 static_cast<unsigned long long>(queue->dropped()),
-                 static_cast<unsigned long long>(writer->capped()), writer->path().c_str());
-    if (const auto t0 = writer->start_time()) {
-      std::fprintf(out, "telemetry: time_s 0 is CLOCK_MONOTONIC %.9f s\n",
-                   std::chrono::duration<double>(*t0).count());
-    }
+  if (!queue) return cli::kOk;
+  // A run whose file is incomplete exits with the I/O code: its record cannot be trusted whole.
+  const bool failed = writer->failures() > 0;
+  std::fprintf(out, "telemetry: %llu records offered, %llu written, %llu dropped, %llu over the size cap, %llu lost to I/O -> %s\n",
+               static_cast<unsigned long long>(queue->offered()), static_cast<unsigned long long>(writer->written()),
+               static_cast<unsigned long long>(queue->dropped()), static_cast<unsigned long long>(writer->capped()),
+               static_cast<unsigned long long>(writer->lost()), writer->path().c_str());
+  if (failed) {
+    const std::string error = "telemetry: FAILED, " + std::to_string(writer->failures()) + " write(s) failed (last: " +
+                              runtime::telemetry_error_text(writer->last_error()) + "); " + writer->path() + " is incomplete";
+    std::fprintf(out, "%s\n", error.c_str());
+    journal.write(runtime::Priority::kErr, error);
   }
-  return 0;
+  if (const auto t0 = writer->start_time()) {
+    std::fprintf(out, "telemetry: time_s 0 is CLOCK_MONOTONIC %.9f s\n", std::chrono::duration<double>(*t0).count());
+  }
+  return failed ? cli::kIo : cli::kOk;
 }
 
 }  // namespace mrd::firmware

@@ -10,12 +10,16 @@
 
 namespace mrd::firmware {
 
+class ConfigReload;
+
 struct RunOptions {
-  double duration_s = 0.0;  // 0: until SIGTERM, SIGINT or SIGHUP
+  double duration_s = 0.0;  // 0: until SIGTERM or SIGINT
   bool bench = false;       // also print the latency histograms
   // Supervisor transitions, warnings and the stop, as they happen; null: stderr, with syslog
   // priorities ("<2>...") when stderr is journald's stream (runtime::Journal).
   std::FILE* log = nullptr;
+  // SIGHUP's check of the config file, its answer into the log; null: "nothing to re-read".
+  const ConfigReload* reload = nullptr;
 };
 
 // mrd-controller's run: builds the back ends, the loop and the telemetry writer, runs the loop

@@ -9,6 +9,7 @@
 
 #include "common/cli/command_line.hpp"
 #include "config/config_loader.hpp"
+#include "firmware/config_reload.hpp"
 #include "firmware/controller.hpp"
 #include "firmware/probe.hpp"
 
@@ -54,7 +55,7 @@ int main(int argc, char** argv) {
   app.add_option("--config", config_path, "TOML config file (default: the embedded config, "
                                           "also installed as etc/mrd/mrd.toml)");
   app.add_option("--check-config", check_path, "validate FILE, print every problem, exit 0 or 1");
-  app.add_option("--duration", options.duration_s, "run this many seconds (0: until SIGTERM, SIGINT or SIGHUP)")
+  app.add_option("--duration", options.duration_s, "run this many seconds (0: until SIGTERM or SIGINT; SIGHUP re-checks the config file)")
       ->check(CLI::Range(0.0, 1e7))->capture_default_str();
   app.add_option("--telemetry", telemetry_path, "write telemetry CSV to exactly this file (overrides telemetry.path, telemetry.directory with its directory, and telemetry.per_run)");
   app.add_option("--rate", rate, "control rate [Hz] (overrides loop.rate)")->check(CLI::Range(10.0, 20000.0));
@@ -83,8 +84,9 @@ int main(int argc, char** argv) {
     return rc;
   }
 
+  std::string config_text;  // what SIGHUP compares the file with
   auto loaded = config_path.empty() ? mrd::config::load_default_config()
-                                    : mrd::config::load_config_file(config_path);
+                                    : mrd::config::load_config_file(config_path, &config_text);
   if (print_report(loaded, config_path.empty() ? "embedded config" : config_path) != 0) return mrd::cli::kUsage;
 
   auto config = loaded.config;
@@ -107,6 +109,8 @@ int main(int argc, char** argv) {
 
   // The loop, bus and telemetry threads inherit a mask without the signals, so only the main
   // thread takes them; it polls the flags the handlers set.
+  const mrd::firmware::ConfigReload reload(config_path, config_text);
+  options.reload = &reload;
   const sigset_t mask = mrd::runtime::install_process_signals(g_signals);
   return mrd::firmware::run_controller(checked.config, options, g_signals, stdout, &mask);
 }

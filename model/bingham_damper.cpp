@@ -9,13 +9,14 @@ namespace mrd::model {
 
 ValidationReport validate(const DamperGeometry& g) {
   ValidationReport report;
-  report.require_positive("piston_area", g.piston_area);
-  report.require_positive("pole_length", g.pole_length);
-  report.require_positive("gap", g.gap);
-  report.require_positive("piston_diameter", g.piston_diameter);
-  report.require_positive("sign_velocity_scale", g.sign_velocity_scale);
+  // Bounds past the largest (seismic) dampers, so that only nonsense fails.
+  report.require_positive("piston_area", g.piston_area, 1.0);  // [m^2]
+  report.require_positive("pole_length", g.pole_length, 1.0);  // [m]
+  report.require_positive("gap", g.gap, 0.01);                  // [m]
+  report.require_positive("piston_diameter", g.piston_diameter, 1.0);  // [m]
+  report.require_positive("sign_velocity_scale", g.sign_velocity_scale, 1.0);  // [m/s]
   report.require_in_range("sign_shape", g.sign_shape, -1.0, 1.0, false);
-  report.require_non_negative("seal_friction", g.seal_friction);
+  report.require_in_range("seal_friction", g.seal_friction, 0.0, 1e7, false);  // [N]
   if (report.ok() && g.gap >= 0.5 * g.piston_diameter) {
     report.error("gap", "must be much smaller than the piston radius (Eq. 12 assumes a thin gap)");
   }

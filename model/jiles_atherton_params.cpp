@@ -6,13 +6,14 @@ namespace mrd::model {
 
 ValidationReport validate(const JilesAthertonParams& p) {
   ValidationReport report;
-  report.require_positive("Ms", p.Ms);
-  report.require_positive("a", p.a);
-  report.require_non_negative("alpha", p.alpha);
-  report.require_positive("k", p.k);
+  // Bounds past every known material (FeCo saturates near 2e6 A/m), so that only nonsense fails.
+  report.require_positive("Ms", p.Ms, 1e7);
+  report.require_positive("a", p.a, 1e6);
+  report.require_in_range("alpha", p.alpha, 0.0, 1.0, false);
+  report.require_positive("k", p.k, 1e6);
   report.require_in_range("c", p.c, 0.0, 1.0, /*hi_open=*/true);
   if (report.ok() && p.mean_field_gain() >= 1.0) {
-    report.warning("alpha", "alpha*Ms/(3a) = " + std::to_string(p.mean_field_gain()) +
+    report.warning("alpha", "alpha*Ms/(3a) = " + format_value(p.mean_field_gain()) +
                                 " >= 1: the anhysteretic curve folds back and Eq. 10 can run away "
                                 "at some loop amplitudes (docs/MODEL.md)");
   }
@@ -21,8 +22,8 @@ ValidationReport validate(const JilesAthertonParams& p) {
 
 ValidationReport validate(const MagneticCircuit& circuit) {
   ValidationReport report;
-  report.require_positive("turns", circuit.turns);
-  report.require_positive("effective_length", circuit.effective_length);
+  report.require_positive("turns", circuit.turns, 1e6);
+  report.require_positive("effective_length", circuit.effective_length, 10.0);  // [m]
   return report;
 }
 

@@ -16,10 +16,10 @@ namespace mrd::model {
 
 ValidationReport validate(const MrFluid& fluid) {
   ValidationReport report;
-  report.require_positive("viscosity", fluid.viscosity);
+  report.require_positive("viscosity", fluid.viscosity, 1e3);  // [Pa s]: carrier oils are 0.01-10
   report.require_in_range("volume_fraction", fluid.volume_fraction, 0.0, 0.74, false);
   report.require_positive("particle_diameter", fluid.particle_diameter);
-  report.require_positive("particle_saturation", fluid.particle_saturation);
+  report.require_positive("particle_saturation", fluid.particle_saturation, 3.0);  // mu0 Ms [T]: iron 2.1
   report.require_in_range("field_exponent", fluid.field_exponent, 0.2, 1.5, false);
   const double b_s = fluid.saturation_induction;
   if (b_s != 0.0 && !(b_s >= 0.02 && b_s <= 50.0)) {

@@ -13,6 +13,7 @@
 #include "common/time_origin.hpp"
 #include "control/sample_check.hpp"
 #include "control/supervisor.hpp"
+#include "runtime/bounded_write.hpp"
 
 namespace mrd::runtime {
 
@@ -91,14 +92,10 @@ unsigned last_run(const std::string& path) {
 
 int CsvTelemetryWriter::open_file(const std::string& path, int flags) {
   // O_NOFOLLOW: a symbolic link put where the file goes after the config was checked must not
-  // redirect the writes out of telemetry.directory.
-  const int fd = open(path.c_str(), O_WRONLY | O_CREAT | O_NOFOLLOW | O_CLOEXEC | flags, 0640);
-  file_ = fd >= 0 ? fdopen(fd, "w") : nullptr;
-  if (file_ == nullptr) {
-    const int error = errno;
-    if (fd >= 0) close(fd);
-    return error;
-  }
+  // redirect the writes out of telemetry.directory. O_NONBLOCK: a FIFO without a reader is
+  // refused (ENXIO) rather than waited for, and a reader that stops draining costs a timeout.
+  fd_ = open(path.c_str(), O_WRONLY | O_CREAT | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK | flags, 0640);
+  if (fd_ < 0) return errno;
   path_ = path;
   return 0;
 }
@@ -134,54 +131,91 @@ hal::StartResult CsvTelemetryWriter::start(const std::string& path) {
 
 hal::StartResult CsvTelemetryWriter::start_thread() {
   const char* columns = force_columns_ ? force_header() : header();
-  write_line(columns, std::strlen(columns));
+  batch_.reserve(kBatchBytes + 512);
+  add_line(columns, std::strlen(columns), false);
+  write_batch(write_timeout_);
   const auto pause = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
       std::chrono::duration<double>(flush_period_s_));
   thread_.start("mrd-telemetry", [this, pause] {
-    while (thread_.wait_for(pause)) drain_once();
+    while (thread_.wait_for(pause)) drain_once(write_timeout_);
   });
   return hal::StartResult::success();
 }
 
-bool CsvTelemetryWriter::write_line(const char* line, std::size_t length) {
+bool CsvTelemetryWriter::add_line(const char* line, std::size_t length, bool record) {
   if (max_bytes_ > 0 && bytes_ + length > max_bytes_) return false;
-  std::fwrite(line, 1, length, file_);
+  batch_.append(line, length);
+  lines_.push_back({batch_.size(), record});
   bytes_ += length;
   return true;
 }
 
-void CsvTelemetryWriter::drain_once() {
-  char line[512];
+void CsvTelemetryWriter::fail(int error) {
+  failures_.fetch_add(1, std::memory_order_relaxed);
+  last_error_.store(error, std::memory_order_relaxed);
+}
+
+void CsvTelemetryWriter::write_batch(std::chrono::milliseconds wait) {
+  if (batch_.empty()) return;
+  const auto result = write_before(fd_, batch_, std::chrono::steady_clock::now() + (stalled_ ? std::chrono::milliseconds{0} : wait));
+  // Whole lines written count; a line the file took part of stays (its rest goes first next
+  // time, so the file never holds half a line followed by another); the lines after it are lost.
   std::uint64_t written = 0;
+  std::uint64_t lost = 0;
+  std::size_t begin = 0;
+  std::optional<Line> started;
+  std::size_t rest_begin = 0;
+  for (const Line& line : lines_) {
+    if (line.end <= result.written) {
+      written += line.record ? 1 : 0;
+    } else if (begin < result.written || (begin == 0 && carried_)) {
+      rest_begin = std::max(begin, result.written);
+      started = line;
+    } else {
+      lost += line.record ? 1 : 0;
+      bytes_ -= line.end - begin;
+    }
+    begin = line.end;
+  }
+  batch_.erase(started ? started->end : 0);
+  batch_.erase(0, rest_begin);
+  lines_.clear();
+  carried_ = started.has_value();
+  if (started) lines_.push_back({batch_.size(), started->record});
+  if (written > 0) written_.fetch_add(written, std::memory_order_relaxed);
+  if (lost > 0) lost_.fetch_add(lost, std::memory_order_relaxed);
+  if (result.error != 0) fail(result.error);
+  stalled_ = result.error != 0;
+}
+
+void CsvTelemetryWriter::drain_once(std::chrono::milliseconds wait) {
+  char line[512];
   std::uint64_t capped = 0;
   queue_.drain([&](const TelemetryRecord& r) {
     if (!start_) {
       start_ = r.time;
       const int len = format_time_origin(std::chrono::duration<double>(r.time).count(),
                                          line, sizeof line);
-      if (len > 0) write_line(line, static_cast<std::size_t>(len));
+      if (len > 0) add_line(line, std::min(static_cast<std::size_t>(len), sizeof line - 1), false);
     }
     const int len = format(r, *start_, line, sizeof line, force_columns_);
-    if (len > 0 && write_line(line, std::min(static_cast<std::size_t>(len), sizeof line - 1))) {
-      ++written;
-    } else {
-      ++capped;
-    }
+    if (len <= 0 || !add_line(line, std::min(static_cast<std::size_t>(len), sizeof line - 1), true)) ++capped;
+    if (batch_.size() >= kBatchBytes) write_batch(wait);
   });
-  if (written > 0) {
-    std::fflush(file_);
-    written_.fetch_add(written, std::memory_order_relaxed);
-  }
+  write_batch(wait);
   if (capped > 0) capped_.fetch_add(capped, std::memory_order_relaxed);
 }
 
 void CsvTelemetryWriter::stop() {
   thread_.stop();
-  if (file_ != nullptr) {
-    drain_once();  // the loop has stopped: whatever is left is the tail of the run
-    std::fclose(file_);
-    file_ = nullptr;
-  }
+  if (fd_ < 0) return;
+  drain_once(write_timeout_);  // the loop has stopped: whatever is left is the tail of the run
+  if (carried_ && lines_.front().record) lost_.fetch_add(1, std::memory_order_relaxed);  // never completed
+  batch_.clear();
+  lines_.clear();
+  carried_ = false;
+  if (::close(fd_) != 0 && errno != EINTR) fail(errno);  // NFS reports a lost write here
+  fd_ = -1;
 }
 
 }  // namespace mrd::runtime

@@ -1,10 +1,11 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
-#include <cstdio>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "runtime/telemetry_config.hpp"
 #include "runtime/telemetry_queue.hpp"
@@ -15,12 +16,20 @@
 namespace mrd::runtime {
 
 // The non-real-time side of telemetry: a thread that drains the ring every flush period and
-// writes CSV. It may block on the disk; the loop never waits for it.
+// writes CSV. The loop never waits for it, and it never waits long for the file: the file is
+// open O_NONBLOCK and each pass waits at most `write_timeout` for a file (a FIFO whose reader
+// stopped draining) that takes nothing, then counts the records it could not write as lost.
+// After such a timeout the passes wait no more until a pass writes everything again, so stop()
+// returns within about two write timeouts whatever the reader does.
 class CsvTelemetryWriter {
  public:
+  static constexpr std::chrono::milliseconds kWriteTimeout{1000};
+  static constexpr std::size_t kBatchBytes = 64 * 1024;  // written once this much is formatted
+
   // `force_columns`: force mode's columns after the others (table4 files are unchanged).
-  CsvTelemetryWriter(TelemetryQueue& queue, double flush_period_s, bool force_columns = false)
-      : queue_(queue), flush_period_s_(flush_period_s), force_columns_(force_columns) {}
+  CsvTelemetryWriter(TelemetryQueue& queue, double flush_period_s, bool force_columns = false,
+                     std::chrono::milliseconds write_timeout = kWriteTimeout)
+      : queue_(queue), flush_period_s_(flush_period_s), force_columns_(force_columns), write_timeout_(write_timeout) {}
   ~CsvTelemetryWriter() { stop(); }
   CsvTelemetryWriter(const CsvTelemetryWriter&) = delete;
   CsvTelemetryWriter& operator=(const CsvTelemetryWriter&) = delete;
@@ -30,12 +39,19 @@ class CsvTelemetryWriter {
   // As above on the config's file: with per_run a new numbered file beside the earlier runs'
   // (never one that exists), and at most max_bytes written.
   [[nodiscard]] hal::StartResult start(const TelemetryConfig& config);
-  // Drains what is left, closes the file, joins the thread.
+  // Joins the thread, drains what is left, closes the file: bounded in time (see above).
   void stop();
 
   [[nodiscard]] std::uint64_t written() const { return written_.load(std::memory_order_relaxed); }
-  // Records the size cap kept out of the file: written + capped + the ring's dropped = offered.
+  // Records the size cap kept out of the file: written + capped + lost + the ring's dropped = offered.
   [[nodiscard]] std::uint64_t capped() const { return capped_.load(std::memory_order_relaxed); }
+  // Records the file did not take: a write error (ENOSPC, EIO, EPIPE) or the write timeout.
+  [[nodiscard]] std::uint64_t lost() const { return lost_.load(std::memory_order_relaxed); }
+  // Failed writes and closes (the header's and the time origin's among them): > 0, the file is
+  // incomplete.
+  [[nodiscard]] std::uint64_t failures() const { return failures_.load(std::memory_order_relaxed); }
+  // The errno of the latest failure (ETIMEDOUT: the file took nothing within the timeout); 0: none.
+  [[nodiscard]] int last_error() const { return last_error_.load(std::memory_order_relaxed); }
   // The file being written (after start()).
   [[nodiscard]] const std::string& path() const { return path_; }
   // The CSV's t = 0 on the loop's clock (CLOCK_MONOTONIC in the controller), once a record is
@@ -52,19 +68,35 @@ class CsvTelemetryWriter {
  private:
   int open_file(const std::string& path, int flags);  // 0 or the errno
   hal::StartResult start_thread();
-  bool write_line(const char* line, std::size_t length);  // false: over the cap, not written
-  void drain_once();
+  bool add_line(const char* line, std::size_t length, bool record);  // false: over the cap, not added
+  void drain_once(std::chrono::milliseconds wait);
+  void write_batch(std::chrono::milliseconds wait);
+  void fail(int error);
+
+  // A line of the batch: where it ends, and whether it is a record (not the header).
+  struct Line {
+    std::size_t end;
+    bool record;
+  };
 
   TelemetryQueue& queue_;
   double flush_period_s_;
   bool force_columns_;
-  std::FILE* file_ = nullptr;
+  std::chrono::milliseconds write_timeout_;
+  int fd_ = -1;
+  std::string batch_;        // the pass's lines, a partly written line's rest first
+  std::vector<Line> lines_;  // writer thread only, like batch_
+  bool carried_ = false;     // batch_ starts with the rest of a line the file took part of
+  bool stalled_ = false;     // the last write failed or timed out: do not wait again until one completes
   std::optional<hal::Timestamp> start_;  // the first record's time: the CSV's t = 0
   std::string path_;
   std::uint64_t max_bytes_ = 0;  // 0: no cap
   std::uint64_t bytes_ = 0;      // writer thread only
   std::atomic<std::uint64_t> written_{0};
   std::atomic<std::uint64_t> capped_{0};
+  std::atomic<std::uint64_t> lost_{0};
+  std::atomic<std::uint64_t> failures_{0};
+  std::atomic<int> last_error_{0};
   hal::IoThread thread_;
 };
 

@@ -12,6 +12,9 @@ extern "C" void on_stop_signal(int signal) {
   g_signals->stop_signal.compare_exchange_strong(none, signal);
   g_signals->stop.store(true);
 }
+extern "C" void on_reload_signal(int) {
+  if (g_signals != nullptr) g_signals->reload.store(true);
+}
 extern "C" void on_stats_signal(int) {
   if (g_signals != nullptr) g_signals->print_stats.store(true);
 }
@@ -41,11 +44,16 @@ sigset_t install_process_signals(ProcessSignals& signals) {
   sa.sa_handler = on_stop_signal;
   sigaction(SIGTERM, &sa, nullptr);
   sigaction(SIGINT, &sa, nullptr);
+  sa.sa_handler = on_reload_signal;
   sigaction(SIGHUP, &sa, nullptr);
   sa.sa_handler = on_stats_signal;
   sigaction(SIGUSR1, &sa, nullptr);
   sa.sa_handler = on_clear_signal;
   sigaction(SIGUSR2, &sa, nullptr);
+  // A telemetry FIFO (or stdout's pipe) whose reader went away is a write error (EPIPE) the
+  // writer counts, not the end of the process.
+  sa.sa_handler = SIG_IGN;
+  sigaction(SIGPIPE, &sa, nullptr);
   sigset_t mask;
   sigemptyset(&mask);
   for (const int s : {SIGTERM, SIGINT, SIGHUP, SIGUSR1, SIGUSR2}) sigaddset(&mask, s);

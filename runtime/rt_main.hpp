@@ -19,8 +19,9 @@ namespace mrd::runtime {
 
 // Flags the process's signal handlers set (async-signal-safe: lock-free atomics only).
 struct ProcessSignals {
-  std::atomic<bool> stop{false};         // SIGTERM, SIGINT, SIGHUP: end the run through the final cycle
+  std::atomic<bool> stop{false};         // SIGTERM, SIGINT: end the run through the final cycle
   std::atomic<int> stop_signal{0};       // which of them came first (0: none yet)
+  std::atomic<bool> reload{false};       // SIGHUP: the hooks' reload, or a stop where there is none
   std::atomic<bool> print_stats{false};  // SIGUSR1
   std::atomic<bool> clear_latch{false};  // SIGUSR2: an operator clears a latched SAFE
 };
@@ -30,7 +31,7 @@ struct ProcessSignals {
 // CLOCK_MONOTONIC now: the time the hooks' `tick` gets.
 [[nodiscard]] hal::Timestamp monotonic_now();
 
-// Installs the handlers for `signals` and blocks those signals on the calling thread, so the
+// Installs the handlers for `signals` (and ignores SIGPIPE) and blocks those signals on the calling thread, so the
 // threads it starts afterwards inherit a mask without them and only the main thread takes
 // them. Returns the blocked set, for run_real_time to unblock once the threads run.
 sigset_t install_process_signals(ProcessSignals& signals);
@@ -50,6 +51,7 @@ struct RealTimeHooks {
   std::function<void(const RtSetupResult&)> ready;          // once the loop thread is set up
   std::function<void()> print_stats;                        // on SIGUSR1
   std::function<void()> clear_latch;                        // on SIGUSR2
+  std::function<void()> reload;                             // on SIGHUP; none: SIGHUP stops the run
   std::function<void(hal::Timestamp now)> tick;             // every poll period, while the loop runs
 };
 
@@ -80,6 +82,15 @@ void run_real_time(const RealTimeRun& run, ProcessSignals& signals, const sigset
   if (hooks.ready) hooks.ready(rt);
   while (!finished.load()) {
     std::this_thread::sleep_for(run.poll_period);
+    if (signals.reload.exchange(false)) {
+      if (hooks.reload) {
+        hooks.reload();
+      } else {
+        int none = 0;
+        signals.stop_signal.compare_exchange_strong(none, SIGHUP);
+        signals.stop.store(true);
+      }
+    }
     if (signals.stop.load()) stop.store(true);
     if (signals.print_stats.exchange(false) && hooks.print_stats) hooks.print_stats();
     if (signals.clear_latch.exchange(false) && hooks.clear_latch) hooks.clear_latch();

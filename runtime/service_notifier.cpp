@@ -13,7 +13,7 @@ std::string format_status(const ServiceStatus& s) {
                 std::string(to_string(s.state)).c_str(), s.latched ? " latched (clear: SIGUSR2)" : "",
                 s.bus_stalled ? ", bus thread stalled" : "", s.rate, static_cast<double>(s.wake_p99_ns) * 1e-3,
                 s.overruns, s.cycles);
-  return line;
+  return s.telemetry.any() ? std::string(line) + "; telemetry: " + describe_losses(s.telemetry) : std::string(line);
 }
 
 ServiceNotifier::ServiceNotifier(std::chrono::nanoseconds status_period) : status_period_(status_period) {

@@ -6,6 +6,7 @@
 
 #include "control/supervisor.hpp"
 #include "hal/clock.hpp"
+#include "runtime/telemetry_alarm.hpp"
 
 namespace mrd::runtime {
 
@@ -18,9 +19,11 @@ struct ServiceStatus {
   std::uint64_t overruns = 0;
   std::uint64_t wake_p99_ns = 0;   // since start
   bool bus_stalled = false;        // a bus I/O thread is hung: the watchdog is not fed
+  TelemetryLosses telemetry;
 };
 // "RUN, 1000 Hz, wake-up p99 42.1 us, overruns 0, cycles 120000"; a latched SAFE reads
-// "SAFE latched (clear: SIGUSR2), 1000 Hz, ...", so `systemctl status` says what to do.
+// "SAFE latched (clear: SIGUSR2), 1000 Hz, ...", so `systemctl status` says what to do; lost
+// telemetry adds "; telemetry: 3 records dropped (the ring was full), ...".
 [[nodiscard]] std::string format_status(const ServiceStatus& s);
 
 // systemd's service protocol through libsystemd's sd_notify (Type=notify, WatchdogSec=). Every

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "tests/config/config_errors.hpp"
+#include "tests/support/test_files.hpp"
 
 namespace {
 
@@ -206,10 +207,10 @@ slew_rate = 0
 rate = 5
 )",
                                           "physics.toml");
-  EXPECT_TRUE(has_error_containing(c, "damper.jiles_atherton.Ms", "> 0")) << lines_of(c);
+  EXPECT_TRUE(has_error_containing(c, "damper.jiles_atherton.Ms", "(0, 1e+07]")) << lines_of(c);
   EXPECT_TRUE(has_error_containing(c, "damper.jiles_atherton.c", "[0, 1)")) << lines_of(c);
   EXPECT_TRUE(has_error_containing(c, "damper.fluid.volume_fraction", "0.74")) << lines_of(c);
-  EXPECT_TRUE(has_error_containing(c, "damper.geometry.gap", "thin gap")) << lines_of(c);
+  EXPECT_TRUE(has_error_containing(c, "damper.geometry.gap", "(0, 0.01]")) << lines_of(c);
   EXPECT_TRUE(has_error_containing(c, "schedule.thresholds[1]", "increase")) << lines_of(c);
   EXPECT_TRUE(has_error_containing(c, "schedule.currents[5]", "compensator.max_current")) << lines_of(c);
   EXPECT_TRUE(has_error_containing(c, "compensator.slew_rate", "> 0")) << lines_of(c);
@@ -224,6 +225,53 @@ rate = 5
   EXPECT_TRUE(has_error(um, "um.toml:2: damper.fluid.particle_diameter: must be given in metres (MR "
                             "particles are 0.1-100 um)"))
       << lines_of(um);
+}
+
+// A value past physics is an error, not a warning and a NaN at run time; numbers print as %g
+// (not 309 digits of %f), and a bad rate is reported as itself, not as its -inf period.
+TEST(ConfigBad, EveryModelParameterHasAPhysicalBoundInPlainNumbers) {
+  const LoadedConfig c = load_config_text(R"([damper.jiles_atherton]
+Ms = 1e308
+a = 2e6
+alpha = 1.5
+k = 1e300
+[damper.circuit]
+turns = 1e9
+effective_length = 100.0
+[damper.fluid]
+viscosity = 1e4
+particle_saturation = 30.0
+[damper.geometry]
+piston_area = 2.0
+pole_length = 5.0
+piston_diameter = 3.0
+sign_velocity_scale = 10.0
+seal_friction = 1e9
+[loop]
+rate = -0.0
+)",
+                                          "bounds.toml");
+  for (const char* line :
+       {"bounds.toml:2: damper.jiles_atherton.Ms: must lie in (0, 1e+07], got 1e+308",
+        "bounds.toml:3: damper.jiles_atherton.a: must lie in (0, 1e+06], got 2e+06",
+        "bounds.toml:4: damper.jiles_atherton.alpha: must lie in [0, 1], got 1.5",
+        "bounds.toml:5: damper.jiles_atherton.k: must lie in (0, 1e+06], got 1e+300",
+        "bounds.toml:7: damper.circuit.turns: must lie in (0, 1e+06], got 1e+09",
+        "bounds.toml:8: damper.circuit.effective_length: must lie in (0, 10], got 100",
+        "bounds.toml:10: damper.fluid.viscosity: must lie in (0, 1000], got 10000",
+        "bounds.toml:11: damper.fluid.particle_saturation: must lie in (0, 3], got 30",
+        "bounds.toml:13: damper.geometry.piston_area: must lie in (0, 1], got 2",
+        "bounds.toml:14: damper.geometry.pole_length: must lie in (0, 1], got 5",
+        "bounds.toml:15: damper.geometry.piston_diameter: must lie in (0, 1], got 3",
+        "bounds.toml:16: damper.geometry.sign_velocity_scale: must lie in (0, 1], got 10",
+        "bounds.toml:17: damper.geometry.seal_friction: must lie in [0, 1e+07], got 1e+09",
+        "bounds.toml:19: loop.rate: must be in 10..20000 Hz, got -0"}) {
+    EXPECT_TRUE(has_error(c, line)) << line << "\n" << lines_of(c);
+  }
+  EXPECT_EQ(c.errors.size(), 14u) << lines_of(c);
+  EXPECT_TRUE(c.warnings.empty()) << lines_of(c);
+  // The largest sane values pass.
+  EXPECT_TRUE(load_config_text("[damper.jiles_atherton]\nMs = 1e7\na = 1e6\nalpha = 1e-6\nk = 1e6\n", "edge.toml").ok());
 }
 
 // The current feedback in the LVDT's registers reads one word of the other: a negative
@@ -346,12 +394,36 @@ TEST(ConfigFile, MissingFileAndFileNameInMessages) {
   EXPECT_EQ(missing.errors[0].to_string(), "/nonexistent/mrd.toml: cannot open the file");
 
   const auto path = std::filesystem::temp_directory_path() / "mrd_config_test.toml";
-  std::ofstream(path) << "[loop]\nrate = 0.5\n";
+  std::ofstream(path) << "[backends]\nlvdt = \"mock\"\ndriver = \"mock\"\nlines = \"mock\"\n[loop]\nrate = 0.5\n";
   const LoadedConfig c = load_config_file(path.string());
   ASSERT_EQ(c.errors.size(), 1u) << lines_of(c);
-  EXPECT_EQ(c.errors[0].to_string().rfind(path.string() + ":2: loop.rate: must be in 10..20000 Hz", 0), 0u)
+  EXPECT_EQ(c.errors[0].to_string().rfind(path.string() + ":6: loop.rate: must be in 10..20000 Hz", 0), 0u)
       << lines_of(c);
   std::filesystem::remove(path);
+}
+
+// An empty or truncated file must not mean "simulate": every back end is named, the demand's in
+// force mode too; the embedded default names its mock ones.
+TEST(ConfigFile, AFileMustNameItsBackEnds) {
+  const mrd::test::TestDirectory dir("mrd_config_backends");
+  const auto empty = dir / "empty.toml";
+  std::ofstream(empty) << "";
+  const LoadedConfig c = load_config_file(empty.string());
+  EXPECT_EQ(lines_of(c), empty.string() + ": backends.lvdt: must be named (mock | modbus | can): a file without it "
+                                          "would run the simulation and drive nothing\n" +
+                             empty.string() + ": backends.driver: must be named (mock | modbus | can): a file without "
+                                              "it would run the simulation and drive nothing\n" +
+                             empty.string() + ": backends.lines: must be named (mock | gpio): a file without it would "
+                                              "run the simulation and drive nothing\n");
+  const auto force = dir / "force.toml";
+  std::ofstream(force) << "[control]\nmode = \"force\"\n[backends]\nlvdt = \"mock\"\ndriver = \"mock\"\nlines = \"mock\"\n";
+  const LoadedConfig f = load_config_file(force.string());
+  ASSERT_EQ(f.errors.size(), 1u) << lines_of(f);
+  EXPECT_EQ(f.errors[0].key, "backends.demand");
+  const auto named = dir / "named.toml";
+  std::ofstream(named) << "[backends]\nlvdt = \"mock\"\ndriver = \"mock\"\nlines = \"mock\"\n";
+  EXPECT_TRUE(load_config_file(named.string()).ok()) << lines_of(load_config_file(named.string()));
+  EXPECT_TRUE(mrd::config::load_default_config().ok());
 }
 
 TEST(ConfigOverride, RevalidateChecksCommandLineChanges) {

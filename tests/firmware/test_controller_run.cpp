@@ -9,6 +9,7 @@
 #include <regex>
 #include <string>
 
+#include "common/cli/exit_code.hpp"
 #include "config/config_loader.hpp"
 #include "tests/support/notify_socket.hpp"
 #include "tests/support/test_files.hpp"
@@ -19,7 +20,7 @@ using mrd::test::read_and_close;
 
 // Runs the controller and returns what it printed; its log (transitions) into `log`.
 std::string run(const mrd::config::ControllerConfig& config, double seconds,
-                bool stop_at_once = false, std::string* log = nullptr) {
+                bool stop_at_once = false, std::string* log = nullptr, int exit_code = 0) {
   std::FILE* out = std::tmpfile();
   std::FILE* log_file = std::tmpfile();
   mrd::runtime::ProcessSignals signals;
@@ -27,7 +28,7 @@ std::string run(const mrd::config::ControllerConfig& config, double seconds,
   mrd::firmware::RunOptions options;
   options.duration_s = seconds;
   options.log = log_file;
-  EXPECT_EQ(mrd::firmware::run_controller(config, options, signals, out), 0);
+  EXPECT_EQ(mrd::firmware::run_controller(config, options, signals, out), exit_code);
   const std::string logged = read_and_close(log_file);
   if (log != nullptr) *log = logged;
   return read_and_close(out);
@@ -61,6 +62,28 @@ TEST(ControllerRun, DefaultConfigRunsOnTheMockHalAndStopsInSafeWithTelemetryAcco
   std::filesystem::remove(csv);
 }
 
+// A disk that takes nothing: the run goes on, the journal says so while it runs, the last line
+// says the file is incomplete and the exit code is the I/O one.
+TEST(ControllerRun, TelemetryToAFullDiskIsReportedAndTheExitCodeSaysSo) {
+  auto config = mrd::config::load_default_config().config;
+  config.telemetry.directory = "/dev";
+  config.telemetry.path = "full";
+  config.telemetry.per_run = false;
+  config.realtime.priority = 0;
+  config.safety.overrun_limit = 1000000;
+  std::string log;
+  const std::string text = run(config, 0.1, false, &log, mrd::cli::kIo);
+  EXPECT_NE(text.find("telemetry: 101 records offered, 0 written, 0 dropped, 0 over the size cap, 101 lost to I/O -> /dev/full"),
+            std::string::npos)
+      << text;
+  EXPECT_TRUE(std::regex_search(
+      text, std::regex(R"(telemetry: FAILED, \d+ write\(s\) failed \(last: No space left on device\); /dev/full is incomplete)")))
+      << text;
+  EXPECT_TRUE(std::regex_search(log, std::regex(R"(mrd-controller: telemetry: \d+ lost to I/O \(No space left on device\) so far)")))
+      << log;
+  EXPECT_NE(text.find("enable off"), std::string::npos) << text;  // the statistics all the same
+}
+
 TEST(ControllerRun, StopSignalFlagEndsTheRunWithTheFailSafeCycle) {
   auto config = mrd::config::load_default_config().config;
   config.realtime.priority = 0;
@@ -74,6 +97,30 @@ TEST(ControllerRun, StopSignalFlagEndsTheRunWithTheFailSafeCycle) {
   EXPECT_NE(log.find("mrd-controller: stopped on request, fail-safe current written"),
             std::string::npos)
       << log;
+}
+
+// SIGHUP (its flag, as the handler sets it) never stops the run: the main thread answers it in
+// the log and the run goes on to its duration.
+TEST(ControllerRun, AReloadRequestNeverStopsTheRun) {
+  auto config = mrd::config::load_default_config().config;
+  config.realtime.priority = 0;
+  config.safety.overrun_limit = 1000000;
+  std::FILE* out = std::tmpfile();
+  std::FILE* log_file = std::tmpfile();
+  mrd::runtime::ProcessSignals signals;
+  signals.reload.store(true);
+  mrd::firmware::RunOptions options;
+  options.duration_s = 0.05;
+  options.log = log_file;
+  EXPECT_EQ(mrd::firmware::run_controller(config, options, signals, out), 0);
+  const std::string log = read_and_close(log_file);
+  const std::string text = read_and_close(out);
+  EXPECT_FALSE(signals.reload.load()) << "taken by the main thread";
+  EXPECT_NE(log.find("mrd-controller: SIGHUP: the embedded config runs (no --config): nothing to re-read"),
+            std::string::npos)
+      << log;
+  EXPECT_NE(log.find("stopped after the run's duration"), std::string::npos) << log;
+  EXPECT_NE(text.find("cycles 50,"), std::string::npos) << text;
 }
 
 // Under systemd: READY=1 before anything else, STATUS= lines with the state and the rate,

@@ -152,6 +152,22 @@ TEST(SupervisedFault, ANonFiniteCommandIsNeverWrittenAndIsSafeInItsOwnPeriod) {
   EXPECT_EQ(rig.hal().driver.last_setpoint(), kLimits.fail_safe_current);
 }
 
+// Ms = 1e308 (past the config's bounds, as a corrupted model would be): the current stays
+// finite but target_B is NaN, so the law controls nothing; vetoed and counted like a NaN current.
+TEST(SupervisedFault, ANonFiniteTargetIsVetoedLikeANonFiniteCommand) {
+  mrd::control::ControlLawConfig law;
+  law.damper.jiles_atherton.Ms = 1e308;
+  LoopRig rig({}, {}, nullptr, law);
+  for (std::int64_t i = 0; i < 3 * kLimits.recovery_periods; ++i) {
+    rig.step();
+    ASSERT_NE(rig.loop().state(), kRun) << "cycle " << i;
+  }
+  const auto& t = rig.loop().supervisor().transitions();
+  EXPECT_GE(t.get(kRun, kSafe, Trigger::kCommandNotFinite), 2u) << "each recovery tried the law once, and was vetoed";
+  EXPECT_EQ(t.get(kRun, kSafe, Trigger::kCommandNotFinite), t.into(kRun));
+  EXPECT_EQ(rig.hal().driver.last_setpoint(), kLimits.fail_safe_current);
+}
+
 TEST(SupervisedFault, ObserverRecoveriesAreCountedInTelemetryAndSafeAfterRecoveryPeriods) {
   // A corrupted pinning constant: every J-A step that moves the field ends non-finite and the
   // observer resets to the anhysteretic curve (a recovery). INIT holds the current, so the
