@@ -131,9 +131,9 @@ std::vector<double> zero_phase_velocity_by_stretch(std::span<const double> displ
     if (split[i]) {
       // Across a gap, the bridge's slope.
       std::size_t b = i;
-      while (b + 1 < n && split[b]) ++b;
-      const std::size_t a = i > 0 ? i - 1 : i;
-      const double slope = (displacement[b] - displacement[a]) / (time[b] - time[a]);
+      while (b < n && split[b]) ++b;  // the first sample after it, or n at the record's end
+      const std::size_t a = i > 0 ? i - 1 : i, end = std::min(b, n - 1);
+      const double slope = time[end] > time[a] ? (displacement[end] - displacement[a]) / (time[end] - time[a]) : 0.0;
       for (; i < b; ++i) v[i] = slope;
       continue;
     }

@@ -147,6 +147,23 @@ TEST(FitSeries, ALoggingGapCostsOnlyTheGap) {
   EXPECT_TRUE(s.screened);
 }
 
+// Spans set aside may reach the record's ends: they take the chord's slope, and the filter runs
+// on what lies between.
+TEST(ZeroPhaseVelocity, UnmeasuredSpansAtTheRecordsEndsTakeTheChord) {
+  std::vector<double> x, t;
+  for (int i = 0; i < 1000; ++i) {
+    t.push_back(i * 1e-3);
+    x.push_back(0.01 * t.back());
+  }
+  std::vector<std::uint8_t> unmeasured(1000, 0);
+  std::fill(unmeasured.begin(), unmeasured.begin() + 50, 1);
+  std::fill(unmeasured.end() - 100, unmeasured.end(), 1);
+  const std::vector<double> v = zero_phase_velocity_by_stretch(x, t, 1000.0, 5.0, unmeasured);
+  ASSERT_EQ(v.size(), 1000u);
+  for (const std::size_t i : {0u, 49u, 500u, 900u, 999u}) EXPECT_NEAR(v[i], 0.01, 1e-6) << i;
+  EXPECT_EQ(zero_phase_velocity_by_stretch(x, t, 1000.0, 5.0, std::vector<std::uint8_t>(1000, 1)), std::vector<double>(1000, 0.01));
+}
+
 TEST(ZeroPhaseVelocity, CutoffFollowsTheMotion) {
   const mrd::record::RecordedRun run = sine_run(1000, 8, false);
   // Five times 1.22 Hz: 4096 samples give bins of 0.244 Hz, and the Hann window spreads the
