@@ -42,7 +42,7 @@ enum class Trigger : std::uint8_t {
   kCommandNotFinite,      // the control law produced a non-finite current
   kOverrun,               // the previous cycle overran its period
   kRepeatedOverruns,      // overrun_limit overruns without overrun_window clean periods between
-  kShutdown,              // SIGTERM/SIGINT/SIGHUP: SAFE and stay there
+  kShutdown,              // SIGTERM/SIGINT (SIGHUP re-checks the config): SAFE and stay there
   kOperatorClear,         // an operator cleared the latch (SAFE stays SAFE until good periods)
   // Force mode: the outer controller's demand, judged as the LVDT's samples are.
   kDemandMissing,         // no fresh demand this period (nothing new, repeated, or too old)
