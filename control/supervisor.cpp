@@ -287,7 +287,7 @@ SupervisorDecision Supervisor::step(const SupervisorInputs& raw, hal::Timestamp 
   // A link that is not up yet queues INIT's setpoint for when it comes; once past INIT a
   // setpoint without a link is a failed write.
   SupervisorInputs in = raw;
-  if (state_ != SupervisorState::kInit && in.link_down) in.setpoint_write_failed = true;
+  if (in.link_down) in.setpoint_write_failed = state_ != SupervisorState::kInit;
   bus_stalled_ = in.bus_stalled;
   update_counters(in);
   const Trigger hard = hard_trigger(in);

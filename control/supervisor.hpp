@@ -102,9 +102,9 @@ struct SupervisorInputs {
   SampleCheck demand = SampleCheck::kFresh;  // force mode's demand (DemandChecker); fresh otherwise
   std::optional<bool> driver_fault = false;  // nullopt: the line could not be read
   bool current_disagrees = false;            // judged by the loop, only when a reading exists
-  bool setpoint_write_failed = false;        // the previous period's write, for a reason but the link
-  bool link_down = false;                    // the previous period's write found no link (queued for
-                                             // when it comes): in INIT a wait, else a failed write
+  bool setpoint_write_failed = false;        // the previous period's write
+  bool link_down = false;                    // ... because it found no link (queued for when it
+                                             // comes): in INIT a wait, else a failed write
   std::uint32_t setpoints_refused = 0;       // refusals the device reported since the previous period
   bool setpoint_accepted = false;            // and whether it accepted one meanwhile
   bool readback_lost = false;                // judged by the loop: no reading for too long

@@ -112,7 +112,7 @@ const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
        .demand = demand_check,
        .driver_fault = fault,
        .current_disagrees = disagrees,
-       .setpoint_write_failed = write_failed_ && !link_down_,
+       .setpoint_write_failed = write_failed_,
        .link_down = link_down_,
        .setpoints_refused = static_cast<std::uint32_t>(std::min<std::uint64_t>(acks.refused - acks_.refused, 1u << 16)),
        .setpoint_accepted = acks.accepted != acks_.accepted,

@@ -65,10 +65,7 @@ void check_motion(const record::RecordedRun& run, const Screening& screening) {
                                          "motion to analyse (leave the run out)");
   }
   // A quantised LVDT's noise is at least its step.
-  double step = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 1; i < run.size(); ++i)
-    if (const double d = std::fabs(run.displacement[i] - run.displacement[i - 1]); d > 0.0) step = std::min(step, d);
-  const double noise = std::max(sample_noise(run.displacement, screening.excluded), std::isfinite(step) ? step : 0.0);
+  const double noise = std::max(sample_noise(run.displacement, screening.excluded), resolution(run.displacement));
   if (hi - lo >= kMotionOverNoise * noise) return;
   char text[200];
   std::snprintf(text, sizeof text,

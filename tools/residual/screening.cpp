@@ -21,16 +21,6 @@ std::string_view to_string(ScreenReason r) {
 
 namespace {
 
-// The smallest step the channel takes: its resolution (quantisation), or its noise if finer.
-double resolution(const std::vector<double>& c) {
-  double smallest = 0.0;
-  for (std::size_t i = 1; i < c.size(); ++i) {
-    const double d = std::fabs(c[i] - c[i - 1]);
-    if (d > 0.0 && (smallest == 0.0 || d < smallest)) smallest = d;
-  }
-  return smallest;
-}
-
 // The value below which a share `q` of the channel lies.
 double quantile(std::vector<double> c, double q) {
   const auto at = c.begin() + static_cast<std::ptrdiff_t>(q * static_cast<double>(c.size() - 1));
@@ -222,6 +212,15 @@ Screening screen_run(const record::RecordedRun& run, const ScreeningOptions& o) 
   }
   set_aside(s, run, std::move(found), o.margin_s);
   return s;
+}
+
+double resolution(const std::vector<double>& c) {
+  double smallest = 0.0;
+  for (std::size_t i = 1; i < c.size(); ++i) {
+    const double d = std::fabs(c[i] - c[i - 1]);
+    if (d > 0.0 && (smallest == 0.0 || d < smallest)) smallest = d;
+  }
+  return smallest;
 }
 
 double sample_noise(const std::vector<double>& c, const std::vector<std::uint8_t>& excluded) {

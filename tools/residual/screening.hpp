@@ -53,6 +53,9 @@ struct ScreeningOptions {
   int implausible_reversals = 4;
 };
 
+// The smallest step the channel takes: its resolution (quantisation), or its noise if finer;
+// 0 for a constant channel.
+[[nodiscard]] double resolution(const std::vector<double>& channel);
 // One sample's noise, robustly: 1.4826 MAD of the channel's deviation from its neighbours'
 // midpoint (a motion sampled well above its frequency leaves almost none), over the samples
 // not `excluded` (empty: all). 0 for fewer than 5.
