@@ -61,6 +61,9 @@ int main(int argc, char** argv) {
   bool no_discovery = false;
   app.add_flag("--no-discovery", no_discovery,
                "do not regress what the named effects leave on the library of terms (docs/CLOSING-THE-LOOP.md)");
+  app.add_flag("--robust-fit", options.robust_fit,
+               "where the least-squares base leaves a fault no screening rule names, identify the base again "
+               "under a robust loss and weigh every later fit (docs/CLOSING-THE-LOOP.md, \"Robust fit\")");
   app.add_option("--threshold", options.minimum_reduction,
                  "fraction by which an effect must lower the validation error to be accepted")
       ->capture_default_str();

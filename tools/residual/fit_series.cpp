@@ -36,6 +36,8 @@ void append_sample(FitSeries& to, const FitSeries& from, std::size_t i) {
   to.current.push_back(from.current[i]);
   to.force.push_back(from.force[i]);
   if (!from.temperature.empty()) to.temperature.push_back(from.temperature[i]);
+  if (!from.time.empty()) to.time.push_back(from.time[i]);
+  if (!from.weight.empty()) to.weight.push_back(from.weight[i]);
   to.validation.push_back(from.validation[i]);
 }
 
@@ -144,6 +146,7 @@ FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const Fi
     set_aside_gaps(gap_filled, options.screening.margin_s, screening);
     check_motion(even, screening);
     s.run_starts.push_back(s.size());
+    s.run_names.push_back(recorded.name);
     const std::size_t n = run.size();
     // Half the blocks validate: a fixed shuffle, the same for every run and every call.
     std::vector<std::uint8_t> held_out(static_cast<std::size_t>(blocks));
@@ -157,6 +160,7 @@ FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const Fi
       s.current.push_back(run.coil[i] * gain);
       s.force.push_back(run.force[i]);
       if (with_temperature) s.temperature.push_back(run.temperature[i]);
+      s.time.push_back(i < run.time.size() ? run.time[i] : static_cast<double>(i) / rate);
       const auto block = static_cast<int>((i * static_cast<std::size_t>(blocks)) / n);
       s.validation.push_back(screening.excluded.empty() || !screening.excluded[i]
                                  ? held_out[static_cast<std::size_t>(block)]
@@ -179,6 +183,7 @@ FitSeries without_excluded(const FitSeries& series, const std::vector<double>& p
     const std::size_t end = r + 1 < series.run_starts.size() ? series.run_starts[r + 1] : series.size();
     out.run_starts.push_back(out.size());
     out.run_periods.push_back(series.run_periods[r]);
+    if (r < series.run_names.size()) out.run_names.push_back(series.run_names[r]);
     for (std::size_t i = series.run_starts[r]; i < end; ++i) {
       if (series.validation[i] == FitSeries::kExcluded) continue;
       append_sample(out, series, i);
@@ -205,6 +210,7 @@ FitSeries decimate(const FitSeries& series, std::size_t wanted, double min_rate)
     out.run_periods.push_back(series.run_periods[r] * static_cast<double>(factor));
     out.sample_period = r == 0 ? out.run_periods[0] : std::min(out.sample_period, out.run_periods[r]);
     out.run_starts.push_back(out.size());
+    if (r < series.run_names.size()) out.run_names.push_back(series.run_names[r]);
     for (std::size_t from = series.run_starts[r]; from < ends[r]; from += factor) {
       const std::size_t to = std::min(from + factor, ends[r]);
       const std::size_t mid = from + (to - from) / 2;
@@ -235,6 +241,7 @@ FitSeries run_openings(const FitSeries& series, std::size_t max_samples) {
     out.sample_period = out.run_starts.empty() ? series.run_periods[r] : std::min(out.sample_period, series.run_periods[r]);
     out.run_starts.push_back(out.size());
     out.run_periods.push_back(series.run_periods[r]);
+    if (r < series.run_names.size()) out.run_names.push_back(series.run_names[r]);
     for (std::size_t i = series.run_starts[r]; i < series.run_starts[r] + take[r]; ++i) append_sample(out, series, i);
   }
   return out;

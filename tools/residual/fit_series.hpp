@@ -21,8 +21,17 @@ struct FitSeries {
   std::vector<double> current;       // [A]
   std::vector<double> force;         // [N], measured
   std::vector<double> temperature;   // [degC], empty when no run recorded it
+  std::vector<double> time;          // [s], each run's own clock (gap samples at the nominal period)
+  // The robust loss's weight of each sample in the fits (robust_weights.hpp); empty: every
+  // sample weighs 1. Only the searches' series carry it: what the reports quote is unweighted.
+  std::vector<double> weight;
+  [[nodiscard]] double weight_of(std::size_t i) const { return weight.empty() ? 1.0 : weight[i]; }
+  // > 0 [N]: the searches' fitness is Cauchy's loss with this knee (model_fit.cpp, fit_trial),
+  // not the RMS: how a base is identified again on a run the robust loss found a fault in.
+  double robust_knee = 0.0;
   // The first sample of each run: the model starts again from a demagnetised core there.
   std::vector<std::size_t> run_starts;
+  std::vector<std::string> run_names;  // one per run start, for the reports
   // kFitting for samples the fits may use, kValidation for those held out, kExcluded for those
   // the screening set aside (no fit and no error counts them).
   std::vector<std::uint8_t> validation;

@@ -77,19 +77,20 @@ void predict_force_and_induction(const model::DamperModel& model, const FitSerie
 
 ResidualRms residual_rms(const FitSeries& series, const std::vector<double>& predicted) {
   double sum[2] = {0.0, 0.0};
-  std::size_t count[2] = {0, 0};
+  double weight[2] = {0.0, 0.0};
   ResidualRms out;
   for (std::size_t i = 0; i < series.size(); ++i) {
     if (series.validation[i] == FitSeries::kExcluded) continue;
     const double r = series.force[i] - predicted[i];
-    sum[series.validation[i]] += r * r;
-    ++count[series.validation[i]];
+    const double w = series.weight_of(i);
+    sum[series.validation[i]] += w * r * r;
+    weight[series.validation[i]] += w;
     out.max = std::max(out.max, std::fabs(r));
   }
-  const auto rms = [](double s, std::size_t n) { return n > 0 ? std::sqrt(s / static_cast<double>(n)) : 0.0; };
-  out.fitting = rms(sum[0], count[0]);
-  out.validation = rms(sum[1], count[1]);
-  out.all = rms(sum[0] + sum[1], count[0] + count[1]);
+  const auto rms = [](double s, double w) { return w > 0.0 ? std::sqrt(s / w) : 0.0; };
+  out.fitting = rms(sum[0], weight[0]);
+  out.validation = rms(sum[1], weight[1]);
+  out.all = rms(sum[0] + sum[1], weight[0] + weight[1]);
   return out;
 }
 
@@ -190,8 +191,12 @@ NormalVector solve_holding(const NormalMatrix& normal, const NormalVector& rhs, 
 
 }  // namespace
 
-LinearTerms fit_linear_terms(const FitSeries& series, const std::vector<double>& predicted,
-                             const LinearEffects& effects, const model::DamperModel* present) {
+namespace {
+
+// fit_linear_terms with `weights` per sample in place of the series' own (empty: the series').
+LinearTerms solve_linear_terms(const FitSeries& series, const std::vector<double>& predicted,
+                               const LinearEffects& effects, const model::DamperModel* present,
+                               const std::vector<double>& weights) {
   std::optional<model::BinghamDamper> shapes;
   if (present != nullptr) shapes.emplace(present->geometry, present->fluid.viscosity, present->fluid.flow_index);
   // At a constant current the model's force is (yield + friction) s(v) + c0 u(v): the force
@@ -204,9 +209,10 @@ LinearTerms fit_linear_terms(const FitSeries& series, const std::vector<double>&
   for (std::size_t i = 0; i < series.size(); ++i) {
     if (series.validation[i] != 0) continue;
     fill_columns(series, predicted, effects, base, i, column);
+    const double w = weights.empty() ? series.weight_of(i) : weights[i];
     for (int r = 0; r < n; ++r) {
-      rhs[r] += column[r] * series.force[i];
-      for (int c = 0; c < n; ++c) normal(r, c) += column[r] * column[c];
+      rhs[r] += w * column[r] * series.force[i];
+      for (int c = 0; c < n; ++c) normal(r, c) += w * column[r] * column[c];
     }
   }
   // A light ridge keeps the solve defined when a column is all zero (no force predicted at all).
@@ -238,25 +244,48 @@ LinearTerms fit_linear_terms(const FitSeries& series, const std::vector<double>&
   return t;
 }
 
-double linear_fit_rms(const FitSeries& series, const std::vector<double>& predicted,
-                      const LinearTerms& t) {
+}  // namespace
+
+LinearTerms fit_linear_terms(const FitSeries& series, const std::vector<double>& predicted,
+                             const LinearEffects& effects, const model::DamperModel* present) {
+  return solve_linear_terms(series, predicted, effects, present, {});
+}
+
+namespace {
+
+// F_fit - (a F_m + ...) per sample of the series; 0 where the sample does not fit.
+void linear_fit_residuals(const FitSeries& series, const std::vector<double>& predicted, const LinearTerms& t,
+                          std::vector<double>& residual) {
   const BaseColumns base{t.shapes, t.friction_column};
   const int n = column_count(t.effects, base);
   double coefficients[kMaxLinearColumns] = {t.force_scale, t.extra_viscous, t.extra_friction};
   std::copy(t.coefficients.begin(), t.coefficients.end(), coefficients + base_column_count(base));
-  double sum = 0.0;
-  std::size_t count = 0;
+  residual.assign(series.size(), 0.0);
   for (std::size_t i = 0; i < series.size(); ++i) {
     if (series.validation[i] != 0) continue;
     double column[kMaxLinearColumns];
     fill_columns(series, predicted, t.effects, base, i, column);
     double f = 0.0;
     for (int c = 0; c < n; ++c) f += coefficients[c] * column[c];
-    const double r = series.force[i] - f;
-    sum += r * r;
-    ++count;
+    residual[i] = series.force[i] - f;
   }
-  return count > 0 ? std::sqrt(sum / static_cast<double>(count)) : 0.0;
+}
+
+}  // namespace
+
+double linear_fit_rms(const FitSeries& series, const std::vector<double>& predicted,
+                      const LinearTerms& t) {
+  std::vector<double> residual;
+  linear_fit_residuals(series, predicted, t, residual);
+  double sum = 0.0;
+  double weight = 0.0;
+  for (std::size_t i = 0; i < series.size(); ++i) {
+    if (series.validation[i] != 0) continue;
+    const double w = series.weight_of(i);
+    sum += w * residual[i] * residual[i];
+    weight += w;
+  }
+  return weight > 0.0 ? std::sqrt(sum / weight) : 0.0;
 }
 
 model::DamperModel apply_linear_terms(model::DamperModel m, const LinearTerms& t) {
@@ -280,14 +309,55 @@ model::DamperModel apply_linear_terms(model::DamperModel m, const LinearTerms& t
 
 namespace {
 
+// Reweighted solves of the linear terms under the robust loss, from the least-squares terms.
+constexpr int kRobustSolves = 4;
+
+struct TrialFit {
+  LinearTerms terms;
+  double fitness = 0.0;  // [N]
+};
+
+// The linear terms at one trial point and the fitness they leave: least squares, or, with the
+// series' robust_knee c, Cauchy's loss rho(r) = c^2 log(1 + (r/c)^2) (the terms by reweighted
+// solves), its fitness sqrt(mean rho(r)): the RMS where residuals lie well inside the knee,
+// while a fault's samples far beyond it pull with c^2/r, fading as the fault grows (Huber's
+// loss keeps a pull of c per sample: a long fault still bends the fit). The knee is the
+// series', not each trial's: a trial's own scale would let a model that errs widely but with a
+// narrow core pay less for a fault's samples.
+TrialFit fit_trial(const FitSeries& series, const std::vector<double>& predicted, const LinearEffects& effects,
+                   const model::DamperModel& present) {
+  TrialFit out{fit_linear_terms(series, predicted, effects, &present), 0.0};
+  const double knee = series.robust_knee;
+  if (!(knee > 0.0)) {
+    out.fitness = linear_fit_rms(series, predicted, out.terms);
+    return out;
+  }
+  const auto relative = [knee](double r) { return (r / knee) * (r / knee); };
+  std::vector<double> residual, weight(series.size(), 1.0);
+  for (int pass = 0; pass < kRobustSolves; ++pass) {
+    linear_fit_residuals(series, predicted, out.terms, residual);
+    for (std::size_t i = 0; i < series.size(); ++i) weight[i] = 1.0 / (1.0 + relative(residual[i]));
+    out.terms = solve_linear_terms(series, predicted, effects, &present, weight);
+  }
+  linear_fit_residuals(series, predicted, out.terms, residual);
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < series.size(); ++i) {
+    if (series.validation[i] != 0) continue;
+    sum += knee * knee * std::log1p(relative(residual[i]));
+    ++count;
+  }
+  out.fitness = count > 0 ? std::sqrt(sum / static_cast<double>(count)) : 0.0;
+  return out;
+}
+
 double fitness_at(const ParameterSpace& space, const FitSeries& series, const Point& theta,
                   std::vector<double>& buffer) {
   const model::DamperModel model = space.build(theta);
   if (!model::validate(model).ok()) return 1e300;
   predict_force(model, series, buffer, space.induction.get());
-  const LinearTerms terms = fit_linear_terms(series, buffer, space.linear, &model);
-  const double rms = linear_fit_rms(series, buffer, terms);
-  return std::isfinite(rms) ? rms : 1e300;
+  const double fitness = fit_trial(series, buffer, space.linear, model).fitness;
+  return std::isfinite(fitness) ? fitness : 1e300;
 }
 
 // The swarm's objective: points in parallel on the pool (or serially), one buffer per worker.
@@ -323,8 +393,9 @@ FittedModel finish(const ParameterSpace& space, const FitSeries& series, const P
   std::vector<double> force;
   const model::DamperModel model = space.build(theta);
   predict_force(model, series, force, space.induction.get());
-  out.linear = fit_linear_terms(series, force, space.linear, &model);
-  out.fitting_rms = linear_fit_rms(series, force, out.linear);
+  TrialFit trial = fit_trial(series, force, space.linear, model);
+  out.linear = std::move(trial.terms);
+  out.fitting_rms = trial.fitness;
   out.model = apply_linear_terms(model, out.linear);
   return out;
 }

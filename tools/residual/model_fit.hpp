@@ -41,7 +41,8 @@ void predict_force(const model::DamperModel& model, const FitSeries& series,
 void predict_force_and_induction(const model::DamperModel& model, const FitSeries& series,
                                  std::vector<double>& force, std::vector<double>& B);
 
-// RMS [N] of measured - predicted over the fitting samples, the validation samples and all.
+// RMS [N] of measured - predicted over the fitting samples, the validation samples and all;
+// weighted by the series' robust weights where it carries them (the searches' series).
 struct ResidualRms {
   double fitting = 0.0;
   double validation = 0.0;

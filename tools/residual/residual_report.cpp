@@ -47,6 +47,19 @@ std::string screening_summary(const ResidualResult& r) {
          out;
 }
 
+// What the robust loss down-weighted against the final model, at most 5 spans.
+std::string robust_summary(const ResidualResult& r) {
+  const RobustWeights& w = r.robust_after;
+  std::string out = format("robust loss: Huber at %g sigma (sigma %.4g N); %.2f%% of the kept samples' weight taken",
+                           ResidualOptions{}.robust.tuning, w.sigma, 100.0 * w.down_weighted_share);
+  out += r.robust_refits > 0 ? format("; the base refitted with its weights %d time%s\n", r.robust_refits, r.robust_refits > 1 ? "s" : "")
+                             : std::string("; the base needed no refit\n");
+  for (const DownWeightedSpan& span : r.down_weighted)
+    out += format("  down-weighted most: %s %.4f-%.4f s, %zu samples, peak residual %.4g N\n", span.run.c_str(),
+                  span.start_s, span.end_s, span.samples, span.peak_residual);
+  return out;
+}
+
 // Each candidate once: the trial of the round it was accepted in, else its last.
 std::vector<const CandidateTrial*> final_trials(const ResidualResult& r) {
   std::vector<const CandidateTrial*> out;
@@ -122,6 +135,7 @@ std::string residual_summary(const std::vector<record::RecordedRun>& runs, const
       out += "\n";
     }
   }
+  out += robust_summary(r);
   out += format("after: RMS %.4g N, max %.4g N (%.1f%% of before)\n", r.after.all, r.after.max,
                 r.before.all > 0.0 ? 100.0 * r.after.all / r.before.all : 0.0);
   out += "unexplained: " + r.unexplained + "\n";
@@ -171,6 +185,14 @@ std::string residual_json(const ResidualResult& r, const ForceFitFigures* fit) {
       spans.push_back(std::move(entry));
     }
   }
+  Json down_weighted = Json::array();
+  for (const DownWeightedSpan& span : r.down_weighted)
+    down_weighted.push_back({{"run", span.run},
+                             {"start_s", span.start_s},
+                             {"end_s", span.end_s},
+                             {"samples", span.samples},
+                             {"lost_weight", span.lost_weight},
+                             {"peak_residual_N", span.peak_residual}});
   Json parameters = Json::array();
   for (const ParameterEstimate& p : r.parameters)
     parameters.push_back({{"name", p.name}, {"value", p.value}, {"sd", p.standard_deviation}, {"unit", p.unit}});
@@ -190,6 +212,11 @@ std::string residual_json(const ResidualResult& r, const ForceFitFigures* fit) {
                     {"ambiguity_tests", r.ambiguity_tests},
                     {"discovered", discovered},
                     {"screening", {{"excluded_samples", excluded}, {"spans", spans}}},
+                    {"robust",
+                     {{"sigma_N", r.robust_after.sigma},
+                      {"down_weighted_share", r.robust_after.down_weighted_share},
+                      {"base_refits", r.robust_refits},
+                      {"spans", down_weighted}}},
                     {"set_revisions", r.revisions},
                     {"unexplained", r.unexplained}};
   if (fit != nullptr) out["fit"] = force_fit_json(*fit);

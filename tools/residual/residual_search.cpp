@@ -88,8 +88,8 @@ struct Search {
 
   const FitSeries& full;
   const ResidualOptions& options;
-  const FitSeries fit_series;    // what the fits run on
-  const FitSeries swarm_series;  // the runs' openings: where the swarms that move B explore
+  FitSeries fit_series;    // what the fits run on; the robust loss weighs its samples
+  FitSeries swarm_series;  // the runs' openings: where the swarms that move B explore
   const SeriesScales scales;
   WorkerPool pool;
   std::uint64_t seed;
@@ -212,8 +212,10 @@ LinearEffects linear_effects_of(const model::DamperModel& model) {
 // twentieth of the pinning would otherwise take 600x the sub-steps of the origin); Nelder-Mead
 // with restarts there from the swarm's best and, with `from_origin`, from the origin's
 // coordinates (the config's damper, a prior, or a model already fitted), the two chains side by
-// side; then Nelder-Mead on the whole fitting series from the better. `space` is the whole space.
-FittedModel identify_base(Search& s, const model::DamperModel& origin, ParameterSpace& space, bool from_origin) {
+// side (and a third from `also_from`, when given); then Nelder-Mead on the whole fitting series
+// from the best. `space` is the whole space.
+FittedModel identify_base(Search& s, const model::DamperModel& origin, ParameterSpace& space, bool from_origin,
+                          const Point* also_from = nullptr) {
   const model::DamperModel& start = s.options.start;
   const FitSeries& openings = s.swarm_series;
   space = base_space(origin, start, s.scales, Magnetics::kMaterial);
@@ -225,6 +227,7 @@ FittedModel identify_base(Search& s, const model::DamperModel& origin, Parameter
   // The two chains, each serial, side by side.
   std::vector<Point> starts{swarm.theta};
   if (from_origin) starts.push_back(base_coordinates(origin, start, s.scales, Magnetics::kMaterial));
+  if (also_from != nullptr) starts.push_back(*also_from);
   std::vector<FittedModel> refined(starts.size());
   s.pool.run(starts.size(), [&](std::size_t k, unsigned /*worker*/) {
     refined[k] = refine_with_restarts(s, space, openings, starts[k]);
@@ -241,6 +244,34 @@ FittedModel identify_base(Search& s, const model::DamperModel& origin, Parameter
 FittedModel fit_base_model(Search& s, ParameterSpace& space) {
   if (s.options.progress != nullptr) s.options.progress->report({.stage = "base fit"});
   return identify_base(s, s.options.start, space, true);
+}
+
+// Step 3b, the robust loss. Where the least-squares base leaves a material share of the
+// fitting series' weight to Huber's loss (a fault no screening rule named), the base is
+// identified again with Huber's loss as the searches' fitness, its knee at the tuning times the
+// least-squares residual's robust sigma (a fault bends the swarm's exploration, not only the
+// last refinement); that base's residual then fixes the weights every later fit and judgement
+// runs with.
+FittedModel refit_robustly(Search& s, ParameterSpace& space, FittedModel base, int& refits) {
+  const RobustLoss& loss = s.options.robust;
+  if (!s.options.robust_fit || !(loss.tuning > 0.0)) return base;
+  const auto weigh = [&](const model::DamperModel& m) {
+    std::vector<double> force;
+    predict_force(m, s.fit_series, force);
+    return huber_weights(s.fit_series, force, loss);
+  };
+  const RobustWeights least_squares = weigh(base.model);
+  if (least_squares.down_weighted_share < loss.refit_share) return base;
+  s.fit_series.robust_knee = s.swarm_series.robust_knee = loss.tuning * least_squares.sigma;
+  base = identify_base(s, s.options.start, space, true, &base.theta);
+  // The knee again from the robust fit's residual, narrower: a fault's pull fades with it.
+  s.fit_series.robust_knee = loss.tuning * weigh(base.model).sigma;
+  base = refine_with_restarts(s, space, s.fit_series, base.theta);
+  s.fit_series.robust_knee = s.swarm_series.robust_knee = 0.0;
+  s.fit_series.weight = weigh(base.model).weight;
+  s.swarm_series = run_openings(s.fit_series, s.options.max_swarm_samples);
+  refits = 1;
+  return base;
 }
 
 // The candidates: the options' names (default: every effect), less those the start declares.
@@ -747,7 +778,8 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
 
   // 1-3. The base model and its residual.
   ParameterSpace base_fit_space;
-  const FittedModel base = fit_base_model(s, base_fit_space);
+  const FittedModel identified = fit_base_model(s, base_fit_space);
+  const FittedModel base = refit_robustly(s, base_fit_space, identified, result.robust_refits);
   result.base = reported(base.model);
   result.base_parameters = describe_base(base_fit_space, base, options.start);
   predict_force(result.base, full, result.predicted_before);
@@ -771,6 +803,8 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   result.evaluations = s.evaluations;
   result.after = residual_rms(full, result.predicted_after);
   result.structure_after = structure_of(full, result.predicted_after);
+  result.robust_after = huber_weights(full, result.predicted_after, options.robust);
+  result.down_weighted = down_weighted_spans(full, result.predicted_after, result.robust_after);
   std::vector<bool> kept(full.size());
   for (std::size_t i = 0; i < full.size(); ++i) kept[i] = full.validation[i] != FitSeries::kExcluded;
   result.fit_before_percent = nrmse_fit_percent(full.force, result.predicted_before, kept);

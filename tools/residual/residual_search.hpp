@@ -11,6 +11,7 @@
 #include "tools/residual/model_fit.hpp"
 #include "tools/residual/model_uncertainty.hpp"
 #include "tools/residual/residual_structure.hpp"
+#include "tools/residual/robust_weights.hpp"
 #include "tools/residual/term_discovery.hpp"
 #include "tools/progress.hpp"
 
@@ -43,6 +44,12 @@ struct ResidualOptions {
   unsigned threads = 0;  // 0: every core
   std::uint64_t seed = 1;
   bool discover = true;  // step 7: regress what the named effects left on the library of terms
+  // Step 3b (opt-in): a base that leaves a material share of weight to the robust loss is
+  // identified again under it, and every later fit and judgement weighs the samples. Off by
+  // default: an effect that acts on few samples (a coil lag at switch-on, stroke-end air) looks
+  // like a fault to the loss and is then missed. The down-weighted spans are reported either way.
+  bool robust_fit = false;
+  RobustLoss robust;
   ProgressSink* progress = nullptr;  // the base fit, then each round's candidates as they finish
 };
 
@@ -90,6 +97,11 @@ struct ResidualResult {
   ResidualStructure structure_before;
   ResidualStructure structure_after;
   std::string unexplained;
+  // The robust loss: how many times the base was refitted with its weights, and against the
+  // final model, the residual's robust sigma [N], the share of weight taken and where most.
+  int robust_refits = 0;
+  RobustWeights robust_after;  // its weights: per sample of the full series
+  std::vector<DownWeightedSpan> down_weighted;
   std::vector<double> predicted_before;  // per sample of the full series [N]
   std::vector<double> predicted_after;
   std::int64_t evaluations = 0;  // observer passes over the fitting series

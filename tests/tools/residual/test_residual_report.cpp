@@ -28,7 +28,7 @@ TEST(ResidualReport, JsonHasExactlyTheDocumentedKeys) {
   EXPECT_EQ(top, (std::set<std::string>{"samples", "rms_before_N", "fit_before_percent", "fit_after_percent", "parameters",
                                         "max_before_N", "effects", "effect", "rms_after_N", "max_after_N", "effect_params",
                                         "candidates", "ambiguous", "ambiguity_tests", "discovered", "screening",
-                                        "set_revisions", "unexplained"}));
+                                        "robust", "set_revisions", "unexplained"}));
   EXPECT_EQ(json["effect"], "gas_spring");
   EXPECT_TRUE(json["effect_params"]["gas_spring"].contains("preload_N")) << json.dump(2);
   // Doubles round-trip: the JSON holds the very bits of the result.

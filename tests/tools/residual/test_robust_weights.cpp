@@ -1,0 +1,133 @@
+// The fits' robust loss: Huber weights against an independent noise draw, and a fault that no
+// screening rule names (a load cell whose zero jumps for half a second) moving the fit little.
+#include "tools/residual/robust_weights.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+#include "tests/tools/residual/residual_test_support.hpp"
+#include "tools/residual/residual_report.hpp"
+
+namespace {
+
+using namespace mrd::tools;
+
+// A series of n samples at 1 kHz whose force is Gaussian noise of sigma 1 N about a zero
+// prediction, every sample fitting.
+FitSeries noise_series(std::size_t n, std::uint32_t seed) {
+  FitSeries s;
+  s.sample_period = 1e-3;
+  s.run_periods = {1e-3};
+  s.run_starts = {0};
+  s.run_names = {"noise.csv"};
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    s.time.push_back(10.0 + 1e-3 * static_cast<double>(i));
+    s.force.push_back(noise(rng));
+    s.displacement.push_back(0.0);
+    s.velocity.push_back(0.0);
+    s.current.push_back(0.0);
+    s.validation.push_back(FitSeries::kFitting);
+  }
+  return s;
+}
+
+TEST(RobustWeights, GaussianNoiseKeepsItsWeightBelowTheRefitShare) {
+  const FitSeries s = noise_series(20000, 7);
+  const std::vector<double> zero(s.size(), 0.0);
+  const RobustWeights w = huber_weights(s, zero);
+  EXPECT_NEAR(w.sigma, 1.0, 0.03);
+  // E[1 - 3/|z|; |z| > 3] for a unit normal is about 3e-4.
+  EXPECT_LT(w.down_weighted_share, RobustLoss{}.refit_share);
+  EXPECT_GT(w.down_weighted_share, 0.0);
+  EXPECT_TRUE(down_weighted_spans(s, zero, w).empty());
+}
+
+TEST(RobustWeights, AnOffsetSpanWeighsTheKneeOverItsResidualAndIsNamedFirst) {
+  FitSeries s = noise_series(20000, 11);
+  for (std::size_t i = 5000; i < 5300; ++i) s.force[i] += 30.0;  // 0.3 s, 30 sigmas off
+  for (std::size_t i = 12000; i < 12010; ++i) s.force[i] -= 10.0;
+  s.validation[5100] = FitSeries::kExcluded;
+  const std::vector<double> zero(s.size(), 0.0);
+  const RobustWeights w = huber_weights(s, zero);
+  EXPECT_NEAR(w.sigma, 1.0, 0.05);  // the MAD ignores the 310 faulted samples
+  EXPECT_NEAR(w.weight[5050], 3.0 * w.sigma / std::fabs(s.force[5050]), 1e-12);
+  EXPECT_EQ(w.weight[5100], 1.0);  // excluded: not the loss's to weigh
+  EXPECT_GT(w.down_weighted_share, 0.01);
+  const auto spans = down_weighted_spans(s, zero, w);
+  ASSERT_EQ(spans.size(), 2u);
+  EXPECT_EQ(spans[0].run, "noise.csv");
+  EXPECT_NEAR(spans[0].start_s, 15.0, 1e-9);
+  EXPECT_NEAR(spans[0].end_s, 15.299, 1e-9);
+  EXPECT_EQ(spans[0].samples, 299u);
+  EXPECT_NEAR(spans[1].start_s, 22.0, 1e-9);
+  EXPECT_GT(spans[0].lost_weight, spans[1].lost_weight);
+  EXPECT_GT(spans[0].peak_residual, 30.0);
+}
+
+TEST(RobustWeights, TuningZeroIsLeastSquares) {
+  FitSeries s = noise_series(2000, 3);
+  s.force[100] = 1e3;
+  const RobustWeights w = huber_weights(s, std::vector<double>(s.size(), 0.0), RobustLoss{.tuning = 0.0});
+  EXPECT_TRUE(std::ranges::all_of(w.weight, [](double x) { return x == 1.0; }));
+}
+
+// A load cell whose zero jumps by half the peak force for 0.5 s, while the rod moves: no
+// screening rule names it. Least squares bends the damper to pay for it; the robust fit
+// (--robust-fit) leaves the other samples' error where the unfaulted run has it; both name the span.
+TEST(RobustFit, AZeroJumpNoRuleNamesMovesTheFitLittleAndIsReported) {
+  const auto clean = residual_testing::simulated_recorded_run(RunProfile::kTable4, "1kN", {}, 6.0);
+  auto faulted = clean;
+  const auto [lo, hi] = std::minmax_element(clean.force.begin(), clean.force.end());
+  const double jump = 0.5 * std::max(*hi, -*lo);
+  const double from = clean.time.front() + 3.0, to = from + 0.5;
+  for (std::size_t i = 0; i < faulted.size(); ++i)
+    if (faulted.time[i] >= from && faulted.time[i] < to) faulted.force[i] += jump;
+  ResidualOptions options;
+  options.threads = 2;
+  options.discover = false;
+  ResidualOptions squares = options;
+  options.robust_fit = true;
+  const ResidualResult reference = find_missing_effects(make_fit_series({clean}, {}), options);
+  const ResidualResult robust = find_missing_effects(make_fit_series({faulted}, {}), options);
+  const ResidualResult plain = find_missing_effects(make_fit_series({faulted}, {}), squares);
+  ASSERT_EQ(robust.screenings.size(), 1u);
+  EXPECT_EQ(robust.screenings[0].second.excluded_samples, 0u);  // no rule names it
+  // The error against the clean force, on the samples outside the jump.
+  const auto outside_rms = [&](const ResidualResult& r) {
+    double sum = 0.0;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < clean.size(); ++i) {
+      if (clean.time[i] >= from - 0.05 && clean.time[i] < to + 0.05) continue;
+      sum += std::pow(clean.force[i] - r.predicted_after[i], 2);
+      ++n;
+    }
+    return std::sqrt(sum / static_cast<double>(n));
+  };
+  const double clean_rms = outside_rms(reference);
+  std::printf("outside the jump: unfaulted %.4g N, robust %.4g N, least squares %.4g N\n", clean_rms,
+              outside_rms(robust), outside_rms(plain));
+  EXPECT_LT(outside_rms(robust), 1.1 * clean_rms) << residual_summary({faulted}, robust);
+  EXPECT_GT(outside_rms(plain), 1.5 * clean_rms) << residual_summary({faulted}, plain);
+  EXPECT_GE(robust.robust_refits, 1);
+  EXPECT_EQ(plain.robust_refits, 0);
+  // Least squares reports the span all the same: it is what its fit could not explain.
+  ASSERT_FALSE(plain.down_weighted.empty());
+  EXPECT_LE(plain.down_weighted[0].start_s, from + 0.05);
+  EXPECT_EQ(robust.accepted, reference.accepted) << residual_summary({faulted}, robust);
+  ASSERT_FALSE(robust.down_weighted.empty());
+  EXPECT_LE(robust.down_weighted[0].start_s, from + 0.05);
+  EXPECT_GE(robust.down_weighted[0].end_s, to - 0.05);
+  const auto json = nlohmann::json::parse(residual_json(robust));
+  EXPECT_EQ(json["robust"]["spans"].size(), robust.down_weighted.size());
+  EXPECT_EQ(json["robust"]["base_refits"], robust.robust_refits);
+}
+
+}  // namespace
+
