@@ -37,7 +37,6 @@ void append_sample(FitSeries& to, const FitSeries& from, std::size_t i) {
   to.force.push_back(from.force[i]);
   if (!from.temperature.empty()) to.temperature.push_back(from.temperature[i]);
   if (!from.time.empty()) to.time.push_back(from.time[i]);
-  if (!from.weight.empty()) to.weight.push_back(from.weight[i]);
   to.validation.push_back(from.validation[i]);
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "record/recorded_run.hpp"
+#include "tools/residual/fit_loss.hpp"
 #include "tools/residual/screening.hpp"
 
 namespace mrd::tools {
@@ -22,13 +23,9 @@ struct FitSeries {
   std::vector<double> force;         // [N], measured
   std::vector<double> temperature;   // [degC], empty when no run recorded it
   std::vector<double> time;          // [s], each run's own clock (gap samples at the nominal period)
-  // The robust loss's weight of each sample in the fits (robust_weights.hpp); empty: every
-  // sample weighs 1. Only the searches' series carry it: what the reports quote is unweighted.
-  std::vector<double> weight;
-  [[nodiscard]] double weight_of(std::size_t i) const { return weight.empty() ? 1.0 : weight[i]; }
-  // > 0 [N]: the searches' fitness is Cauchy's loss with this knee (model_fit.cpp, fit_trial),
-  // not the RMS: how a base is identified again on a run the robust loss found a fault in.
-  double robust_knee = 0.0;
+  // What the fits on this series minimise, and residual_rms reports. Only the searches' series
+  // carry a robust loss (--robust-fit): what the reports quote is an RMS.
+  FitLoss loss;
   // The first sample of each run: the model starts again from a demagnetised core there.
   std::vector<std::size_t> run_starts;
   std::vector<std::string> run_names;  // one per run start, for the reports

@@ -82,9 +82,8 @@ ResidualRms residual_rms(const FitSeries& series, const std::vector<double>& pre
   for (std::size_t i = 0; i < series.size(); ++i) {
     if (series.validation[i] == FitSeries::kExcluded) continue;
     const double r = series.force[i] - predicted[i];
-    const double w = series.weight_of(i);
-    sum[series.validation[i]] += w * r * r;
-    weight[series.validation[i]] += w;
+    sum[series.validation[i]] += series.loss.rho(r);
+    weight[series.validation[i]] += 1.0;
     out.max = std::max(out.max, std::fabs(r));
   }
   const auto rms = [](double s, double w) { return w > 0.0 ? std::sqrt(s / w) : 0.0; };
@@ -193,7 +192,7 @@ NormalVector solve_holding(const NormalMatrix& normal, const NormalVector& rhs, 
 
 namespace {
 
-// fit_linear_terms with `weights` per sample in place of the series' own (empty: the series').
+// fit_linear_terms with `weights` per sample (empty: every sample 1).
 LinearTerms solve_linear_terms(const FitSeries& series, const std::vector<double>& predicted,
                                const LinearEffects& effects, const model::DamperModel* present,
                                const std::vector<double>& weights) {
@@ -209,7 +208,7 @@ LinearTerms solve_linear_terms(const FitSeries& series, const std::vector<double
   for (std::size_t i = 0; i < series.size(); ++i) {
     if (series.validation[i] != 0) continue;
     fill_columns(series, predicted, effects, base, i, column);
-    const double w = weights.empty() ? series.weight_of(i) : weights[i];
+    const double w = weights.empty() ? 1.0 : weights[i];
     for (int r = 0; r < n; ++r) {
       rhs[r] += w * column[r] * series.force[i];
       for (int c = 0; c < n; ++c) normal(r, c) += w * column[r] * column[c];
@@ -281,9 +280,8 @@ double linear_fit_rms(const FitSeries& series, const std::vector<double>& predic
   double weight = 0.0;
   for (std::size_t i = 0; i < series.size(); ++i) {
     if (series.validation[i] != 0) continue;
-    const double w = series.weight_of(i);
-    sum += w * residual[i] * residual[i];
-    weight += w;
+    sum += series.loss.rho(residual[i]);
+    weight += 1.0;
   }
   return weight > 0.0 ? std::sqrt(sum / weight) : 0.0;
 }
@@ -317,37 +315,21 @@ struct TrialFit {
   double fitness = 0.0;  // [N]
 };
 
-// The linear terms at one trial point and the fitness they leave: least squares, or, with the
-// series' robust_knee c, Cauchy's loss rho(r) = c^2 log(1 + (r/c)^2) (the terms by reweighted
-// solves), its fitness sqrt(mean rho(r)): the RMS where residuals lie well inside the knee,
-// while a fault's samples far beyond it pull with c^2/r, fading as the fault grows (Huber's
-// loss keeps a pull of c per sample: a long fault still bends the fit). The knee is the
-// series', not each trial's: a trial's own scale would let a model that errs widely but with a
-// narrow core pay less for a fault's samples.
+// The linear terms at one trial point and the fitness they leave, sqrt(mean rho(r)) of the
+// series' loss: by least squares, or under a robust loss by reweighted solves from the
+// least-squares terms.
 TrialFit fit_trial(const FitSeries& series, const std::vector<double>& predicted, const LinearEffects& effects,
                    const model::DamperModel& present) {
   TrialFit out{fit_linear_terms(series, predicted, effects, &present), 0.0};
-  const double knee = series.robust_knee;
-  if (!(knee > 0.0)) {
-    out.fitness = linear_fit_rms(series, predicted, out.terms);
-    return out;
+  if (!series.loss.squares()) {
+    std::vector<double> residual, weight(series.size(), 1.0);
+    for (int pass = 0; pass < kRobustSolves; ++pass) {
+      linear_fit_residuals(series, predicted, out.terms, residual);
+      for (std::size_t i = 0; i < series.size(); ++i) weight[i] = series.loss.weight(residual[i]);
+      out.terms = solve_linear_terms(series, predicted, effects, &present, weight);
+    }
   }
-  const auto relative = [knee](double r) { return (r / knee) * (r / knee); };
-  std::vector<double> residual, weight(series.size(), 1.0);
-  for (int pass = 0; pass < kRobustSolves; ++pass) {
-    linear_fit_residuals(series, predicted, out.terms, residual);
-    for (std::size_t i = 0; i < series.size(); ++i) weight[i] = 1.0 / (1.0 + relative(residual[i]));
-    out.terms = solve_linear_terms(series, predicted, effects, &present, weight);
-  }
-  linear_fit_residuals(series, predicted, out.terms, residual);
-  double sum = 0.0;
-  std::size_t count = 0;
-  for (std::size_t i = 0; i < series.size(); ++i) {
-    if (series.validation[i] != 0) continue;
-    sum += knee * knee * std::log1p(relative(residual[i]));
-    ++count;
-  }
-  out.fitness = count > 0 ? std::sqrt(sum / static_cast<double>(count)) : 0.0;
+  out.fitness = linear_fit_rms(series, predicted, out.terms);
   return out;
 }
 

@@ -42,7 +42,7 @@ void predict_force_and_induction(const model::DamperModel& model, const FitSerie
                                  std::vector<double>& force, std::vector<double>& B);
 
 // RMS [N] of measured - predicted over the fitting samples, the validation samples and all;
-// weighted by the series' robust weights where it carries them (the searches' series).
+// under a robust loss (the searches' series with --robust-fit), sqrt(mean rho(r)) of it.
 struct ResidualRms {
   double fitting = 0.0;
   double validation = 0.0;
@@ -78,7 +78,8 @@ struct LinearTerms {
 // rejected one.
 LinearTerms fit_linear_terms(const FitSeries& series, const std::vector<double>& predicted,
                              const LinearEffects& effects, const model::DamperModel* present = nullptr);
-// F_fit - (a F_m + ...) as above, over the fitting samples: the search's fitness [N RMS].
+// F_fit - (a F_m + ...) as above, over the fitting samples: the search's fitness [N RMS;
+// sqrt(mean rho(r)) under the series' robust loss].
 double linear_fit_rms(const FitSeries& series, const std::vector<double>& predicted,
                       const LinearTerms& terms);
 

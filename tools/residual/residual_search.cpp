@@ -246,30 +246,35 @@ FittedModel fit_base_model(Search& s, ParameterSpace& space) {
   return identify_base(s, s.options.start, space, true);
 }
 
-// Step 3b, the robust loss. Where the least-squares base leaves a material share of the
-// fitting series' weight to Huber's loss (a fault no screening rule named), the base is
-// identified again with Huber's loss as the searches' fitness, its knee at the tuning times the
-// least-squares residual's robust sigma (a fault bends the swarm's exploration, not only the
-// last refinement); that base's residual then fixes the weights every later fit and judgement
-// runs with.
+// Step 3b, the robust loss (--robust-fit). Where the least-squares base leaves a material share
+// of the fitting series' weight to Huber's loss (a fault no screening rule named), the base is
+// identified again under Cauchy's loss, its knee at the tuning times the least-squares
+// residual's robust sigma (a fault bends the swarm's exploration, not only the last
+// refinement), then refined with the knee from its own residual, narrower: a fault's pull
+// fades with the knee. Every later fit and judgement runs under Huber's loss at that knee:
+// a candidate that explains samples far off the base (a coil lag at switch-on) still gains
+// their whole distance, linearly, where Cauchy's would hardly see it coming.
 FittedModel refit_robustly(Search& s, ParameterSpace& space, FittedModel base, int& refits) {
   const RobustLoss& loss = s.options.robust;
   if (!s.options.robust_fit || !(loss.tuning > 0.0)) return base;
-  const auto weigh = [&](const model::DamperModel& m) {
+  const auto sigma_of = [&](const model::DamperModel& m) {
+    FitSeries plain = s.fit_series;
+    plain.loss = {};
     std::vector<double> force;
-    predict_force(m, s.fit_series, force);
-    return huber_weights(s.fit_series, force, loss);
+    predict_force(m, plain, force);
+    return huber_weights(plain, force, loss);
   };
-  const RobustWeights least_squares = weigh(base.model);
+  const auto set_loss = [&](FitLoss::Kind kind, double sigma) {
+    s.fit_series.loss = s.swarm_series.loss = FitLoss{kind, loss.tuning * sigma};
+  };
+  const RobustWeights least_squares = sigma_of(base.model);
   if (least_squares.down_weighted_share < loss.refit_share) return base;
-  s.fit_series.robust_knee = s.swarm_series.robust_knee = loss.tuning * least_squares.sigma;
+  set_loss(FitLoss::Kind::kCauchy, least_squares.sigma);
   base = identify_base(s, s.options.start, space, true, &base.theta);
-  // The knee again from the robust fit's residual, narrower: a fault's pull fades with it.
-  s.fit_series.robust_knee = loss.tuning * weigh(base.model).sigma;
+  const double sigma = sigma_of(base.model).sigma;
+  set_loss(FitLoss::Kind::kCauchy, sigma);
   base = refine_with_restarts(s, space, s.fit_series, base.theta);
-  s.fit_series.robust_knee = s.swarm_series.robust_knee = 0.0;
-  s.fit_series.weight = weigh(base.model).weight;
-  s.swarm_series = run_openings(s.fit_series, s.options.max_swarm_samples);
+  set_loss(FitLoss::Kind::kHuber, sigma_of(base.model).sigma);
   refits = 1;
   return base;
 }

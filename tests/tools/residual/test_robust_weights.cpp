@@ -71,6 +71,25 @@ TEST(RobustWeights, AnOffsetSpanWeighsTheKneeOverItsResidualAndIsNamedFirst) {
   EXPECT_GT(spans[0].peak_residual, 30.0);
 }
 
+// Each loss's weight is rho'(r) / 2r (by central differences), rho reads r^2 well inside the
+// knee, and beyond it Huber's grows linearly and Cauchy's logarithmically.
+TEST(FitLoss, WeightsAreTheLossSlopeOverTwiceTheResidual) {
+  for (const FitLoss::Kind kind : {FitLoss::Kind::kSquares, FitLoss::Kind::kHuber, FitLoss::Kind::kCauchy}) {
+    const FitLoss loss{kind, 6.0};
+    for (const double r : {-400.0, -9.0, -0.5, 0.3, 5.9, 6.1, 60.0, 3000.0}) {
+      const double h = 1e-5 * std::max(1.0, std::fabs(r));
+      const double slope = (loss.rho(r + h) - loss.rho(r - h)) / (2.0 * h);
+      EXPECT_NEAR(loss.weight(r), slope / (2.0 * r), 1e-6) << static_cast<int>(kind) << " r " << r;
+    }
+    EXPECT_NEAR(loss.rho(0.06), 0.0036, 1e-6);
+  }
+  const FitLoss huber{FitLoss::Kind::kHuber, 6.0}, cauchy{FitLoss::Kind::kCauchy, 6.0};
+  EXPECT_DOUBLE_EQ(huber.rho(600.0), 2.0 * 6.0 * 600.0 - 36.0);
+  EXPECT_DOUBLE_EQ(cauchy.rho(600.0), 36.0 * std::log(1.0 + 1e4));
+  EXPECT_TRUE(FitLoss{}.squares());
+  EXPECT_TRUE((FitLoss{FitLoss::Kind::kHuber, 0.0}.squares()));  // no knee: least squares
+}
+
 TEST(RobustWeights, TuningZeroIsLeastSquares) {
   FitSeries s = noise_series(2000, 3);
   s.force[100] = 1e3;
