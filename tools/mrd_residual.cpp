@@ -58,6 +58,9 @@ int main(int argc, char** argv) {
   bool no_screening = false;
   app.add_flag("--no-screening", no_screening,
                "fit every sample, even those screening finds no damper produced (clipped, stuck, spikes, gaps)");
+  app.add_flag("--settle-start", series_options.settle_start,
+               "set aside each run's start until the coil current first reaches its extreme: the core had a "
+               "history before the record began (docs/CLOSING-THE-LOOP.md, \"Bad input\")");
   bool no_discovery = false;
   app.add_flag("--no-discovery", no_discovery,
                "do not regress what the named effects leave on the library of terms (docs/CLOSING-THE-LOOP.md)");

@@ -141,8 +141,10 @@ FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const Fi
                              ? ""
                              : ", on each stretch between the logging gaps and the spans set aside"));
     }
-    // After the velocity: the samples beside a gap are measurements, set aside but not bridged.
+    // After the velocity: the samples beside a gap are measurements, set aside but not bridged;
+    // so are those the model's J-A state cannot yet follow.
     set_aside_gaps(gap_filled, options.screening.margin_s, screening);
+    set_aside(screening, even, settling_spans(even, gap_filled.gaps, options.settle_start), 0.0);
     check_motion(even, screening);
     s.run_starts.push_back(s.size());
     s.run_names.push_back(recorded.name);
@@ -165,7 +167,7 @@ FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const Fi
                                  ? held_out[static_cast<std::size_t>(block)]
                                  : FitSeries::kExcluded);
     }
-    if (options.screen || !gap_filled.gaps.empty()) s.screenings.emplace_back(recorded.name, std::move(screening));
+    if (options.screen || !screening.spans.empty()) s.screenings.emplace_back(recorded.name, std::move(screening));
     s.screened = options.screen;
   }
   check_enough_kept(s, runs);

@@ -27,7 +27,7 @@ std::string screening_summary(const ResidualResult& r) {
     std::size_t gaps = 0;
     for (const auto& [run, s] : r.screenings) gaps += s.excluded_samples;
     return gaps == 0 ? std::string("screening: off (--no-screening)\n")
-                     : format("screening: off (--no-screening); %zu samples of logging gaps set aside\n", gaps);
+                     : format("screening: off (--no-screening); %zu samples of logging gaps and J-A settling set aside\n", gaps);
   }
   std::string out;
   std::size_t excluded = 0, lines = 0, total = 0;

@@ -15,6 +15,7 @@ std::string_view to_string(ScreenReason r) {
     case ScreenReason::kTimeConflict: return "time_conflict";
     case ScreenReason::kNonFinite: return "non_finite";
     case ScreenReason::kImplausible: return "implausible";
+    case ScreenReason::kSettling: return "settling";
   }
   return "?";
 }
@@ -234,6 +235,25 @@ double sample_noise(const std::vector<double>& c, const std::vector<std::uint8_t
   auto mid = r.begin() + static_cast<std::ptrdiff_t>(r.size() / 2);
   std::nth_element(r.begin(), mid, r.end());
   return 1.4826 * *mid / std::sqrt(1.5);  // r's sigma is sqrt(1.5) of one sample's
+}
+
+std::vector<ScreenedSpan> settling_spans(const record::RecordedRun& run,
+                                         const std::vector<std::pair<std::size_t, std::size_t>>& gaps,
+                                         bool from_start, double share, double longest_s) {
+  std::vector<ScreenedSpan> spans;
+  if (run.coil.empty()) return spans;
+  const auto [lo, hi] = std::minmax_element(run.coil.begin(), run.coil.end());
+  const double largest = std::max(std::fabs(*lo), std::fabs(*hi));
+  if (!(largest > 0.0) || !(*hi - *lo > 0.05 * largest)) return spans;
+  const auto longest = static_cast<std::size_t>(std::ceil(longest_s * run.sample_rate));
+  const auto settle_from = [&](std::size_t first) {
+    std::size_t i = first;
+    while (i < run.size() && i - first < longest && std::fabs(run.coil[i]) < share * largest) ++i;
+    if (i > first) spans.push_back({first, i - 1, 0.0, 0.0, "current", ScreenReason::kSettling});
+  };
+  if (from_start) settle_from(0);
+  for (const auto& [first, last] : gaps) settle_from(last + 1);
+  return spans;
 }
 
 void set_aside(Screening& screening, const record::RecordedRun& run, std::vector<ScreenedSpan> found, double margin_s) {

@@ -22,6 +22,9 @@ enum class ScreenReason : std::uint8_t {
   kTimeConflict,  // the same time with other values, or time going back
   kNonFinite,     // an empty, nan or inf cell
   kImplausible,   // the force swings through both signs again and again while the rod stands still
+  // The model's own: the core's state is not the record's until the current first reaches its
+  // extreme, at a varying-current run's start and after a logging gap (settling_spans).
+  kSettling,
 };
 [[nodiscard]] std::string_view to_string(ScreenReason r);
 
@@ -69,6 +72,17 @@ Screening screen_run(const record::RecordedRun& run, const ScreeningOptions& opt
 // spreads a fault), timed on the run, their samples excluded, and merged into `screening` in
 // sample order: how screen_run sets its faults aside, and how a caller adds spans of its own.
 void set_aside(Screening& screening, const record::RecordedRun& run, std::vector<ScreenedSpan> found, double margin_s);
+
+// Where the J-A state cannot be known from the record: from the end of each of `gaps` (the
+// bridge is not the current the coil carried) and, with `from_start`, from the run's start (the
+// core's history before it is not logged), until |coil| first reaches `share` of its largest
+// value over the run, at most `longest_s` [s] each; a loop tip wipes out J-A's memory of what
+// came before. None where the coil current does not vary by 5 % of its largest value (a
+// constant current's state is settled by its first sample). Spans of `run`'s samples, reason
+// kSettling, channel "current".
+std::vector<ScreenedSpan> settling_spans(const record::RecordedRun& run,
+                                         const std::vector<std::pair<std::size_t, std::size_t>>& gaps,
+                                         bool from_start, double share = 0.95, double longest_s = 2.0);
 
 // The model's inputs (displacement, velocity, coil) interpolated linearly across the excluded
 // samples, so that the model's state runs through a fault sanely; the force is left as it is
