@@ -252,21 +252,21 @@ LinearTerms fit_linear_terms(const FitSeries& series, const std::vector<double>&
 
 namespace {
 
-// F_fit - (a F_m + ...) per sample of the series; 0 where the sample does not fit.
-void linear_fit_residuals(const FitSeries& series, const std::vector<double>& predicted, const LinearTerms& t,
-                          std::vector<double>& residual) {
+// Calls visit(i, F_fit - (a F_m + ...)) for each fitting sample i of the series.
+template <class Visit>
+void for_each_linear_residual(const FitSeries& series, const std::vector<double>& predicted, const LinearTerms& t,
+                              Visit visit) {
   const BaseColumns base{t.shapes, t.friction_column};
   const int n = column_count(t.effects, base);
   double coefficients[kMaxLinearColumns] = {t.force_scale, t.extra_viscous, t.extra_friction};
   std::copy(t.coefficients.begin(), t.coefficients.end(), coefficients + base_column_count(base));
-  residual.assign(series.size(), 0.0);
   for (std::size_t i = 0; i < series.size(); ++i) {
     if (series.validation[i] != 0) continue;
     double column[kMaxLinearColumns];
     fill_columns(series, predicted, t.effects, base, i, column);
     double f = 0.0;
     for (int c = 0; c < n; ++c) f += coefficients[c] * column[c];
-    residual[i] = series.force[i] - f;
+    visit(i, series.force[i] - f);
   }
 }
 
@@ -274,16 +274,13 @@ void linear_fit_residuals(const FitSeries& series, const std::vector<double>& pr
 
 double linear_fit_rms(const FitSeries& series, const std::vector<double>& predicted,
                       const LinearTerms& t) {
-  std::vector<double> residual;
-  linear_fit_residuals(series, predicted, t, residual);
   double sum = 0.0;
-  double weight = 0.0;
-  for (std::size_t i = 0; i < series.size(); ++i) {
-    if (series.validation[i] != 0) continue;
-    sum += series.loss.rho(residual[i]);
-    weight += 1.0;
-  }
-  return weight > 0.0 ? std::sqrt(sum / weight) : 0.0;
+  double count = 0.0;
+  for_each_linear_residual(series, predicted, t, [&](std::size_t, double r) {
+    sum += series.loss.rho(r);
+    count += 1.0;
+  });
+  return count > 0.0 ? std::sqrt(sum / count) : 0.0;
 }
 
 model::DamperModel apply_linear_terms(model::DamperModel m, const LinearTerms& t) {
@@ -322,10 +319,10 @@ TrialFit fit_trial(const FitSeries& series, const std::vector<double>& predicted
                    const model::DamperModel& present) {
   TrialFit out{fit_linear_terms(series, predicted, effects, &present), 0.0};
   if (!series.loss.squares()) {
-    std::vector<double> residual, weight(series.size(), 1.0);
+    std::vector<double> weight(series.size(), 1.0);
     for (int pass = 0; pass < kRobustSolves; ++pass) {
-      linear_fit_residuals(series, predicted, out.terms, residual);
-      for (std::size_t i = 0; i < series.size(); ++i) weight[i] = series.loss.weight(residual[i]);
+      for_each_linear_residual(series, predicted, out.terms,
+                               [&](std::size_t i, double r) { weight[i] = series.loss.weight(r); });
       out.terms = solve_linear_terms(series, predicted, effects, &present, weight);
     }
   }
