@@ -52,8 +52,9 @@ std::string robust_summary(const ResidualResult& r) {
   const RobustWeights& w = r.robust_after;
   std::string out = format("robust loss: Huber at %g sigma (sigma %.4g N); %.2f%% of the kept samples' weight taken",
                            ResidualOptions{}.robust.tuning, w.sigma, 100.0 * w.down_weighted_share);
-  out += r.robust_refits > 0 ? format("; the base refitted with its weights %d time%s\n", r.robust_refits, r.robust_refits > 1 ? "s" : "")
-                             : std::string("; the base needed no refit\n");
+  out += !r.robust_fit         ? std::string("; the fits are least squares (--robust-fit not asked)\n")
+         : r.robust_refits > 0 ? std::string("; the base identified again under the robust loss (--robust-fit)\n")
+                               : std::string("; least squares sufficed (--robust-fit: too little weight taken)\n");
   for (const DownWeightedSpan& span : r.down_weighted)
     out += format("  down-weighted most: %s %.4f-%.4f s, %zu samples, peak residual %.4g N\n", span.run.c_str(),
                   span.start_s, span.end_s, span.samples, span.peak_residual);

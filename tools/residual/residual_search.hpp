@@ -99,6 +99,7 @@ struct ResidualResult {
   std::string unexplained;
   // The robust loss: how many times the base was refitted with its weights, and against the
   // final model, the residual's robust sigma [N], the share of weight taken and where most.
+  bool robust_fit = false;  // whether --robust-fit was asked
   int robust_refits = 0;
   RobustWeights robust_after;  // its weights: per sample of the full series
   std::vector<DownWeightedSpan> down_weighted;
