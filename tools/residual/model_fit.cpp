@@ -6,7 +6,7 @@
 #include <numeric>
 
 #include "model/observer.hpp"
-#include "tools/identification/particle_swarm.hpp"
+#include "tools/optimisation/particle_swarm.hpp"
 
 namespace mrd::tools {
 

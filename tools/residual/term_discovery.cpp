@@ -6,8 +6,8 @@
 #include <numbers>
 
 #include "model/effects/learned_terms.hpp"
-#include "tools/replay/zero_phase_velocity.hpp"
 #include "tools/residual/model_fit.hpp"
+#include "tools/signal/zero_phase_velocity.hpp"
 #include "tools/text_format.hpp"
 
 namespace mrd::tools {

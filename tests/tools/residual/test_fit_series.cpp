@@ -9,7 +9,7 @@
 #include <numeric>
 
 #include "record/csv.hpp"
-#include "tools/replay/zero_phase_velocity.hpp"
+#include "tools/signal/zero_phase_velocity.hpp"
 
 namespace {
 
