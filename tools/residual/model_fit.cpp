@@ -80,10 +80,10 @@ ResidualRms residual_rms(const FitSeries& series, const std::vector<double>& pre
   std::size_t count[2] = {0, 0};
   ResidualRms out;
   for (std::size_t i = 0; i < series.size(); ++i) {
-    if (series.validation[i] == FitSeries::kExcluded) continue;
+    if (series.role[i] == SampleRole::kExcluded) continue;
     const double r = series.force[i] - predicted[i];
-    sum[series.validation[i]] += r * r;
-    ++count[series.validation[i]];
+    sum[static_cast<std::size_t>(series.role[i])] += r * r;
+    ++count[static_cast<std::size_t>(series.role[i])];
     out.max = std::max(out.max, std::fabs(r));
   }
   const auto rms = [](double s, std::size_t n) { return n > 0 ? std::sqrt(s / static_cast<double>(n)) : 0.0; };
@@ -202,7 +202,7 @@ LinearTerms fit_linear_terms(const FitSeries& series, const std::vector<double>&
   NormalVector rhs = NormalVector::Zero(n);
   double column[kMaxLinearColumns];
   for (std::size_t i = 0; i < series.size(); ++i) {
-    if (series.validation[i] != 0) continue;
+    if (series.role[i] != SampleRole::kFitting) continue;
     fill_columns(series, predicted, effects, base, i, column);
     for (int r = 0; r < n; ++r) {
       rhs[r] += column[r] * series.force[i];
@@ -247,7 +247,7 @@ double linear_fit_rms(const FitSeries& series, const std::vector<double>& predic
   double sum = 0.0;
   std::size_t count = 0;
   for (std::size_t i = 0; i < series.size(); ++i) {
-    if (series.validation[i] != 0) continue;
+    if (series.role[i] != SampleRole::kFitting) continue;
     double column[kMaxLinearColumns];
     fill_columns(series, predicted, t.effects, base, i, column);
     double f = 0.0;

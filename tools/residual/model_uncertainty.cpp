@@ -58,7 +58,7 @@ std::vector<ParameterEstimate> model_uncertainty(const model::DamperModel& fitte
     std::vector<double> r;
     r.reserve(series.size());
     for (std::size_t i = 0; i < series.size(); ++i)
-      if (series.validation[i] != FitSeries::kExcluded) r.push_back(series.force[i] - force[i]);
+      if (series.role[i] != SampleRole::kExcluded) r.push_back(series.force[i] - force[i]);
     return r;
   };
   const ParameterUncertainty u = parameter_uncertainty(residuals, x);

@@ -260,7 +260,7 @@ std::string plot_residual(const FitSeries& s, const ResidualResult& r, const std
       out << static_cast<double>(i) * s.sample_period << ' ' << 1e3 * s.displacement[i] << ' ' << 1e3 * s.velocity[i]
           << ' ' << s.force[i] << ' ' << r.predicted_before[i] << ' ' << r.predicted_after[i] << ' '
           << s.force[i] - r.predicted_before[i] << ' ' << s.force[i] - r.predicted_after[i] << ' '
-          << (s.validation[i] == FitSeries::kExcluded ? 1 : 0) << '\n';
+          << (s.role[i] == SampleRole::kExcluded ? 1 : 0) << '\n';
     }
     if (!out) return "cannot write " + data;
   }
@@ -315,7 +315,7 @@ ForceFitTraces residual_traces(const std::vector<record::RecordedRun>& runs, con
   traces.baseline_label = "base model";
   if (r.screened) {
     traces.keep.resize(s.size());
-    for (std::size_t i = 0; i < s.size(); ++i) traces.keep[i] = s.validation[i] != FitSeries::kExcluded;
+    for (std::size_t i = 0; i < s.size(); ++i) traces.keep[i] = s.role[i] != SampleRole::kExcluded;
   }
   return traces;
 }

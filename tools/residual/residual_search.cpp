@@ -772,7 +772,7 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   result.after = residual_rms(full, result.predicted_after);
   result.structure_after = structure_of(full, result.predicted_after);
   std::vector<bool> kept(full.size());
-  for (std::size_t i = 0; i < full.size(); ++i) kept[i] = full.validation[i] != FitSeries::kExcluded;
+  for (std::size_t i = 0; i < full.size(); ++i) kept[i] = full.role[i] != SampleRole::kExcluded;
   result.fit_before_percent = nrmse_fit_percent(full.force, result.predicted_before, kept);
   result.fit_after_percent = nrmse_fit_percent(full.force, result.predicted_after, kept);
   // Its Jacobian with the searches' J-A sub-steps: a difference quotient, not a reported figure.
