@@ -329,7 +329,10 @@ Round try_candidates(Search& s, const model::DamperModel& current, double curren
     trial.rms_after = on_full.all;
     trial.max_after = on_full.max;
     trial.parameters = effect.report(fit.model.effects);
-    if (const auto why = effect.implausible(fit.model.effects, s.scales)) trial.verdict = "not physical: " + *why;
+    if (const auto why = effect.implausible(fit.model.effects, s.scales)) {
+      trial.verdict = TrialVerdict::kNotPhysical;
+      trial.explanation = "not physical: " + *why;
+    }
     round.fits[k] = std::move(fit);
     report(effect.name);
   });
@@ -344,21 +347,25 @@ std::size_t judge_round(Round& round, double current_validation, double threshol
   for (CandidateTrial& trial : round.trials) {
     trial.validation_before = baseline;
     const double reduction = 1.0 - trial.validation_rms / std::max(baseline, 1e-300);
-    if (trial.verdict.empty() && reduction < threshold)
-      trial.verdict = format("validation RMS falls %.1f%%, below the %.0f%% threshold", 100.0 * reduction,
-                             100.0 * threshold);
+    if (trial.verdict == TrialVerdict::kUndecided && reduction < threshold) {
+      trial.verdict = TrialVerdict::kBelowThreshold;
+      trial.explanation = format("validation RMS falls %.1f%%, below the %.0f%% threshold", 100.0 * reduction,
+                                 100.0 * threshold);
+    }
   }
   std::size_t best = round.trials.size();
   for (std::size_t i = 0; i < round.trials.size(); ++i) {
-    if (!round.trials[i].verdict.empty()) continue;
+    if (round.trials[i].verdict != TrialVerdict::kUndecided) continue;
     if (best == round.trials.size() || round.trials[i].validation_rms < round.trials[best].validation_rms) best = i;
   }
   if (best == round.trials.size()) return best;
   CandidateTrial& winner = round.trials[best];
-  winner.accepted = true;
-  winner.verdict = format("accepted: validation RMS %.4g -> %.4g N", winner.validation_before, winner.validation_rms);
+  winner.verdict = TrialVerdict::kAccepted;
+  winner.explanation = format("accepted: validation RMS %.4g -> %.4g N", winner.validation_before, winner.validation_rms);
   for (CandidateTrial& trial : round.trials) {
-    if (trial.verdict.empty()) trial.verdict = format("passes, but %s lowers the validation error more", winner.effect.c_str());
+    if (trial.verdict != TrialVerdict::kUndecided) continue;
+    trial.verdict = TrialVerdict::kOutperformed;
+    trial.explanation = format("passes, but %s lowers the validation error more", winner.effect.c_str());
   }
   return best;
 }
@@ -370,11 +377,12 @@ Effects ambiguous_with_winner(Round& round, const Effects& candidates, std::size
   const CandidateTrial& winner = round.trials[best];
   for (std::size_t i = 0; i < round.trials.size(); ++i) {
     CandidateTrial& trial = round.trials[i];
-    if (i == best || !trial.verdict.starts_with("passes")) continue;
+    if (i == best || trial.verdict != TrialVerdict::kOutperformed) continue;
     const double margin = 1.0 - winner.validation_rms / std::max(trial.validation_rms, 1e-300);
     if (margin >= threshold) continue;
-    trial.verdict = format("ambiguous with %s: validation RMS %.4g N, within %.1f%% of it (threshold %.0f%%)",
-                           winner.effect.c_str(), trial.validation_rms, 100.0 * margin, 100.0 * threshold);
+    trial.verdict = TrialVerdict::kAmbiguous;
+    trial.explanation = format("ambiguous with %s: validation RMS %.4g N, within %.1f%% of it (threshold %.0f%%)",
+                               winner.effect.c_str(), trial.validation_rms, 100.0 * margin, 100.0 * threshold);
     alike.push_back(candidates[i]);
   }
   return alike;
@@ -448,7 +456,7 @@ void revise_set(Search& s, AcceptedSet& set, ResidualResult& result) {
     Round round = try_candidates(s, rest.model, rest.validation, set.rivals[k], 0);
     std::size_t best = set.rivals[k].size();
     for (std::size_t i = 0; i < round.trials.size(); ++i) {
-      if (!round.trials[i].verdict.empty()) continue;  // not physical
+      if (round.trials[i].verdict == TrialVerdict::kNotPhysical) continue;
       if (best == set.rivals[k].size() || round.trials[i].validation_rms < round.trials[best].validation_rms) best = i;
     }
     if (best == set.rivals[k].size() || !(round.trials[best].validation_rms < set.validation)) continue;
@@ -559,14 +567,14 @@ void weigh_effects_against_terms(Search& s, AcceptedSet& set, const model::Dampe
       return;  // the other effects' rests included this one: no longer valid
     }
     const double margin = 1.0 - std::min(terms_validation, set.validation) / std::max(terms_validation, set.validation);
-    std::vector<std::string> group{std::string(effect.name)};
-    for (const DiscoveredTerm& t : instead.discovery.terms) group.push_back(t.term);
-    result.ambiguous.push_back(std::move(group));
-    result.ambiguity_tests.push_back(format(
+    AmbiguousGroup group{.members = {std::string(effect.name)}};
+    for (const DiscoveredTerm& t : instead.discovery.terms) group.members.push_back(t.term);
+    group.separating_run = format(
         "%s (validation RMS %.4g N) and the terms %s in its place (%.4g N) are within %.1f%% of each other; "
         "to separate them, run: %s",
         std::string(effect.name).c_str(), set.validation, terms, terms_validation, 100.0 * margin,
-        std::string(effect.separated_by).c_str()));
+        std::string(effect.separated_by).c_str());
+    result.ambiguous.push_back(std::move(group));
   }
 }
 
@@ -575,18 +583,18 @@ void weigh_effects_against_terms(Search& s, AcceptedSet& set, const model::Dampe
 void mark_final_set(ResidualResult& result) {
   for (auto it = result.trials.rbegin(); it != result.trials.rend(); ++it) {
     const bool in_set = std::ranges::find(result.accepted, it->effect) != result.accepted.end();
-    if (it->accepted && !in_set) {
-      it->accepted = false;
-      it->verdict += "; revised out of the set";
+    if (it->accepted() && !in_set) {
+      it->verdict = TrialVerdict::kRevisedOut;
+      it->explanation += "; revised out of the set";
     }
   }
   for (const std::string& name : result.accepted) {
-    const bool flagged = std::ranges::any_of(result.trials, [&](const CandidateTrial& t) { return t.accepted && t.effect == name; });
+    const bool flagged = std::ranges::any_of(result.trials, [&](const CandidateTrial& t) { return t.accepted() && t.effect == name; });
     if (flagged) continue;
     for (auto it = result.trials.rbegin(); it != result.trials.rend(); ++it) {
       if (it->effect != name) continue;
-      it->accepted = true;
-      it->verdict = "accepted in the set revision (" + it->verdict + ")";
+      it->verdict = TrialVerdict::kAcceptedInRevision;
+      it->explanation = "accepted in the set revision (" + it->explanation + ")";
       break;
     }
   }
@@ -611,8 +619,7 @@ void name_ambiguities(const AcceptedSet& set, const std::vector<Effects>& groups
     tests += ", run: " + std::string(kept->separated_by);
     for (const model::EffectInfo* e : group)
       if (e != kept) tests += "; or " + std::string(e->separated_by);
-    result.ambiguous.push_back(std::move(names));
-    result.ambiguity_tests.push_back(std::move(tests));
+    result.ambiguous.push_back({.members = std::move(names), .separating_run = std::move(tests)});
   }
 }
 
@@ -631,25 +638,25 @@ void name_unplaced_thresholds(const Search& s, const AcceptedSet& set, ResidualR
       const double threshold = x[k] * s.scales.stroke;
       if (amplitudes.front() <= threshold) continue;  // a reversal inside it places the threshold
       const auto won = std::ranges::find_if(result.trials, [&](const CandidateTrial& t) {
-        return t.accepted && t.effect == effect->name;
+        return t.accepted() && t.effect == effect->name;
       });
       if (won == result.trials.end()) continue;
       const CandidateTrial* rival = nullptr;
       for (const CandidateTrial& t : result.trials) {
         if (t.round != won->round || t.effect == won->effect) continue;
-        if (!t.verdict.starts_with("passes") && !t.verdict.starts_with("ambiguous")) continue;
+        if (!t.passed()) continue;
         if (rival == nullptr || t.validation_rms < rival->validation_rms) rival = &t;
       }
       if (rival == nullptr) continue;
-      const std::vector<std::string> group{std::string(effect->name), rival->effect};
-      if (std::ranges::find(result.ambiguous, group) != result.ambiguous.end()) continue;
-      result.ambiguous.push_back(group);
-      result.ambiguity_tests.push_back(format(
+      std::vector<std::string> group{std::string(effect->name), rival->effect};
+      if (std::ranges::find(result.ambiguous, group, &AmbiguousGroup::members) != result.ambiguous.end()) continue;
+      const std::string separating_run = format(
           "every reversal of the run lies beyond %s's threshold (%.3g mm; the smallest reversal at %.3g mm), so "
           "the run cannot tell it from %s, which acts at every reversal (validation RMS %.4g N against %.4g N); "
           "to separate them, run: %s",
           won->effect.c_str(), 1e3 * threshold, 1e3 * amplitudes.front(), rival->effect.c_str(),
-          rival->validation_rms, won->validation_rms, std::string(effect->separated_by).c_str()));
+          rival->validation_rms, won->validation_rms, std::string(effect->separated_by).c_str());
+      result.ambiguous.push_back({.members = std::move(group), .separating_run = separating_run});
     }
   }
 }
@@ -670,7 +677,7 @@ AcceptedSet greedy_rounds(Search& s, const model::DamperModel& base, ResidualRes
       Effects alike = ambiguous_with_winner(round, candidates, best, s.options.minimum_reduction);
       Effects rivals;
       for (std::size_t i = 0; i < round.trials.size(); ++i)
-        if (i != best && (round.trials[i].verdict.starts_with("passes") || round.trials[i].verdict.starts_with("ambiguous")))
+        if (i != best && round.trials[i].passed())
           rivals.push_back(candidates[i]);
       if (!alike.empty()) {
         alike.insert(alike.begin(), candidates[best]);
@@ -700,10 +707,10 @@ void discover(Search& s, model::DamperModel& model, ResidualResult& result) {
                                                  fluid_of(model), s.options.minimum_reduction);
   result.discovered = discovery.terms;
   for (const auto& group : discovery.ambiguous) {
-    result.ambiguous.push_back(group);
-    result.ambiguity_tests.push_back("to separate the terms " + group.front() + " and " + group[1] +
-                                     ", run: a motion at other frequencies and amplitudes (the terms scale "
-                                     "differently with them)");
+    result.ambiguous.push_back({.members = group,
+                                .separating_run = "to separate the terms " + group.front() + " and " + group[1] +
+                                                  ", run: a motion at other frequencies and amplitudes (the terms "
+                                                  "scale differently with them)"});
   }
   if (discovery.has_terms()) {
     discovery.add_to(model);

@@ -46,6 +46,18 @@ struct ResidualOptions {
   ProgressSink* progress = nullptr;  // the base fit, then each round's candidates as they finish
 };
 
+// What became of a candidate in its round (and after the set revision).
+enum class TrialVerdict {
+  kUndecided,           // not yet judged (no trial of a result is left so)
+  kNotPhysical,         // its fitted parameters are implausible
+  kBelowThreshold,      // lowers the validation error by less than the threshold
+  kOutperformed,        // passes the threshold, but the accepted one lowers the error more
+  kAmbiguous,           // passes, within the threshold of the accepted one
+  kAccepted,            // the round's best
+  kRevisedOut,          // accepted, then dropped or swapped out by the set revision
+  kAcceptedInRevision,  // swapped in by the set revision
+};
+
 struct CandidateTrial {
   std::string effect;
   int round = 0;                   // 1 for the first greedy round
@@ -53,9 +65,23 @@ struct CandidateTrial {
   double validation_rms = 0.0;     // with this effect added [N RMS]
   double rms_after = 0.0;          // on the whole run, with this effect added [N]
   double max_after = 0.0;          // [N]
-  bool accepted = false;
-  std::string verdict;  // why accepted or not
+  TrialVerdict verdict = TrialVerdict::kUndecided;
+  std::string explanation;  // the verdict in words, with its figures
   std::vector<std::pair<std::string, double>> parameters;
+
+  [[nodiscard]] bool accepted() const {
+    return verdict == TrialVerdict::kAccepted || verdict == TrialVerdict::kAcceptedInRevision;
+  }
+  // Passed the threshold beside its round's winner: a rival for the set revision.
+  [[nodiscard]] bool passed() const {
+    return verdict == TrialVerdict::kOutperformed || verdict == TrialVerdict::kAmbiguous;
+  }
+};
+
+// Candidates (or library terms) the run cannot tell apart.
+struct AmbiguousGroup {
+  std::vector<std::string> members;  // led by the one kept in the model
+  std::string separating_run;        // the run that would separate them, in words
 };
 
 struct ResidualResult {
@@ -77,10 +103,8 @@ struct ResidualResult {
   // The final model's core parameters with their standard deviations (model_uncertainty).
   std::vector<ParameterEstimate> parameters;
   std::vector<std::string> accepted;  // in the order accepted, after the set revision
-  // Candidates the run cannot tell apart: each group led by the one kept in the model, the
-  // others within the threshold of it; and, per group, the run that would separate them.
-  std::vector<std::vector<std::string>> ambiguous;
-  std::vector<std::string> ambiguity_tests;
+  // Candidates the run cannot tell apart: the others within the threshold of the kept one.
+  std::vector<AmbiguousGroup> ambiguous;
   // Step 7: library terms the regression of the residual accepted (docs/CLOSING-THE-LOOP.md).
   std::vector<DiscoveredTerm> discovered;
   bool discovery = true;  // whether step 7 ran
