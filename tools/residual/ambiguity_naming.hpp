@@ -5,7 +5,7 @@
 
 #include "tools/residual/accepted_set.hpp"
 #include "tools/residual/candidate_trials.hpp"
-#include "tools/residual/residual_search.hpp"
+#include "tools/residual/residual_result.hpp"
 #include "tools/residual/search_context.hpp"
 
 namespace mrd::tools::search {

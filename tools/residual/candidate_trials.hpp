@@ -5,7 +5,7 @@
 
 #include "model/damper_model.hpp"
 #include "tools/residual/model_fit.hpp"
-#include "tools/residual/residual_search.hpp"
+#include "tools/residual/residual_result.hpp"
 #include "tools/residual/search_context.hpp"
 
 namespace mrd::tools::search {

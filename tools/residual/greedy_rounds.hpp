@@ -4,7 +4,7 @@
 
 #include "model/damper_model.hpp"
 #include "tools/residual/accepted_set.hpp"
-#include "tools/residual/residual_search.hpp"
+#include "tools/residual/residual_result.hpp"
 #include "tools/residual/search_context.hpp"
 
 namespace mrd::tools::search {

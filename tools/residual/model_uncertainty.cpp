@@ -15,7 +15,7 @@ struct ModelParameter {
   double& (*field)(model::DamperModel&);
 };
 
-// What the base fit identifies (residual_search.cpp, describe_base): the force scale as the pole
+// What the base fit identifies (base_identification.cpp, describe_base): the force scale as the pole
 // length, the viscous coefficient as the viscosity, the sign and flow shapes; then, where the
 // current varies, the seal friction (at a constant current it and the force scale are one
 // direction), the field gain as the coil's turns and the yield law; last, where the material is free, the J-A shape (a and Ms are tied to the field gain

@@ -10,7 +10,7 @@
 #include "tools/optimisation/worker_pool.hpp"
 #include "tools/residual/candidate_effects.hpp"
 #include "tools/residual/fit_series.hpp"
-#include "tools/residual/residual_search.hpp"
+#include "tools/residual/residual_result.hpp"
 
 // The steps of find_missing_effects (residual_search.cpp), each in its own file; internal to
 // tools/residual.
