@@ -78,7 +78,7 @@ FitSeries simulated_force_run(const model::DamperModel& plant, const model::Comp
     s.current.push_back(current);
     s.force.push_back(r.measured_force);
     // Alternate 1 s blocks validate.
-    s.validation.push_back((i / 1000) % 2 ? FitSeries::kValidation : FitSeries::kFitting);
+    s.role.push_back((i / 1000) % 2 ? SampleRole::kValidation : SampleRole::kFitting);
   }
   s.notes.push_back("simulated force run");
   return s;

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "tools/identification/loop_simulation.hpp"
-#include "tools/identification/optimiser.hpp"
-#include "tools/identification/worker_pool.hpp"
+#include "tools/optimisation/optimiser.hpp"
+#include "tools/optimisation/worker_pool.hpp"
 
 namespace mrd::tools {
 

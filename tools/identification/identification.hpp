@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "tools/identification/bh_objective.hpp"
-#include "tools/identification/particle_swarm.hpp"
 #include "tools/identification/polish.hpp"
+#include "tools/optimisation/particle_swarm.hpp"
 #include "tools/progress.hpp"
 
 namespace mrd::tools {

@@ -5,7 +5,7 @@
 
 #include "tools/identification/bh_curve.hpp"
 #include "tools/identification/bh_objective.hpp"
-#include "tools/identification/optimiser.hpp"
+#include "tools/optimisation/optimiser.hpp"
 
 namespace mrd::tools {
 

@@ -8,7 +8,7 @@
 
 #include "record/csv.hpp"
 #include "record/run_gaps.hpp"
-#include "tools/replay/zero_phase_velocity.hpp"
+#include "tools/signal/zero_phase_velocity.hpp"
 
 namespace mrd::tools {
 

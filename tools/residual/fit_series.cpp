@@ -11,7 +11,7 @@
 
 #include "record/csv.hpp"
 #include "record/run_gaps.hpp"
-#include "tools/replay/zero_phase_velocity.hpp"
+#include "tools/signal/zero_phase_velocity.hpp"
 
 namespace mrd::tools {
 
@@ -37,7 +37,7 @@ void append_sample(FitSeries& to, const FitSeries& from, std::size_t i) {
   to.force.push_back(from.force[i]);
   if (!from.temperature.empty()) to.temperature.push_back(from.temperature[i]);
   if (!from.time.empty()) to.time.push_back(from.time[i]);
-  to.validation.push_back(from.validation[i]);
+  to.role.push_back(from.role[i]);
 }
 
 // The filled samples of each gap, with `margin_s` on either side, set aside as kGap spans
@@ -150,8 +150,9 @@ FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const Fi
     s.run_names.push_back(recorded.name);
     const std::size_t n = run.size();
     // Half the blocks validate: a fixed shuffle, the same for every run and every call.
-    std::vector<std::uint8_t> held_out(static_cast<std::size_t>(blocks));
-    for (std::size_t b = 0; b < held_out.size(); ++b) held_out[b] = b % 2 == 1;
+    std::vector<SampleRole> held_out(static_cast<std::size_t>(blocks));
+    for (std::size_t b = 0; b < held_out.size(); ++b)
+      held_out[b] = b % 2 == 1 ? SampleRole::kValidation : SampleRole::kFitting;
     std::mt19937 shuffle_rng(20261121u + static_cast<unsigned>(s.run_starts.size()));
     for (std::size_t b = held_out.size() - 1; b > 0; --b)
       std::swap(held_out[b], held_out[shuffle_rng() % (b + 1)]);
@@ -163,9 +164,9 @@ FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const Fi
       if (with_temperature) s.temperature.push_back(run.temperature[i]);
       s.time.push_back(i < run.time.size() ? run.time[i] : static_cast<double>(i) / rate);
       const auto block = static_cast<int>((i * static_cast<std::size_t>(blocks)) / n);
-      s.validation.push_back(screening.excluded.empty() || !screening.excluded[i]
-                                 ? held_out[static_cast<std::size_t>(block)]
-                                 : FitSeries::kExcluded);
+      s.role.push_back(screening.excluded.empty() || !screening.excluded[i]
+                           ? held_out[static_cast<std::size_t>(block)]
+                           : SampleRole::kExcluded);
     }
     if (options.screen || !screening.spans.empty()) s.screenings.emplace_back(recorded.name, std::move(screening));
     s.screened = options.screen;
@@ -186,7 +187,7 @@ FitSeries without_excluded(const FitSeries& series, const std::vector<double>& p
     out.run_periods.push_back(series.run_periods[r]);
     if (r < series.run_names.size()) out.run_names.push_back(series.run_names[r]);
     for (std::size_t i = series.run_starts[r]; i < end; ++i) {
-      if (series.validation[i] == FitSeries::kExcluded) continue;
+      if (series.role[i] == SampleRole::kExcluded) continue;
       append_sample(out, series, i);
       kept_values.push_back(per_sample[i]);
     }

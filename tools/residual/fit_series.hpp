@@ -12,6 +12,10 @@
 
 namespace mrd::tools {
 
+// What a sample is for: the fits use kFitting samples, the validation error the kValidation ones
+// held out; kExcluded are those the screening set aside (no fit and no error counts them).
+enum class SampleRole : std::uint8_t { kFitting, kValidation, kExcluded };
+
 // One or more recorded runs as the residual analysis sees them: SI channels at one rate, the
 // coil current in amperes, a velocity for every sample, and which samples validate.
 struct FitSeries {
@@ -29,10 +33,7 @@ struct FitSeries {
   // The first sample of each run: the model starts again from a demagnetised core there.
   std::vector<std::size_t> run_starts;
   std::vector<std::string> run_names;  // one per run start, for the reports
-  // kFitting for samples the fits may use, kValidation for those held out, kExcluded for those
-  // the screening set aside (no fit and no error counts them).
-  std::vector<std::uint8_t> validation;
-  static constexpr std::uint8_t kFitting = 0, kValidation = 1, kExcluded = 2;
+  std::vector<SampleRole> role;  // one per sample
   bool screened = false;  // whether the screening ran (gaps are set aside either way)
   // What the screening set aside, per run (in the runs' order; without screening, only runs
   // with logging gaps).

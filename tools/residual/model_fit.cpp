@@ -6,7 +6,7 @@
 #include <numeric>
 
 #include "model/observer.hpp"
-#include "tools/identification/particle_swarm.hpp"
+#include "tools/optimisation/particle_swarm.hpp"
 
 namespace mrd::tools {
 
@@ -80,10 +80,10 @@ ResidualRms residual_rms(const FitSeries& series, const std::vector<double>& pre
   double weight[2] = {0.0, 0.0};
   ResidualRms out;
   for (std::size_t i = 0; i < series.size(); ++i) {
-    if (series.validation[i] == FitSeries::kExcluded) continue;
+    if (series.role[i] == SampleRole::kExcluded) continue;
     const double r = series.force[i] - predicted[i];
-    sum[series.validation[i]] += series.loss.rho(r);
-    weight[series.validation[i]] += 1.0;
+    sum[static_cast<std::size_t>(series.role[i])] += series.loss.rho(r);
+    weight[static_cast<std::size_t>(series.role[i])] += 1.0;
     out.max = std::max(out.max, std::fabs(r));
   }
   const auto rms = [](double s, double w) { return w > 0.0 ? std::sqrt(s / w) : 0.0; };
@@ -206,7 +206,7 @@ LinearTerms solve_linear_terms(const FitSeries& series, const std::vector<double
   NormalVector rhs = NormalVector::Zero(n);
   double column[kMaxLinearColumns];
   for (std::size_t i = 0; i < series.size(); ++i) {
-    if (series.validation[i] != 0) continue;
+    if (series.role[i] != SampleRole::kFitting) continue;
     fill_columns(series, predicted, effects, base, i, column);
     const double w = weights.empty() ? 1.0 : weights[i];
     for (int r = 0; r < n; ++r) {
@@ -261,7 +261,7 @@ void for_each_linear_residual(const FitSeries& series, const std::vector<double>
   double coefficients[kMaxLinearColumns] = {t.force_scale, t.extra_viscous, t.extra_friction};
   std::copy(t.coefficients.begin(), t.coefficients.end(), coefficients + base_column_count(base));
   for (std::size_t i = 0; i < series.size(); ++i) {
-    if (series.validation[i] != 0) continue;
+    if (series.role[i] != SampleRole::kFitting) continue;
     double column[kMaxLinearColumns];
     fill_columns(series, predicted, t.effects, base, i, column);
     double f = 0.0;

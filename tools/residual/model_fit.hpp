@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "model/damper_model.hpp"
-#include "tools/identification/optimiser.hpp"
-#include "tools/identification/worker_pool.hpp"
+#include "tools/optimisation/optimiser.hpp"
+#include "tools/optimisation/worker_pool.hpp"
 #include "tools/residual/fit_series.hpp"
 
 namespace mrd::tools {
@@ -125,10 +125,9 @@ struct FittedModel {
   std::int64_t evaluations = 0;
 };
 
-// The improved PSO of the identification (tools/identification/particle_swarm.hpp) over the
-// space's coordinates, the linear terms solved at each point; `evaluations` per coordinate,
-// one observer pass each, spread over `pool` (serial when it is null). Deterministic for the
-// seed.
+// The improved PSO (tools/optimisation/particle_swarm.hpp) over the space's coordinates, the
+// linear terms solved at each point; `evaluations` per coordinate, one observer pass each, spread
+// over `pool` (serial when it is null). Deterministic for the seed.
 FittedModel fit_space(const ParameterSpace& space, const FitSeries& series, WorkerPool* pool,
                       std::uint64_t seed, int evaluations_per_parameter = 48);
 

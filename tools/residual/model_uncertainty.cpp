@@ -15,7 +15,7 @@ struct ModelParameter {
   double& (*field)(model::DamperModel&);
 };
 
-// What the base fit identifies (residual_search.cpp, describe_base): the force scale as the pole
+// What the base fit identifies (base_identification.cpp, describe_base): the force scale as the pole
 // length, the viscous coefficient as the viscosity, the sign and flow shapes; then, where the
 // current varies, the seal friction (at a constant current it and the force scale are one
 // direction), the field gain as the coil's turns and the yield law; last, where the material is free, the J-A shape (a and Ms are tied to the field gain
@@ -58,7 +58,7 @@ std::vector<ParameterEstimate> model_uncertainty(const model::DamperModel& fitte
     std::vector<double> r;
     r.reserve(series.size());
     for (std::size_t i = 0; i < series.size(); ++i)
-      if (series.validation[i] != FitSeries::kExcluded) r.push_back(series.force[i] - force[i]);
+      if (series.role[i] != SampleRole::kExcluded) r.push_back(series.force[i] - force[i]);
     return r;
   };
   const ParameterUncertainty u = parameter_uncertainty(residuals, x);

@@ -68,7 +68,7 @@ std::vector<const CandidateTrial*> final_trials(const ResidualResult& r) {
     auto it = std::find_if(out.begin(), out.end(), [&](const CandidateTrial* o) { return o->effect == t.effect; });
     if (it == out.end())
       out.push_back(&t);
-    else if (!(*it)->accepted)
+    else if (!(*it)->accepted())
       *it = &t;
   }
   return out;
@@ -105,7 +105,7 @@ std::string residual_summary(const std::vector<record::RecordedRun>& runs, const
       out += format("round %d (validation RMS %.4g N):\n", round, t.validation_before);
     }
     out += format("  %-20s validation %10.4g N  whole run %10.4g N  %s\n", t.effect.c_str(), t.validation_rms,
-                  t.rms_after, t.verdict.c_str());
+                  t.rms_after, t.explanation.c_str());
     if (!t.parameters.empty()) {
       out += "  " + std::string(22, ' ') + "fitted:";
       for (const auto& [key, value] : t.parameters) out += format(" %s %.4g", key.c_str(), value);
@@ -118,10 +118,10 @@ std::string residual_summary(const std::vector<record::RecordedRun>& runs, const
                   t.unit.c_str(), t.interference ? "interference (taken off the measurement, not the model)" : "damper term, added to the model",
                   100.0 * t.validation_gain);
   }
-  for (std::size_t g = 0; g < r.ambiguous.size(); ++g) {
+  for (const AmbiguousGroup& group : r.ambiguous) {
     out += "ambiguous:";
-    for (const auto& e : r.ambiguous[g]) out += " " + e;
-    out += format(" (kept %s; %s)\n", r.ambiguous[g].front().c_str(), r.ambiguity_tests[g].c_str());
+    for (const auto& e : group.members) out += " " + e;
+    out += format(" (kept %s; %s)\n", group.members.front().c_str(), group.separating_run.c_str());
   }
   if (r.accepted.empty()) {
     out += "effect: none\n";
@@ -162,7 +162,7 @@ std::string residual_json(const ResidualResult& r, const ForceFitFigures* fit) {
     candidates.push_back({{"effect", t->effect},
                           {"rms_after_N", t->rms_after},
                           {"validation_rms_N", t->validation_rms},
-                          {"accepted", t->accepted}});
+                          {"accepted", t->accepted()}});
   }
   Json discovered = Json::array();
   for (const DiscoveredTerm& t : r.discovered) {
@@ -197,6 +197,11 @@ std::string residual_json(const ResidualResult& r, const ForceFitFigures* fit) {
   Json parameters = Json::array();
   for (const ParameterEstimate& p : r.parameters)
     parameters.push_back({{"name", p.name}, {"value", p.value}, {"sd", p.standard_deviation}, {"unit", p.unit}});
+  Json ambiguous = Json::array(), ambiguity_tests = Json::array();
+  for (const AmbiguousGroup& group : r.ambiguous) {
+    ambiguous.push_back(group.members);
+    ambiguity_tests.push_back(group.separating_run);
+  }
   Json out = {{"samples", r.samples},
                     {"rms_before_N", r.before.all},
                     {"fit_before_percent", r.fit_before_percent},
@@ -209,8 +214,8 @@ std::string residual_json(const ResidualResult& r, const ForceFitFigures* fit) {
                     {"max_after_N", r.after.max},
                     {"effect_params", effect_params},
                     {"candidates", candidates},
-                    {"ambiguous", r.ambiguous},
-                    {"ambiguity_tests", r.ambiguity_tests},
+                    {"ambiguous", ambiguous},
+                    {"ambiguity_tests", ambiguity_tests},
                     {"discovered", discovered},
                     {"screening", {{"excluded_samples", excluded}, {"spans", spans}}},
                     {"robust",
@@ -288,7 +293,7 @@ std::string plot_residual(const FitSeries& s, const ResidualResult& r, const std
       out << static_cast<double>(i) * s.sample_period << ' ' << 1e3 * s.displacement[i] << ' ' << 1e3 * s.velocity[i]
           << ' ' << s.force[i] << ' ' << r.predicted_before[i] << ' ' << r.predicted_after[i] << ' '
           << s.force[i] - r.predicted_before[i] << ' ' << s.force[i] - r.predicted_after[i] << ' '
-          << (s.validation[i] == FitSeries::kExcluded ? 1 : 0) << '\n';
+          << (s.role[i] == SampleRole::kExcluded ? 1 : 0) << '\n';
     }
     if (!out) return "cannot write " + data;
   }
@@ -343,7 +348,7 @@ ForceFitTraces residual_traces(const std::vector<record::RecordedRun>& runs, con
   traces.baseline_label = "base model";
   if (r.screened) {
     traces.keep.resize(s.size());
-    for (std::size_t i = 0; i < s.size(); ++i) traces.keep[i] = s.validation[i] != FitSeries::kExcluded;
+    for (std::size_t i = 0; i < s.size(); ++i) traces.keep[i] = s.role[i] != SampleRole::kExcluded;
   }
   return traces;
 }
@@ -388,8 +393,8 @@ std::string write_residual_report(const std::vector<record::RecordedRun>& runs, 
   std::vector<std::vector<std::string>> trials;
   for (const CandidateTrial* t : final_trials(r)) {
     trials.push_back({t->effect, std::to_string(t->round), format("%.6g", t->validation_before),
-                      format("%.6g", t->validation_rms), format("%.6g", t->rms_after), t->accepted ? "accepted" : "rejected",
-                      t->verdict});
+                      format("%.6g", t->validation_rms), format("%.6g", t->rms_after), t->accepted() ? "accepted" : "rejected",
+                      t->explanation});
   }
   report.table(format("Candidates (each at its last round; accepted when the validation RMS falls by %.0f %% or more)",
                       100.0 * kMinimumValidationReduction),
@@ -403,10 +408,10 @@ std::string write_residual_report(const std::vector<record::RecordedRun>& runs, 
   report.table("Library terms accepted by the regression of what the effects left",
                {"term", "coefficient", "unit", "kind", "validation RMS gain"}, terms);
   std::vector<std::vector<std::string>> groups;
-  for (std::size_t g = 0; g < r.ambiguous.size(); ++g) {
+  for (const AmbiguousGroup& group : r.ambiguous) {
     std::string members;
-    for (const auto& e : r.ambiguous[g]) members += (members.empty() ? "" : ", ") + e;
-    groups.push_back({members, r.ambiguity_tests[g]});
+    for (const auto& e : group.members) members += (members.empty() ? "" : ", ") + e;
+    groups.push_back({members, group.separating_run});
   }
   report.table("Effects the run cannot tell apart (the first is kept)", {"effects", "the run that would separate them"},
                groups);

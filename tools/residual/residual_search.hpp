@@ -1,123 +1,15 @@
 #pragma once
 
-#include <atomic>
-#include <cstdint>
-#include <string>
-#include <utility>
-#include <vector>
-
-#include "model/damper_model.hpp"
 #include "tools/residual/fit_series.hpp"
-#include "tools/residual/model_fit.hpp"
-#include "tools/residual/model_uncertainty.hpp"
-#include "tools/residual/residual_structure.hpp"
-#include "tools/residual/robust_weights.hpp"
-#include "tools/residual/term_discovery.hpp"
-#include "tools/progress.hpp"
+#include "tools/residual/residual_result.hpp"
+#include "tools/residual/term_rivalry.hpp"
 
 namespace mrd::tools {
-
-// The documented acceptance threshold: an effect is accepted only when, fitted on the fitting
-// blocks, it lowers the RMS error on the validation blocks by at least this fraction.
-inline constexpr double kMinimumValidationReduction = 0.10;
 
 // The searches' J-A sub-step may grow to this fraction of |He| (JilesAthertonSettings::
 // field_step_growth): far into saturation a jump then takes a few steps, at the uniform grid's
 // accuracy (tests/model/test_jiles_atherton_reference.cpp; docs/PERFORMANCE.md).
 inline constexpr double kSearchFieldStepGrowth = 0.02;
-
-struct ResidualOptions {
-  // The damper the fit starts from: the config's, or the default. Effects enabled here were
-  // declared by the config: they stay in the base model and are not candidates.
-  model::DamperModel start;
-  std::vector<std::string> candidates;  // default: every named candidate effect
-  double minimum_reduction = kMinimumValidationReduction;
-  // The fits run on every k-th sample of the series, at most this many samples (never below
-  // min_fit_rate); every reported error is evaluated on the full series.
-  std::size_t max_fit_samples = 100000;
-  double min_fit_rate = 200.0;  // [Hz]
-  // The swarms whose trials move B (the base model's magnetics, coil_lag's) explore on at most
-  // this many samples of the fitting series, the runs' openings (run_openings); the Nelder-Mead
-  // after each refines on the whole fitting series.
-  std::size_t max_swarm_samples = 24000;
-  int evaluations_per_parameter = 40;
-  unsigned threads = 0;  // 0: every core
-  std::uint64_t seed = 1;
-  bool discover = true;  // step 7: regress what the named effects left on the library of terms
-  // Step 3b (opt-in): a base that leaves a material share of weight to the robust loss is
-  // identified again under it, and every later fit and judgement weighs the samples. Off by
-  // default: an effect that acts on few samples (a coil lag at switch-on, stroke-end air) looks
-  // like a fault to the loss and is then missed. The down-weighted spans are reported either way.
-  bool robust_fit = false;
-  RobustLoss robust;
-  ProgressSink* progress = nullptr;  // the base fit, then each round's candidates as they finish
-};
-
-struct CandidateTrial {
-  std::string effect;
-  int round = 0;                   // 1 for the first greedy round
-  double validation_before = 0.0;  // the round's model on the validation blocks [N RMS]
-  double validation_rms = 0.0;     // with this effect added [N RMS]
-  double rms_after = 0.0;          // on the whole run, with this effect added [N]
-  double max_after = 0.0;          // [N]
-  bool accepted = false;
-  std::string verdict;  // why accepted or not
-  std::vector<std::pair<std::string, double>> parameters;
-};
-
-struct ResidualResult {
-  std::size_t samples = 0;      // of the full series
-  std::size_t fit_samples = 0;  // of the series the fits ran on
-  std::size_t decimation = 1;
-  std::vector<std::string> notes;  // how the series was made
-  // Step 0: what the screening set aside, per run; every error is on the kept samples.
-  std::vector<std::pair<std::string, Screening>> screenings;
-  bool screened = false;
-  std::vector<std::string> base_parameters;  // what the base fit found, one line each
-  model::DamperModel base;
-  model::DamperModel final_model;
-  ResidualRms before;  // base model, whole run
-  ResidualRms after;   // with the accepted effects (the base when none)
-  // NRMSE fit [%] of the base and the final model over the kept samples (nrmse_fit_percent).
-  double fit_before_percent = 0.0;
-  double fit_after_percent = 0.0;
-  // The final model's core parameters with their standard deviations (model_uncertainty).
-  std::vector<ParameterEstimate> parameters;
-  std::vector<std::string> accepted;  // in the order accepted, after the set revision
-  // Candidates the run cannot tell apart: each group led by the one kept in the model, the
-  // others within the threshold of it; and, per group, the run that would separate them.
-  std::vector<std::vector<std::string>> ambiguous;
-  std::vector<std::string> ambiguity_tests;
-  // Step 7: library terms the regression of the residual accepted (docs/CLOSING-THE-LOOP.md).
-  std::vector<DiscoveredTerm> discovered;
-  bool discovery = true;  // whether step 7 ran
-  // What the set revision after the greedy rounds did (removals, swaps), one line each.
-  std::vector<std::string> revisions;
-  std::vector<CandidateTrial> trials;  // every round's
-  ResidualStructure structure_before;
-  ResidualStructure structure_after;
-  std::string unexplained;
-  // The robust loss: how many times the base was refitted with its weights, and against the
-  // final model, the residual's robust sigma [N], the share of weight taken and where most.
-  bool robust_fit = false;  // whether --robust-fit was asked
-  int robust_refits = 0;
-  RobustWeights robust_after;  // its weights: per sample of the full series
-  std::vector<DownWeightedSpan> down_weighted;
-  std::vector<double> predicted_before;  // per sample of the full series [N]
-  std::vector<double> predicted_after;
-  std::int64_t evaluations = 0;  // observer passes over the fitting series
-  double seconds = 0.0;  // wall time of the analysis
-};
-
-// Step 6b's rule for a named effect against the library terms that explain the residual in its
-// place (validation RMS of the effect alone, of the terms alone, of both): the terms replace the
-// effect when they validate better by more than the threshold and the effect's removal beside
-// them costs less than it; within the threshold of each other the run cannot decide (the
-// named effect stays); otherwise the effect stays. `both_validation` is read only when the terms
-// are better by more than the threshold.
-enum class TermRivalry { kEffectStays, kAmbiguous, kTermsReplace };
-TermRivalry weigh_terms_against_effect(double effect_validation, double terms_validation, double both_validation,
-                                       double threshold);
 
 // Steps 1-6 of docs/CLOSING-THE-LOOP.md, "mrd-residual": fit the base model, analyse its
 // residual, fit each candidate effect on the fitting blocks and validate it on the others,

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "tools/spectrum.hpp"
+#include "tools/signal/spectrum.hpp"
 #include "tools/text_format.hpp"
 
 namespace mrd::tools {

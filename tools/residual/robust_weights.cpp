@@ -12,7 +12,7 @@ double robust_sigma(const FitSeries& series, const std::vector<double>& predicte
   std::vector<double> r;
   r.reserve(series.size());
   for (std::size_t i = 0; i < series.size(); ++i)
-    if (series.validation[i] != FitSeries::kExcluded) r.push_back(series.force[i] - predicted[i]);
+    if (series.role[i] != SampleRole::kExcluded) r.push_back(series.force[i] - predicted[i]);
   if (r.empty()) return 0.0;
   const auto mid = r.begin() + static_cast<std::ptrdiff_t>(r.size() / 2);
   std::nth_element(r.begin(), mid, r.end());
@@ -33,7 +33,7 @@ RobustWeights huber_weights(const FitSeries& series, const std::vector<double>& 
   double lost = 0.0;
   std::size_t kept = 0;
   for (std::size_t i = 0; i < series.size(); ++i) {
-    if (series.validation[i] == FitSeries::kExcluded) continue;
+    if (series.role[i] == SampleRole::kExcluded) continue;
     ++kept;
     const double r = std::fabs(series.force[i] - predicted[i]);
     if (r > knee) out.weight[i] = knee / r;
@@ -55,7 +55,7 @@ std::vector<DownWeightedSpan> down_weighted_spans(const FitSeries& series, const
     };
     DownWeightedSpan* open = nullptr;
     for (std::size_t i = begin; i < end; ++i) {
-      if (series.validation[i] == FitSeries::kExcluded || !(weights.weight[i] < 0.5)) continue;
+      if (series.role[i] == SampleRole::kExcluded || !(weights.weight[i] < 0.5)) continue;
       const double t = time_of(i);
       if (open == nullptr || t - open->end_s > join_s) {
         spans.push_back({name, t, t, 0, 0.0, 0.0});

@@ -6,8 +6,8 @@
 #include <numbers>
 
 #include "model/effects/learned_terms.hpp"
-#include "tools/replay/zero_phase_velocity.hpp"
 #include "tools/residual/model_fit.hpp"
+#include "tools/signal/zero_phase_velocity.hpp"
 #include "tools/text_format.hpp"
 
 namespace mrd::tools {
@@ -205,10 +205,10 @@ void accumulate_moments(const Library& lib, const FitSeries& s, const std::vecto
   std::size_t run = 0;
   for (std::size_t i = 0; i < s.size(); ++i) {
     const double t = time_of(s, i, run);
-    if (s.validation[i] > 1) continue;
+    if (s.role[i] == SampleRole::kExcluded) continue;
     fill_row(lib, s, predicted, B, a, fluid, t, i, row);
     const double r = s.force[i];
-    Moments& m = moments[s.validation[i]];
+    Moments& m = moments[static_cast<std::size_t>(s.role[i])];
     m.gram.selfadjointView<Eigen::Lower>().rankUpdate(row);
     m.cross += r * row;
     m.energy += r * r;

@@ -4,12 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <numeric>
 
 #include "record/csv.hpp"
-#include "tools/replay/zero_phase_velocity.hpp"
+#include "tools/signal/zero_phase_velocity.hpp"
 
 namespace {
 
@@ -38,11 +38,11 @@ TEST(FitSeries, HalfOfTheBlocksValidateAndEveryRunStartsAgain) {
   EXPECT_DOUBLE_EQ(s.run_periods[0], 1e-3);
   EXPECT_DOUBLE_EQ(s.run_periods[1], 5e-3);
   EXPECT_DOUBLE_EQ(s.sample_period, 1e-3);
-  const auto held_out = std::accumulate(s.validation.begin(), s.validation.begin() + 6000, 0);
+  const auto held_out = std::count(s.role.begin(), s.role.begin() + 6000, SampleRole::kValidation);
   EXPECT_EQ(held_out, 3000);
   // Not alternate blocks: with 24 blocks a 1 s period would see only some phases in each half.
   int changes = 0;
-  for (std::size_t i = 1; i < 6000; ++i) changes += s.validation[i] != s.validation[i - 1];
+  for (std::size_t i = 1; i < 6000; ++i) changes += s.role[i] != s.role[i - 1];
   EXPECT_LT(changes, 23);
 }
 
@@ -72,7 +72,7 @@ TEST(FitSeries, RunOpeningsShareTheSamplesAndStartWhereEachRunStarts) {
   EXPECT_DOUBLE_EQ(open.force[2000], s.force[2000]);              // the second run's first sample
   EXPECT_DOUBLE_EQ(open.displacement[5499], s.displacement[5499]);
   EXPECT_DOUBLE_EQ(open.displacement[5500], s.displacement[32000]);  // the third run's first
-  EXPECT_EQ(open.validation[8999], s.validation[32000 + 3499]);
+  EXPECT_EQ(open.role[8999], s.role[32000 + 3499]);
 }
 
 TEST(FitSeries, VelocityFromTheDisplacementWhenTheRunHasNone) {
@@ -132,7 +132,7 @@ TEST(FitSeries, ALoggingGapCostsOnlyTheGap) {
   const double amplitude = 0.04 * std::numbers::pi;
   double worst = 0.0;
   for (std::size_t i = 0; i < s.size(); ++i) {
-    if (s.validation[i] == FitSeries::kExcluded) continue;
+    if (s.role[i] == SampleRole::kExcluded) continue;
     const double t = static_cast<double>(i) / 1000.0;
     worst = std::max(worst, std::fabs(s.velocity[i] - amplitude * std::cos(2.0 * std::numbers::pi * t)));
   }

@@ -124,7 +124,8 @@ TEST(MissingEffects, ACandidateBelowTheThresholdIsRejected) {
   options.minimum_reduction = gain + 0.05;
   const ResidualResult strict = find_missing_effects(series, options);
   EXPECT_TRUE(strict.accepted.empty()) << residual_summary({run}, strict);
-  EXPECT_NE(strict.trials.front().verdict.find("below the"), std::string::npos) << strict.trials.front().verdict;
+  EXPECT_EQ(strict.trials.front().verdict, TrialVerdict::kBelowThreshold);
+  EXPECT_NE(strict.trials.front().explanation.find("below the"), std::string::npos) << strict.trials.front().explanation;
 }
 
 // Two effects in one run: both named, neither revised away, and no ambiguity claimed between
@@ -149,9 +150,9 @@ TEST(MissingEffects, AirWhoseEveryReversalIsBeyondItsThresholdIsAmbiguousWithPre
   const ResidualResult r = residual_testing::analyse(run);
   ASSERT_EQ(r.accepted, std::vector<std::string>{"stroke_end_air"}) << residual_summary({run}, r);
   const std::vector<std::string> group{"stroke_end_air", "preyield_hysteresis"};
-  const auto it = std::ranges::find(r.ambiguous, group);
+  const auto it = std::ranges::find(r.ambiguous, group, &AmbiguousGroup::members);
   ASSERT_NE(it, r.ambiguous.end()) << residual_summary({run}, r);
-  const std::string& test = r.ambiguity_tests[static_cast<std::size_t>(it - r.ambiguous.begin())];
+  const std::string& test = it->separating_run;
   EXPECT_NE(test.find("every reversal of the run lies beyond"), std::string::npos) << test;
   EXPECT_NE(test.find("reversals both inside and beyond"), std::string::npos) << test;
 }

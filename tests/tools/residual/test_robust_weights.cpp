@@ -33,7 +33,7 @@ FitSeries noise_series(std::size_t n, std::uint32_t seed) {
     s.displacement.push_back(0.0);
     s.velocity.push_back(0.0);
     s.current.push_back(0.0);
-    s.validation.push_back(FitSeries::kFitting);
+    s.role.push_back(SampleRole::kFitting);
   }
   return s;
 }
@@ -53,7 +53,7 @@ TEST(RobustWeights, AnOffsetSpanWeighsTheKneeOverItsResidualAndIsNamedFirst) {
   FitSeries s = noise_series(20000, 11);
   for (std::size_t i = 5000; i < 5300; ++i) s.force[i] += 30.0;  // 0.3 s, 30 sigmas off
   for (std::size_t i = 12000; i < 12010; ++i) s.force[i] -= 10.0;
-  s.validation[5100] = FitSeries::kExcluded;
+  s.role[5100] = SampleRole::kExcluded;
   const std::vector<double> zero(s.size(), 0.0);
   const RobustWeights w = huber_weights(s, zero);
   EXPECT_NEAR(w.sigma, 1.0, 0.05);  // the MAD ignores the 310 faulted samples

@@ -110,7 +110,7 @@ TEST(Settling, TheRecordsEdgesCarryTheErrorOfTheMiddle) {
     double edge = 0.0, middle = 0.0;
     std::size_t edges = 0, middles = 0;
     for (std::size_t i = 0; i < s.size(); ++i) {
-      if (s.validation[i] == FitSeries::kExcluded) continue;
+      if (s.role[i] == SampleRole::kExcluded) continue;
       const double e = std::pow(s.force[i] - r.predicted_after[i], 2);
       const bool at_edge = s.time[i] - s.time.front() < 1.0 || s.time.back() - s.time[i] < 1.0;
       (at_edge ? edge : middle) += e;

@@ -110,7 +110,7 @@ TEST(TermDiscovery, TheExtraViscousColumnFollowsTheFluidsShape) {
     noise = noise * 6364136223846793005ULL + 1442695040888963407ULL;
     const double uniform = static_cast<double>(noise >> 11) * 0x1.0p-53 - 0.5;
     s.force.push_back(predicted[i] + 0.3 * fluid.viscous_force(v) + 2.0 * std::sqrt(12.0) * uniform);
-    s.validation.push_back(static_cast<std::uint8_t>((i / 167) % 2));
+    s.role.push_back((i / 167) % 2 ? SampleRole::kValidation : SampleRole::kFitting);
   }
   const mrd::tools::TermDiscovery d = mrd::tools::discover_terms(s, predicted, B, fluid, 0.1);
   EXPECT_TRUE(d.terms.empty()) << d.terms.size() << " terms, the first " << d.terms.front().term;

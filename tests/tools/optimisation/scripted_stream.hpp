@@ -3,7 +3,7 @@
 #include <deque>
 #include <stdexcept>
 
-#include "tools/identification/random_stream.hpp"
+#include "tools/optimisation/random_stream.hpp"
 
 namespace mrd::test {
 

@@ -1,4 +1,4 @@
-#include "tools/identification/worker_pool.hpp"
+#include "tools/optimisation/worker_pool.hpp"
 
 namespace mrd::tools {
 

@@ -2,8 +2,8 @@
 
 #include <cstddef>
 
-#include "tools/identification/optimiser.hpp"
-#include "tools/identification/random_stream.hpp"
+#include "tools/optimisation/optimiser.hpp"
+#include "tools/optimisation/random_stream.hpp"
 
 // The update rules of Section 3 as pure functions of their inputs and a random stream, so each
 // one is checked against a hand-worked case.

@@ -1,4 +1,4 @@
-#include "tools/replay/zero_phase_velocity.hpp"
+#include "tools/signal/zero_phase_velocity.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -6,7 +6,7 @@
 #include <numbers>
 #include <span>
 
-#include "tools/spectrum.hpp"
+#include "tools/signal/spectrum.hpp"
 
 namespace mrd::tools {
 

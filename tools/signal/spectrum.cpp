@@ -1,4 +1,4 @@
-#include "tools/spectrum.hpp"
+#include "tools/signal/spectrum.hpp"
 
 #include <algorithm>
 #include <cmath>

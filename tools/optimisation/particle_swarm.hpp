@@ -2,7 +2,7 @@
 
 #include <cstdint>
 
-#include "tools/identification/optimiser.hpp"
+#include "tools/optimisation/optimiser.hpp"
 
 namespace mrd::tools {
 

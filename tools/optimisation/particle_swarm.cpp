@@ -1,11 +1,11 @@
-#include "tools/identification/particle_swarm.hpp"
+#include "tools/optimisation/particle_swarm.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "tools/identification/random_stream.hpp"
-#include "tools/identification/swarm_operators.hpp"
+#include "tools/optimisation/random_stream.hpp"
+#include "tools/optimisation/swarm_operators.hpp"
 
 namespace mrd::tools {
 

@@ -1,4 +1,4 @@
-#include "tools/identification/random_stream.hpp"
+#include "tools/optimisation/random_stream.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "tools/identification/swarm_operators.hpp"
+#include "tools/optimisation/swarm_operators.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "tools/identification/swarm_operators.hpp"
+#include "tools/optimisation/swarm_operators.hpp"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "tests/tools/identification/scripted_stream.hpp"
+#include "tests/tools/optimisation/scripted_stream.hpp"
 
 namespace {
 

@@ -1,0 +1,29 @@
+#pragma once
+
+#include <vector>
+
+#include "model/damper_model.hpp"
+#include "tools/residual/search_context.hpp"
+
+namespace mrd::tools::search {
+
+// The accepted set without one of its effects, refined: what the others explain on their own.
+struct Reduced {
+  model::DamperModel model;
+  double validation = 0.0;
+};
+
+// What the greedy rounds accepted, as the set revision then reconsiders it (step 6): with two or
+// more accepted, each is reconsidered beside the others, since the greedy rounds alone never
+// revisit an early pick.
+struct AcceptedSet {
+  Effects effects;
+  std::vector<Effects> rivals;  // per effect: the candidates that also passed in its round
+  model::DamperModel model;
+  double validation = 0.0;
+  // Per effect, the others refined without it, as the last revision pass left them (empty when
+  // the set never had two effects).
+  std::vector<Reduced> without;
+};
+
+}  // namespace mrd::tools::search

@@ -1,0 +1,139 @@
+#include "tools/residual/base_identification.hpp"
+
+#include <algorithm>
+
+#include "tools/text_format.hpp"
+
+namespace mrd::tools::search {
+
+namespace {
+
+// Nelder-Mead from `from`, restarted from its best while that still pays: a simplex in eight
+// coordinates collapses along the ridges that the material's shape and the yield law share.
+FittedModel refine_with_restarts(Search& s, const ParameterSpace& space, const FitSeries& series, const Point& from) {
+  const auto dimension = static_cast<int>(space.bounds.dimension());
+  FittedModel best = refine_space(space, series, from, 20 + 30 * dimension, 0.05);
+  s.evaluations += best.evaluations;
+  for (int restart = 0; restart < 2; ++restart) {
+    const FittedModel again = refine_space(space, series, best.theta, 20 + 30 * dimension, 0.05);
+    s.evaluations += again.evaluations;
+    const bool paid = again.fitting_rms < (1.0 - 1e-3) * best.fitting_rms;
+    if (again.fitting_rms < best.fitting_rms) best = again;
+    if (!paid) break;
+  }
+  return best;
+}
+
+// The effects of `model` whose parameters enter the force linearly: refitted among the linear
+// terms while the base moves.
+LinearEffects linear_effects_of(const model::DamperModel& model) {
+  LinearEffects out;
+  for (const model::EffectInfo& e : model::effect_infos()) {
+    if (!e.linear.empty() && e.enabled(model.effects)) out.push_back(&e);
+  }
+  return out;
+}
+
+}  // namespace
+
+FittedModel identify_base(Search& s, const model::DamperModel& origin, ParameterSpace& space, bool from_origin,
+                          const Point* also_from) {
+  const model::DamperModel& start = s.options.start;
+  const FitSeries& openings = s.swarm_series;
+  space = base_space(origin, start, s.scales, Magnetics::kMaterial);
+  space.linear = linear_effects_of(origin);
+  ParameterSpace exploring = space;
+  exploring.origin.integration.max_substeps = std::min(exploring.origin.integration.max_substeps, 64);
+  const FittedModel swarm = fit_space(exploring, openings, &s.pool, s.seed++, 2 * s.options.evaluations_per_parameter);
+  s.evaluations += swarm.evaluations;
+  // The two chains, each serial, side by side.
+  std::vector<Point> starts{swarm.theta};
+  if (from_origin) starts.push_back(base_coordinates(origin, start, s.scales, Magnetics::kMaterial));
+  if (also_from != nullptr) starts.push_back(*also_from);
+  std::vector<FittedModel> refined(starts.size());
+  s.pool.run(starts.size(), [&](std::size_t k, unsigned /*worker*/) {
+    refined[k] = refine_with_restarts(s, space, openings, starts[k]);
+  });
+  FittedModel best = *std::ranges::min_element(refined, {}, &FittedModel::fitting_rms);
+  if (openings.size() == s.fit_series.size()) return best;
+  const auto dimension = static_cast<int>(space.bounds.dimension());
+  const FittedModel whole = refine_space(space, s.fit_series, best.theta, 20 + 15 * dimension, 0.01);
+  s.evaluations += whole.evaluations;
+  return whole;
+}
+
+FittedModel fit_base_model(Search& s, ParameterSpace& space) {
+  if (s.options.progress != nullptr) s.options.progress->report({.stage = "base fit"});
+  return identify_base(s, s.options.start, space, true);
+}
+
+FittedModel refit_robustly(Search& s, ParameterSpace& space, FittedModel base, int& refits) {
+  const RobustLoss& loss = s.options.robust;
+  if (!s.options.robust_fit || !(loss.tuning > 0.0)) return base;
+  const auto sigma_of = [&](const model::DamperModel& m) {
+    FitSeries plain = s.fit_series;
+    plain.loss = {};
+    std::vector<double> force;
+    predict_force(m, plain, force);
+    return huber_weights(plain, force, loss);
+  };
+  const auto set_loss = [&](FitLoss::Kind kind, double sigma) {
+    s.fit_series.loss = s.swarm_series.loss = FitLoss{kind, loss.tuning * sigma};
+  };
+  const RobustWeights least_squares = sigma_of(base.model);
+  if (least_squares.down_weighted_share < loss.refit_share) return base;
+  set_loss(FitLoss::Kind::kCauchy, least_squares.sigma);
+  base = identify_base(s, s.options.start, space, true, &base.theta);
+  const double sigma = sigma_of(base.model).sigma;
+  set_loss(FitLoss::Kind::kCauchy, sigma);
+  base = refine_with_restarts(s, space, s.fit_series, base.theta);
+  set_loss(FitLoss::Kind::kHuber, sigma_of(base.model).sigma);
+  refits = 1;
+  return base;
+}
+
+std::vector<std::string> describe_base(const ParameterSpace& space, const FittedModel& fit,
+                                       const model::DamperModel& start) {
+  std::vector<std::string> lines;
+  const model::DamperModel& m = fit.model;
+  const model::BinghamDamper damper = fluid_of(m);
+  lines.push_back(format("force scale %.4g of the starting damper (pole length %.4g m)",
+                         fit.linear.force_scale, m.geometry.pole_length));
+  lines.push_back(format("viscous coefficient c0 %.4g N s/m (viscosity %.4g Pa s), flow index n %.3g",
+                         damper.viscous_coefficient(), m.fluid.viscosity, m.fluid.flow_index));
+  lines.push_back(format("seal friction %.4g N", m.geometry.seal_friction));
+  lines.push_back(format("sign velocity v_s %.4g m/s, sign shape %.3g (-1 atan, 0 tanh, 1 knee)",
+                         m.geometry.sign_velocity_scale, m.geometry.sign_shape));
+  const bool gain = std::ranges::find(space.parameters, std::string("log10 field gain [turns/m]")) != space.parameters.end();
+  const bool material = std::ranges::find(space.parameters, std::string("J-A c")) != space.parameters.end();
+  if (gain) {
+    lines.push_back(format("field gain %.4g turns/m (%.4g x the starting coil's), yield exponent of B %.4g, "
+                           "yield saturation B_s %.3g T (shape %.3g)",
+                           m.circuit.turns / m.circuit.effective_length, m.circuit.turns / start.circuit.turns,
+                           m.fluid.field_exponent, m.fluid.saturation_induction, m.fluid.saturation_shape));
+  } else {
+    lines.push_back("field gain, J-A material and yield exponent kept: the current does not vary, so they cannot be identified");
+  }
+  if (material) {
+    const model::JilesAthertonParams& ja = m.jiles_atherton;
+    lines.push_back(format("J-A material: k %.4g A/m, c %.3g, alpha %.4g (alpha Ms/3a %.3g); a %.4g A/m and Ms %.4g A/m "
+                           "kept from the start (a force record fixes only H/a and the force scale)",
+                           ja.k, ja.c, ja.alpha, ja.mean_field_gain(), ja.a, ja.Ms));
+    if (!(start.jiles_atherton == model::JilesAthertonParams{}))
+      lines.push_back(format("the config's J-A material (a prior): k %.4g A/m, c %.3g, alpha %.4g",
+                             start.jiles_atherton.k, start.jiles_atherton.c, start.jiles_atherton.alpha));
+  }
+  // A coordinate on its range's edge: the run asks for more than the physical range allows.
+  const Point theta = fit.theta;
+  for (Eigen::Index i = 0; i < theta.size() && i < space.bounds.dimension(); ++i) {
+    const double span = space.bounds.upper[i] - space.bounds.lower[i];
+    const bool none_at_top = space.parameters[static_cast<std::size_t>(i)].starts_with("log10 yield saturation");
+    if (theta[i] <= space.bounds.lower[i] + 1e-3 * span || (!none_at_top && theta[i] >= space.bounds.upper[i] - 1e-3 * span))
+      lines.push_back(format("%s at the edge of its physical range [%.3g, %.3g]",
+                             space.parameters[static_cast<std::size_t>(i)].c_str(), space.bounds.lower[i],
+                             space.bounds.upper[i]));
+  }
+  return lines;
+}
+
+}  // namespace mrd::tools::search

@@ -1,0 +1,42 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "model/damper_model.hpp"
+#include "tools/residual/model_fit.hpp"
+#include "tools/residual/search_context.hpp"
+
+namespace mrd::tools::search {
+
+// The base identified on `origin` (its effects kept, their linear parameters refitted among the
+// linear terms): the improved PSO over every base coordinate on the runs' openings, J-A's
+// sub-steps capped at 64 a sample while it explores (a trial at 30x the field gain and a
+// twentieth of the pinning would otherwise take 600x the sub-steps of the origin); Nelder-Mead
+// with restarts there from the swarm's best and, with `from_origin`, from the origin's
+// coordinates (the config's damper, a prior, or a model already fitted), the two chains side by
+// side (and a third from `also_from`, when given); then Nelder-Mead on the whole fitting series
+// from the best. `space` is the whole space.
+FittedModel identify_base(Search& s, const model::DamperModel& origin, ParameterSpace& space, bool from_origin,
+                          const Point* also_from = nullptr);
+
+// Step 2: the base model from the start's damper.
+FittedModel fit_base_model(Search& s, ParameterSpace& space);
+
+// Step 3b, the robust loss (--robust-fit). Where the least-squares base leaves a material share
+// of the fitting series' weight to Huber's loss (a fault no screening rule named), the base is
+// identified again under Cauchy's loss, its knee at the tuning times the least-squares
+// residual's robust sigma (a fault bends the swarm's exploration, not only the last
+// refinement), then refined with the knee from its own residual, narrower: a fault's pull
+// fades with the knee. Every later fit and judgement runs under Huber's loss at that knee: a
+// candidate that explains samples far off the base (stroke-end air) still gains their whole
+// distance, linearly, where Cauchy's would hardly see it coming. `refits` becomes 1 when it
+// identified the base again.
+FittedModel refit_robustly(Search& s, ParameterSpace& space, FittedModel base, int& refits);
+
+// What the base fit found, one line each, for the reports: the fitted damper's figures and the
+// coordinates left on their range's edge.
+std::vector<std::string> describe_base(const ParameterSpace& space, const FittedModel& fit,
+                                       const model::DamperModel& start);
+
+}  // namespace mrd::tools::search

@@ -1,0 +1,75 @@
+#include "tools/residual/greedy_rounds.hpp"
+
+#include <algorithm>
+#include <cstdint>
+
+#include "tools/residual/ambiguity_naming.hpp"
+#include "tools/residual/base_identification.hpp"
+#include "tools/residual/candidate_trials.hpp"
+#include "tools/residual/joint_refinement.hpp"
+
+namespace mrd::tools::search {
+
+namespace {
+
+// The candidates: the options' names (default: every effect), less those the start declares.
+Effects candidate_effects(const ResidualOptions& options) {
+  Effects out;
+  for (const model::EffectInfo& e : model::effect_infos()) {
+    const bool listed = options.candidates.empty() ||
+                        std::ranges::find(options.candidates, e.name) != options.candidates.end();
+    if (listed && e.named_candidate && !e.enabled(options.start.effects)) out.push_back(&e);
+  }
+  return out;
+}
+
+}  // namespace
+
+model::DamperModel polish_accepted(Search& s, const model::DamperModel& accepted, const Effects& effects,
+                                   double& validation) {
+  ParameterSpace space;
+  const model::DamperModel rebased = identify_base(s, accepted, space, true).model;
+  std::int64_t spent = 0;
+  const model::DamperModel polished =
+      refine_jointly(s, rebased, effects, effect_coordinates(effects, rebased, s.scales),
+                     {{20, 0.02, 20}, {20, 0.005}, {20, 0.005}}, spent)
+          .model;
+  s.evaluations += spent;
+  const double polished_validation = s.validation_rms(polished);
+  const bool keep = polished_validation <= validation;
+  validation = std::min(polished_validation, validation);
+  return keep ? polished : accepted;
+}
+
+AcceptedSet greedy_rounds(Search& s, const model::DamperModel& base, ResidualResult& result,
+                          std::vector<Effects>& ambiguous_groups) {
+  Effects candidates = candidate_effects(s.options);
+  AcceptedSet set;
+  set.model = base;
+  set.validation = s.validation_rms(set.model);
+  for (int round_number = 1; !candidates.empty(); ++round_number) {
+    Round round = try_candidates(s, set.model, set.validation, candidates, round_number);
+    const std::size_t best = judge_round(round, set.validation, s.options.minimum_reduction);
+    if (best < round.trials.size()) {
+      Effects alike = ambiguous_with_winner(round, candidates, best, s.options.minimum_reduction);
+      Effects rivals;
+      for (std::size_t i = 0; i < round.trials.size(); ++i)
+        if (i != best && round.trials[i].passed())
+          rivals.push_back(candidates[i]);
+      if (!alike.empty()) {
+        alike.insert(alike.begin(), candidates[best]);
+        ambiguous_groups.push_back(std::move(alike));
+      }
+      set.effects.push_back(candidates[best]);
+      set.rivals.push_back(std::move(rivals));
+      set.validation = round.trials[best].validation_rms;
+      set.model = polish_accepted(s, round.fits[best].model, set.effects, set.validation);
+      candidates.erase(candidates.begin() + static_cast<std::ptrdiff_t>(best));
+    }
+    result.trials.insert(result.trials.end(), round.trials.begin(), round.trials.end());
+    if (best == round.trials.size()) break;
+  }
+  return set;
+}
+
+}  // namespace mrd::tools::search

@@ -1,0 +1,25 @@
+#pragma once
+
+#include "model/damper_model.hpp"
+#include "tools/residual/accepted_set.hpp"
+#include "tools/residual/residual_result.hpp"
+#include "tools/residual/search_context.hpp"
+
+namespace mrd::tools::search {
+
+// Step 6b: each named effect against the library's terms, the model without it with the damper
+// terms the regression accepts in its place. Terms led by the effect's own physics (its
+// descriptor's kTermForms: a gas spring is a k x) are not rivals. The terms replace the effect
+// when they validate better than it by more than the threshold and, beside the terms, the
+// effect's removal costs less than the threshold (step 7 then finds them). Within the threshold
+// of each other the run cannot decide: the named effect stays, since its parameters mean
+// something physical, and both are reported. `base` is the base model (the rest of a set of one).
+void weigh_effects_against_terms(Search& s, AcceptedSet& set, const model::DamperModel& base,
+                                 ResidualResult& result);
+
+// Step 7: what the named effects left, regressed on the library of terms; damper terms join
+// `model` (learned_terms), mains lines are taken off the measurement. Leaves the prediction
+// after in result.predicted_after.
+void discover(Search& s, model::DamperModel& model, ResidualResult& result);
+
+}  // namespace mrd::tools::search

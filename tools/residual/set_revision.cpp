@@ -1,0 +1,101 @@
+#include "tools/residual/set_revision.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "tools/residual/candidate_trials.hpp"
+#include "tools/residual/greedy_rounds.hpp"
+#include "tools/residual/joint_refinement.hpp"
+#include "tools/text_format.hpp"
+
+namespace mrd::tools::search {
+
+Reduced without_effect(Search& s, const model::DamperModel& current, const Effects& accepted,
+                       const model::EffectInfo* dropped) {
+  Effects rest;
+  for (const model::EffectInfo* e : accepted)
+    if (e != dropped) rest.push_back(e);
+  model::DamperModel origin = current;
+  dropped->disable(origin.effects);
+  std::int64_t spent = 0;
+  Reduced out;
+  out.model = refine_jointly(s, origin, rest, effect_coordinates(rest, origin, s.scales), {{15, 0.02, 12}, {8, 0.02}},
+                             spent)
+                  .model;
+  s.evaluations += spent;
+  out.validation = s.validation_rms(out.model);
+  return out;
+}
+
+void revise_set(Search& s, AcceptedSet& set, ResidualResult& result) {
+  const double threshold = s.options.minimum_reduction;
+  for (std::size_t k = 0; set.effects.size() >= 2 && k < set.effects.size(); ++k) {
+    if (set.rivals[k].empty()) continue;
+    const model::EffectInfo* held = set.effects[k];
+    const Reduced rest = without_effect(s, set.model, set.effects, held);
+    Round round = try_candidates(s, rest.model, rest.validation, set.rivals[k], 0);
+    std::size_t best = set.rivals[k].size();
+    for (std::size_t i = 0; i < round.trials.size(); ++i) {
+      if (round.trials[i].verdict == TrialVerdict::kNotPhysical) continue;
+      if (best == set.rivals[k].size() || round.trials[i].validation_rms < round.trials[best].validation_rms) best = i;
+    }
+    if (best == set.rivals[k].size() || !(round.trials[best].validation_rms < set.validation)) continue;
+    result.revisions.push_back(format("swapped %s for %s: validation RMS %.4g -> %.4g N beside the others",
+                                      std::string(held->name).c_str(), round.trials[best].effect.c_str(),
+                                      set.validation, round.trials[best].validation_rms));
+    set.effects[k] = set.rivals[k][best];
+    set.rivals[k].erase(set.rivals[k].begin() + static_cast<std::ptrdiff_t>(best));
+    set.rivals[k].push_back(held);
+    set.validation = round.trials[best].validation_rms;
+    set.model = polish_accepted(s, round.fits[best].model, set.effects, set.validation);
+  }
+  while (set.effects.size() >= 2) {
+    std::size_t weakest = set.effects.size();
+    double weakest_cost = threshold;
+    std::vector<Reduced> rests;
+    for (std::size_t k = 0; k < set.effects.size(); ++k) {
+      rests.push_back(without_effect(s, set.model, set.effects, set.effects[k]));
+      const double cost = 1.0 - set.validation / std::max(rests.back().validation, 1e-300);
+      if (cost < weakest_cost) {
+        weakest = k;
+        weakest_cost = cost;
+      }
+    }
+    if (weakest == set.effects.size()) {
+      set.without = std::move(rests);
+      break;
+    }
+    Reduced& weakest_rest = rests[weakest];
+    result.revisions.push_back(format("dropped %s: without it the validation RMS rises only %.1f%% (%.4g -> %.4g N)",
+                                      std::string(set.effects[weakest]->name).c_str(), 100.0 * weakest_cost,
+                                      set.validation, weakest_rest.validation));
+    set.effects.erase(set.effects.begin() + static_cast<std::ptrdiff_t>(weakest));
+    set.rivals.erase(set.rivals.begin() + static_cast<std::ptrdiff_t>(weakest));
+    set.model = std::move(weakest_rest.model);
+    set.validation = weakest_rest.validation;
+  }
+}
+
+void mark_final_set(ResidualResult& result) {
+  for (auto it = result.trials.rbegin(); it != result.trials.rend(); ++it) {
+    const bool in_set = std::ranges::find(result.accepted, it->effect) != result.accepted.end();
+    if (it->accepted() && !in_set) {
+      it->verdict = TrialVerdict::kRevisedOut;
+      it->explanation += "; revised out of the set";
+    }
+  }
+  for (const std::string& name : result.accepted) {
+    const bool flagged = std::ranges::any_of(result.trials, [&](const CandidateTrial& t) { return t.accepted() && t.effect == name; });
+    if (flagged) continue;
+    for (auto it = result.trials.rbegin(); it != result.trials.rend(); ++it) {
+      if (it->effect != name) continue;
+      it->verdict = TrialVerdict::kAcceptedInRevision;
+      it->explanation = "accepted in the set revision (" + it->explanation + ")";
+      break;
+    }
+  }
+}
+
+}  // namespace mrd::tools::search

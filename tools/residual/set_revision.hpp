@@ -1,0 +1,23 @@
+#pragma once
+
+#include "model/damper_model.hpp"
+#include "tools/residual/accepted_set.hpp"
+#include "tools/residual/residual_result.hpp"
+#include "tools/residual/search_context.hpp"
+
+namespace mrd::tools::search {
+
+// The accepted set without `dropped`, refined: what the others explain on their own.
+Reduced without_effect(Search& s, const model::DamperModel& current, const Effects& accepted,
+                       const model::EffectInfo* dropped);
+
+// Step 6: with two or more accepted, each is reconsidered beside the others: it is swapped for a
+// candidate that passed in its round when that one now validates better, and dropped when
+// removing it costs less than the threshold. Each swap and drop goes to result.revisions.
+void revise_set(Search& s, AcceptedSet& set, ResidualResult& result);
+
+// The trials' verdicts follow the revised set (result.accepted): a dropped or swapped-out
+// effect's trial is no longer accepted, and a swapped-in effect's last trial is.
+void mark_final_set(ResidualResult& result);
+
+}  // namespace mrd::tools::search
