@@ -44,12 +44,25 @@ void print_set_aside(const mrd::tools::TelemetryLog& log) {
   if (log.set_aside_rows.size() > kMaxListed) std::printf("  ... and %zu more\n", log.set_aside_rows.size() - kMaxListed);
 }
 
+// Gaps with records missing one a line; steps of a late loop (no record missing) in one line.
 void print_gaps(const mrd::tools::TelemetryLog& log) {
-  if (log.gaps.empty()) return;
-  std::printf("telemetry gaps: %zu (no figure spans one: a transition across one is dated by it)\n", log.gaps.size());
-  for (std::size_t i = 0; i < log.gaps.size() && i < kMaxListed; ++i)
-    std::printf("  %s\n", to_string(log.gaps[i], log.rows).c_str());
-  if (log.gaps.size() > kMaxListed) std::printf("  ... and %zu more\n", log.gaps.size() - kMaxListed);
+  std::size_t missing = 0, late = 0;
+  const mrd::tools::TelemetryGap* longest_late = nullptr;
+  for (const auto& g : log.gaps) {
+    if (g.missing == 0) {
+      ++late;
+      if (longest_late == nullptr || g.duration() > longest_late->duration()) longest_late = &g;
+    } else if (missing++ == 0) {
+      std::printf("telemetry gaps (records missing; no figure spans one, a transition across one is dated by it):\n");
+    }
+    if (g.missing > 0 && missing <= kMaxListed) std::printf("  %s\n", to_string(g, log.rows).c_str());
+  }
+  if (missing > kMaxListed) std::printf("  ... and %zu more\n", missing - kMaxListed);
+  if (late > 0) {
+    std::printf("telemetry: %zu steps over 1.5 periods with no record missing (the loop ran late); the longest "
+                "%.3f s from %.3f s (line %zu)\n",
+                late, longest_late->duration(), longest_late->start, log.rows[longest_late->before + 1].line);
+  }
 }
 
 void print_plant_log(const mrd::record::RecordedRun& plant, const mrd::tools::ForceJoin& j) {
@@ -59,6 +72,7 @@ void print_plant_log(const mrd::record::RecordedRun& plant, const mrd::tools::Fo
               j.plant_gaps.size(), j.in_plant_gaps);
   for (std::size_t i = 0; i < j.plant_gaps.size() && i < kMaxListed; ++i)
     std::printf("  %.3f s from %.3f s\n", j.plant_gaps[i].second - j.plant_gaps[i].first, j.plant_gaps[i].first);
+  if (j.plant_gaps.size() > kMaxListed) std::printf("  ... and %zu more\n", j.plant_gaps.size() - kMaxListed);
 }
 
 }  // namespace

@@ -83,8 +83,8 @@ TelemetryLog read_telemetry_csv(const std::string& path);
 // "0.300 s from 1.200 s (lines 1203-1204): 299 records missing"
 [[nodiscard]] std::string to_string(const TelemetryGap& g, const std::vector<TelemetryRow>& rows);
 
-// A state change in the telemetry: the row where it took effect. Across a gap that row is only
-// the first one seen after it: the change took effect somewhere in the gap.
+// A state change in the telemetry: the row where it took effect. After a gap with records missing
+// that row is only the first one seen: the change took effect somewhere in the gap.
 struct StateChange {
   std::uint64_t cycle = 0;
   double time = 0.0;

@@ -97,13 +97,17 @@ TEST(TelemetryFaults, AGapIsFoundByItsMissingCyclesAndATransitionInItIsDatedByIt
   ASSERT_TRUE(changes[0].within.has_value());
   EXPECT_EQ(to_string(changes[0]), "INIT -> RUN (none) within a gap: after 0.039 s, by cycle 340 (0.340 s)");
   // Decimated telemetry (every 10th cycle) has no gap, and a late loop (a long step with no
-  // cycle missing) is one that says so.
+  // cycle missing) is one that says so; a transition on the late cycle is dated by its row.
   std::string decimated = kHeader;
-  for (std::uint64_t c = 0; c < 200; c += 10) decimated += row(c, 1e-3 * static_cast<double>(c) + (c >= 100 ? 0.02 : 0.0));
+  for (std::uint64_t c = 0; c < 200; c += 10)
+    decimated += row(c, 1e-3 * static_cast<double>(c) + (c >= 100 ? 0.02 : 0.0), 1.0, 0.5, c >= 100 ? "SAFE" : "RUN");
   const auto late = parse_telemetry_csv(decimated, "d.csv");
   ASSERT_EQ(late.gaps.size(), 1u);
   EXPECT_EQ(late.gaps[0].missing, 0u);
   EXPECT_NE(to_string(late.gaps[0], late.rows).find("no record missing"), std::string::npos);
+  const auto trip = mrd::tools::state_changes(late.rows, late.gaps);
+  ASSERT_EQ(trip.size(), 2u);  // INIT -> RUN at the first row, RUN -> SAFE on the late cycle
+  EXPECT_FALSE(trip[1].within.has_value());
 }
 
 // A plant log of 2 s at 1 kHz, its force a 2 Hz sine, and the controller's telemetry at the
