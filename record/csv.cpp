@@ -2,6 +2,7 @@
 
 #include "common/time_origin.hpp"
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -120,6 +121,13 @@ std::string_view unquote(std::string_view field) {
     field = field.substr(1, field.size() - 2);
   }
   return field;
+}
+
+bool is_non_finite(std::string_view cell) {
+  if (!cell.empty() && (cell.front() == '+' || cell.front() == '-')) cell.remove_prefix(1);
+  std::string lower(cell);
+  for (char& ch : lower) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  return lower.empty() || lower == "nan" || lower == "inf" || lower == "infinity";
 }
 
 std::optional<double> parse_finite(std::string_view field, bool decimal_comma) {

@@ -71,6 +71,9 @@ std::string_view unquote(std::string_view field);
 // one decimal separator is a comma ("0,25"), as semicolon-delimited exports write it.
 std::optional<double> parse_finite(std::string_view field, bool decimal_comma = false);
 
+// An empty cell, or nan / inf in any spelling: a logger's failed read, not a malformed file.
+[[nodiscard]] bool is_non_finite(std::string_view cell);
+
 // "file:line: column 'name': message", the one shape every input error takes.
 std::string input_error_message(std::string_view file, std::size_t line, std::string_view column,
                                 std::string_view message);

@@ -2,17 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 namespace mrd::record {
 
 namespace {
-
-std::string seconds(double t) {
-  char text[40];
-  std::snprintf(text, sizeof text, "%.9g s", t);
-  return text;
-}
 
 // The controller's own telemetry (runtime/csv_telemetry_writer.cpp) names columns that are no
 // run quantity (cycle, sample, state, ...) and three currents: recognised by its first columns,
@@ -184,31 +177,25 @@ void RunAssembler::add_row(const std::vector<double>& values, std::size_t positi
   position_ = position;
   for (std::size_t k = 0; k < used_.size(); ++k)
     if (!std::isfinite(values[k])) return set_aside("non_finite", used_[k].label);
-  const std::size_t n = run_.size();
-  for (std::size_t k = 0; k < used_.size(); ++k) {
-    if (used_[k].unit.quantity != RunQuantity::kTime || n == 0) continue;
-    const double previous = run_.time.back();
-    if (values[k] > previous) break;
-    if (values[k] == previous && same_as_last_row(values)) return set_aside("duplicate", "");
-    // Two rows in a row that go back, in order and past the row before the last kept one: that
-    // row was the stray (a time written too far ahead), not they and every row after them.
-    if (conflict_ && values[k] > conflict_->values[k] && (n == 1 || conflict_->values[k] > run_.time[n - 2])) {
+  const Column* time = find(RunQuantity::kTime);
+  if (time == nullptr) return keep_row(values, position);
+  const double t = values[static_cast<std::size_t>(time - used_.data())];
+  const bool repeats = screen_.repeats_last_time(t) && same_as_last_row(values);
+  switch (screen_.screen(t, repeats, position)) {
+    case RowScreen::Verdict::kKeep: return keep_row(values, position);
+    case RowScreen::Verdict::kDuplicate: return set_aside("duplicate", "");
+    case RowScreen::Verdict::kTimeConflict:
+      conflict_ = PendingRow{values, position};
+      return set_aside("time_conflict", time->label);
+    case RowScreen::Verdict::kKeepAfterStray: {
       const PendingRow pending = *conflict_;
-      drop_last_row(used_[k].label);
+      drop_last_row(time->label);
       std::erase_if(run_.set_aside_rows, [&](const auto& r) { return r.line == pending.position; });
       keep_row(pending.values, pending.position);
-      break;
+      return keep_row(values, position);
     }
-    // A clock that jumped back is no stray row: the file holds two runs.
-    if (++conflicts_in_a_row_ == kMaxConflictsInARow)
-      throw fail(used_[k].label, "time stays behind " + seconds(run_.time.back()) + " for " +
-                                     std::to_string(kMaxConflictsInARow) + " rows from " + std::string(where()) +
-                                     " " + std::to_string(conflict_start_) + ": the clock jumped back; split the file there");
-    if (conflicts_in_a_row_ == 1) conflict_start_ = position;
-    conflict_ = PendingRow{values, position};
-    return set_aside("time_conflict", used_[k].label);
+    case RowScreen::Verdict::kClockJumpedBack: throw fail(time->label, screen_.clock_jumped_back(where()));
   }
-  keep_row(values, position);
 }
 
 void RunAssembler::keep_row(const std::vector<double>& values, std::size_t position) {
@@ -218,7 +205,6 @@ void RunAssembler::keep_row(const std::vector<double>& values, std::size_t posit
   if (constant_) run_.coil.push_back(constant_->amps);
   last_position_ = position;
   conflict_.reset();
-  conflicts_in_a_row_ = 0;
 }
 
 bool RunAssembler::same_as_last_row(const std::vector<double>& values) {
@@ -246,25 +232,8 @@ void RunAssembler::set_aside(std::string_view reason, const std::string& column)
 
 // Counts per reason in one note, with the first position of each.
 void RunAssembler::note_set_aside_rows() {
-  std::string text;
-  for (const std::string_view reason : {"duplicate", "time_conflict", "non_finite"}) {
-    std::size_t count = 0, first = 0;
-    for (const auto& r : run_.set_aside_rows) {
-      if (r.reason != reason) continue;
-      if (count++ == 0) first = r.line;
-    }
-    if (count == 0) continue;
-    text.append(text.empty() ? "" : ", ")
-        .append(std::to_string(count))
-        .append(" ")
-        .append(reason)
-        .append(" (first at ")
-        .append(where())
-        .append(" ")
-        .append(std::to_string(first))
-        .append(")");
-  }
-  if (!text.empty()) note("rows set aside: " + text);
+  const std::string counts = set_aside_counts(run_.set_aside_rows, where());
+  if (!counts.empty()) note("rows set aside: " + counts);
 }
 
 RecordedRun RunAssembler::finish(std::size_t start) {

@@ -10,6 +10,7 @@
 #include "record/csv.hpp"
 #include "record/recorded_run.hpp"
 #include "record/run_columns.hpp"
+#include "record/row_screen.hpp"
 #include "record/run_read_options.hpp"
 
 namespace mrd::record {
@@ -89,9 +90,7 @@ class RunAssembler {
     std::size_t position = 0;
   };
   std::optional<PendingRow> conflict_;
-  static constexpr int kMaxConflictsInARow = 20;
-  int conflicts_in_a_row_ = 0;
-  std::size_t conflict_start_ = 0;
+  RowScreen screen_;
 };
 
 }  // namespace mrd::record

@@ -1,7 +1,6 @@
 #include "record/run_csv.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <limits>
 
 #include "record/csv.hpp"
@@ -10,14 +9,6 @@
 namespace mrd::record {
 
 namespace {
-
-// An empty cell, or nan / inf in any spelling: a logger's failed read, not a malformed file.
-bool is_non_finite(std::string_view cell) {
-  if (!cell.empty() && (cell.front() == '+' || cell.front() == '-')) cell.remove_prefix(1);
-  std::string lower(cell);
-  for (char& ch : lower) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-  return lower.empty() || lower == "nan" || lower == "inf" || lower == "infinity";
-}
 
 class RunCsvParser {
  public:

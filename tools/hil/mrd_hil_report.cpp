@@ -13,6 +13,7 @@
 #include "tools/gnuplot.hpp"
 #include "tools/hil/force_join.hpp"
 #include "tools/hil/telemetry_csv.hpp"
+#include "record/row_screen.hpp"
 #include "record/run_reader.hpp"
 
 namespace {
@@ -23,9 +24,55 @@ std::string plot_script(const std::string& data, const std::string& png) {
          "set datafile separator ','\n"
          "set title 'mrd-controller against mrd-plant: force against displacement'\n"
          "set xlabel 'displacement [mm]'\nset ylabel 'force [kN]'\nset grid\nset key left top\n"
-         "plot '" + data + "' every ::1 using 1:2 with lines lw 2 lc rgb '#888888' title "
-         "'plant (true force)', '' every ::1 using 1:3 with lines lc rgb '#1f77b4' title "
+         "plot '" + data + "' using 1:2 with lines lw 2 lc rgb '#888888' title "
+         "'plant (true force)', '' using 1:3 with lines lc rgb '#1f77b4' title "
          "'controller observer'\n";
+}
+
+// What the reader set aside, each row with its line (the first kMaxListed of each file).
+constexpr std::size_t kMaxListed = 10;
+
+void print_set_aside(const mrd::tools::TelemetryLog& log) {
+  const std::string counts = mrd::record::set_aside_counts(log.set_aside_rows, "line");
+  if (counts.empty()) return;
+  std::printf("telemetry rows set aside: %s\n", counts.c_str());
+  for (std::size_t i = 0; i < log.set_aside_rows.size() && i < kMaxListed; ++i) {
+    const auto& r = log.set_aside_rows[i];
+    std::printf("  line %zu: %.*s%s\n", r.line, static_cast<int>(r.reason.size()), r.reason.data(),
+                r.column.empty() ? "" : (", column '" + r.column + "'").c_str());
+  }
+  if (log.set_aside_rows.size() > kMaxListed) std::printf("  ... and %zu more\n", log.set_aside_rows.size() - kMaxListed);
+}
+
+// Gaps with records missing one a line; steps of a late loop (no record missing) in one line.
+void print_gaps(const mrd::tools::TelemetryLog& log) {
+  std::size_t missing = 0, late = 0;
+  const mrd::tools::TelemetryGap* longest_late = nullptr;
+  for (const auto& g : log.gaps) {
+    if (g.missing == 0) {
+      ++late;
+      if (longest_late == nullptr || g.duration() > longest_late->duration()) longest_late = &g;
+    } else if (missing++ == 0) {
+      std::printf("telemetry gaps (records missing; no figure spans one, a transition across one is dated by it):\n");
+    }
+    if (g.missing > 0 && missing <= kMaxListed) std::printf("  %s\n", to_string(g, log.rows).c_str());
+  }
+  if (missing > kMaxListed) std::printf("  ... and %zu more\n", missing - kMaxListed);
+  if (late > 0) {
+    std::printf("telemetry: %zu steps over 1.5 periods with no record missing (the loop ran late); the longest "
+                "%.3f s from %.3f s (line %zu)\n",
+                late, longest_late->duration(), longest_late->start, log.rows[longest_late->before + 1].line);
+  }
+}
+
+void print_plant_log(const mrd::record::RecordedRun& plant, const mrd::tools::ForceJoin& j) {
+  for (const auto& note : plant.notes) std::printf("plant log: %s\n", note.c_str());
+  if (j.plant_gaps.empty()) return;
+  std::printf("plant log gaps: %zu; %zu records in control fall in them and are left out of the force error\n",
+              j.plant_gaps.size(), j.in_plant_gaps);
+  for (std::size_t i = 0; i < j.plant_gaps.size() && i < kMaxListed; ++i)
+    std::printf("  %.3f s from %.3f s\n", j.plant_gaps[i].second - j.plant_gaps[i].first, j.plant_gaps[i].first);
+  if (j.plant_gaps.size() > kMaxListed) std::printf("  ... and %zu more\n", j.plant_gaps.size() - kMaxListed);
 }
 
 }  // namespace
@@ -62,12 +109,15 @@ int main(int argc, char** argv) {
     };
     const double offset = origin(controller_t0, log.time_origin, telemetry_path, "--controller-t0") -
                           origin(plant_t0, plant.time_origin, plant_path, "--plant-t0");
-    std::printf("telemetry: %zu records; plant log: %zu samples at %.0f Hz\n", telemetry.size(),
-                plant.size(), plant.sample_rate);
+    std::printf("telemetry: %zu records at %.0f Hz; plant log: %zu samples at %.0f Hz\n", telemetry.size(),
+                log.record_rate, plant.size(), plant.sample_rate);
+    print_set_aside(log);
+    print_gaps(log);
     std::printf("supervisor transitions:\n");
-    for (const auto& c : mrd::tools::state_changes(telemetry)) std::printf("  %s\n", to_string(c).c_str());
-
+    for (const auto& c : mrd::tools::state_changes(telemetry, log.gaps)) std::printf("  %s\n", to_string(c).c_str());
     const auto j = mrd::tools::join_force(telemetry, plant, offset);
+    print_plant_log(plant, j);
+
     std::printf("joined %zu records in control; LVDT transport lag %.2f ms (displacement RMS "
                 "difference %.1f um after it)\n",
                 j.rows, j.lag * 1e3, j.displacement_rms * 1e6);
@@ -78,8 +128,11 @@ int main(int argc, char** argv) {
       const std::string data = plot + "/force_displacement.csv";
       const std::string png = plot + "/force_displacement.png";
       std::ofstream out(data);
-      out << "displacement_mm,true_force_kN,observer_force_kN\n";
+      // A blank line ends a stretch: gnuplot draws no line across a gap or a row left out.
+      out << "# displacement_mm,true_force_kN,observer_force_kN\n";
+      const double long_step = 1.5 / log.record_rate;
       for (std::size_t i = 0; i < j.rows; ++i) {
+        if (i > 0 && j.time[i] - j.time[i - 1] > long_step) out << '\n';
         out << j.displacement[i] * 1e3 << ',' << j.true_force[i] * 1e-3 << ','
             << j.observer_force[i] * 1e-3 << '\n';
       }

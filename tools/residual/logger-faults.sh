@@ -1,86 +1,85 @@
 #!/usr/bin/env bash
-# Logger faults injected into one simulated run (issue 27's table in docs/CLOSING-THE-LOOP.md,
-# "Data as loggers write it"): the run without its velocity column (so the zero-phase velocity and
-# its record edges are in play), then the same with a gap of 0.05 s, 0.3 s and 2 s, 1 % of its rows
-# written twice, 5 empty cells, 3 rows whose time goes back, and each sample taken up to 10 % or
-# 30 % of a period off its grid time (picked from a 10 kHz simulation; the clean run is its every
-# 10th sample, so all variants share one noise), and a rig at its end stop (0.36 s of a still LVDT
-# under a ringing, clipped load cell: implausible). Prints, per variant, the effects
-# named, the RMS after on the kept samples, and that RMS in the first and last second against the
-# rest (from the residual trace --plot writes).
-# Usage: tools/residual/logger-faults.sh [BUILD_DIR] [OUT_DIR] [EFFECT]   (default effect gas_spring)
+# Logger faults injected into clean runs (issue 27's tables in docs/CLOSING-THE-LOOP.md, "Data as
+# loggers write it"), by tools/residual/inject_logger_faults.py: the unfaulted run, a gap of
+# 0.05 s, 0.3 s and 2 s, 1 % of its rows written twice, 5 empty cells, 3 rows whose time goes
+# back, each sample taken up to 10 % or 30 % of a period off its grid time, and a rig at its end
+# stop (0.36 s of a still LVDT under a ringing, clipped load cell: implausible). Sources:
+#   simulated    mrd-simulate-run, 1 kN, Table 4 for 12 s with EFFECT (default gas_spring), at
+#                10 kHz written at 1 kHz without its velocity column; jitter picks 10 kHz samples
+#   independent  tests/generator/damper_truth.py, telegraph current, 8 s with a field lag
+#                (coil_lag:2); jitter by interpolation
+#   measured     Quiroz's sine test 5mm3Hz0x75A.txt (data/damper/quiroz-utfsm), its own format
+#                and velocity column, 0.75 A; jitter by interpolation
+# Prints, per source and variant, the effects named, the RMS after on the kept samples and its
+# ratio to the unfaulted run's (**bold** over 1.05, "differs" where the effects are not the
+# unfaulted run's), and that RMS in the first and last second against the rest (from the
+# residual trace --plot writes).
+# Usage: tools/residual/logger-faults.sh [BUILD_DIR] [OUT_DIR] [SOURCE...] (default: simulated;
+#        all: the three). EFFECT=... sets the simulated run's effect.
 set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../.." && pwd)
 build=${1:-build/release}
 out=${2:-out/logger-faults}
-effect=${3:-gas_spring}
+shift $(($# > 2 ? 2 : $#))
+sources=("${@:-simulated}")
+[[ ${sources[0]} == all ]] && sources=(simulated independent measured)
 python=${MRD_PYTHON:-/usr/bin/python3}
-mkdir -p "$out"
-"$build/tools/simulation/mrd-simulate-run" --profile table4 --damper 1kN --duration 12 --effect "$effect" \
-  --rate 10000 --csv "$out/simulated.csv" > /dev/null
-"$python" - "$out" <<'PY'
-import csv, math, random, sys
-out = sys.argv[1]
-rows = list(csv.reader(open(f"{out}/simulated.csv")))
-header, fine = rows[0], rows[1:]
-data = fine[::10]
-keep = [i for i, h in enumerate(header) if not h.startswith("velocity")]
-header = [header[i] for i in keep]
-data = [[r[i] for i in keep] for r in data]
-def write(name, rows):
-    with open(f"{out}/{name}.csv", "w", newline="") as f:
-        w = csv.writer(f); w.writerow(header); w.writerows(rows)
-write("clean", data)
-n = len(data); rate = round((n - 1) / (float(data[-1][0]) - float(data[0][0])))
-for seconds in (0.05, 0.3, 2.0):
-    a = n // 2; b = a + int(seconds * rate)
-    write(f"gap_{seconds:g}s", data[:a] + data[b:])
-rng = random.Random(5)
-twice = set(rng.sample(range(n), n // 100))
-write("duplicates_1pc", [r for i, r in enumerate(data) for _ in range(2 if i in twice else 1)])
-empty = data[:]
-for i in rng.sample(range(10, n - 10), 5):
-    empty[i] = empty[i][:]; empty[i][1] = ""
-write("empty_cells_5", empty)
-back = data[:]
-for i in rng.sample(range(10, n - 10), 3):
-    back[i] = back[i][:]; back[i][0] = repr(float(back[i - 5][0]))
-write("time_back_3", back)
-keep_fine = [[r[i] for i in keep] for r in fine]
-for percent in (10, 30):
-    picked, last = [], -1
-    for i in range(0, len(fine), 10):
-        j = min(max(i + rng.randint(-percent // 10, percent // 10), last + 1), len(fine) - 1)
-        picked.append(keep_fine[j]); last = j
-    write(f"jitter_{percent}pc", picked)
-# A rig at its end stop for 0.36 s from 6 s: the LVDT jitters within 0.5 % of the stroke while
-# the load cell rings at 25 Hz through both signs and clips at the run's peak force.
-xs = [float(r[1]) for r in data]; fs = [float(r[3]) for r in data]
-stroke, peak = max(xs) - min(xs), max(abs(f) for f in fs)
-stop = [r[:] for r in data]
-first = next(i for i, r in enumerate(data) if float(r[0]) >= 6.0)
-for i in range(first, n):
-    t = float(data[i][0]) - 6.0
-    if t > 0.36: break
-    stop[i][1] = repr(xs[first] + 0.005 * stroke * (2.0 * rng.random() - 1.0))
-    stop[i][3] = repr(max(-peak, min(peak, 1.2 * peak * math.cos(2.0 * math.pi * 25.0 * t))))
-write("end_stop_ringing", stop)
-PY
-echo "| run | named | rms_after [N] | set aside | first and last 1 s [N] | in between [N] |"
-echo "|---|---|---:|---:|---:|---:|"
-for variant in clean gap_0.05s gap_0.3s gap_2s duplicates_1pc empty_cells_5 time_back_3 jitter_10pc jitter_30pc end_stop_ringing; do
-  "$build/tools/mrd-residual" "$out/$variant.csv" --json "$out/$variant.json" --plot "$out/$variant.plot" \
-    > "$out/$variant.txt" 2> "$out/$variant.err" || { echo "| $variant | failed: $(tail -1 "$out/$variant.err") |"; continue; }
-  "$python" - "$out" "$variant" <<'PY'
+inject="$python $here/inject_logger_faults.py"
+
+for source in "${sources[@]}"; do
+  dir="$out/$source"
+  mkdir -p "$dir"
+  extension=.csv
+  residual_args=()
+  case $source in
+    simulated)
+      "$build/tools/simulation/mrd-simulate-run" --profile table4 --damper 1kN --duration 12 \
+        --effect "${EFFECT:-gas_spring}" --rate 10000 --csv "$dir/source.csv" > /dev/null
+      # Columns: time_s, displacement_mm, current_A, force_N after the velocity is dropped.
+      $inject "$dir/source.csv" "$dir" --drop-columns velocity --fine-every 10 --force-column 3 > "$dir/variants"
+      ;;
+    independent)
+      "$python" "$root/tests/generator/damper_truth.py" --profile telegraph --duration 8 --effect coil_lag:2 \
+        --out "$dir/source.csv"
+      header=$(head -1 "$dir/source.csv")
+      force=$("$python" -c "import sys; print(sys.argv[1].split(',').index('force_N'))" "$header")
+      $inject "$dir/source.csv" "$dir" --force-column "$force" > "$dir/variants"
+      ;;
+    measured)
+      extension=.txt
+      residual_args=(--columns 1=time_s,2=displacement_mm,3=velocity_mm_s,4=force_N --current 0.75)
+      $inject "$root/data/damper/quiroz-utfsm/sine/5mm3Hz0x75A.txt" "$dir" --force-column 3 > "$dir/variants"
+      ;;
+    *) echo "unknown source '$source': simulated, independent, measured or all" >&2; exit 1 ;;
+  esac
+  echo
+  echo "$source:"
+  echo
+  echo "| variant | named | rms_after [N] | / unfaulted | set aside | first and last 1 s [N] | in between [N] |"
+  echo "|---|---|---:|---:|---:|---:|---:|"
+  while read -r variant; do
+    "$build/tools/mrd-residual" "$dir/$variant$extension" "${residual_args[@]}" --json "$dir/$variant.json" \
+      --plot "$dir/$variant.plot" > "$dir/$variant.summary" 2> "$dir/$variant.err" ||
+      { echo "| $variant | failed: $(tail -1 "$dir/$variant.err") |"; continue; }
+    "$python" - "$dir" "$variant" <<'PY'
 import json, math, sys
 out, variant = sys.argv[1], sys.argv[2]
-r = json.load(open(f"{out}/{variant}.json"))
+def load(name):
+    return json.load(open(f"{out}/{name}.json"))
+r, clean = load(variant), load("clean")
 named = ", ".join(r.get("effects", [])) or "none"
+if sorted(r.get("effects", [])) != sorted(clean.get("effects", [])):
+    named += " (differs)"
+ratio = r["rms_after_N"] / clean["rms_after_N"]
+ratio_text = f"**{ratio:.3f}**" if ratio > 1.05 else f"{ratio:.3f}"
 rows = [list(map(float, l.split())) for l in open(f"{out}/{variant}.plot/residual.dat") if l.strip() and not l.startswith("#")]
 t0, t1 = rows[0][0], rows[-1][0]
 edge = [x[7] for x in rows if x[8] == 0 and (x[0] - t0 < 1.0 or t1 - x[0] < 1.0)]
 mid = [x[7] for x in rows if x[8] == 0 and 1.0 <= x[0] - t0 and t1 - x[0] >= 1.0]
 rms = lambda v: math.sqrt(sum(e * e for e in v) / len(v)) if v else float("nan")
 aside = r["screening"]["excluded_samples"]
-print(f"| {variant} | {named} | {r['rms_after_N']:.4g} | {aside} | {rms(edge):.4g} | {rms(mid):.4g} |")
+print(f"| {variant} | {named} | {r['rms_after_N']:.4g} | {ratio_text} | {aside} | {rms(edge):.4g} | {rms(mid):.4g} |")
 PY
+  done < "$dir/variants"
 done
