@@ -241,18 +241,41 @@ std::vector<ScreenedSpan> settling_spans(const record::RecordedRun& run,
                                          const std::vector<std::pair<std::size_t, std::size_t>>& gaps,
                                          bool from_start, double share, double longest_s) {
   std::vector<ScreenedSpan> spans;
-  if (run.coil.empty()) return spans;
+  if (run.size() < 2) return spans;
   const auto [lo, hi] = std::minmax_element(run.coil.begin(), run.coil.end());
-  const double largest = std::max(std::fabs(*lo), std::fabs(*hi));
-  if (!(largest > 0.0) || !(*hi - *lo > 0.05 * largest)) return spans;
+  const double largest = run.coil.empty() ? 0.0 : std::max(std::fabs(*lo), std::fabs(*hi));
+  const bool current_varies = largest > 0.0 && *hi - *lo > 0.05 * largest;
+  const auto [x_lo, x_hi] = std::minmax_element(run.displacement.begin(), run.displacement.end());
+  const double turn = 0.05 * (*x_hi - *x_lo);
   const auto longest = static_cast<std::size_t>(std::ceil(longest_s * run.sample_rate));
+  // The first sample from `first` on where the coil has reached its extreme (J-A) and the rod
+  // has travelled 5 % of its stroke one way, from `first` or from a turn after it (the
+  // pre-yield element's state saturates within its travel).
+  const auto settled_at = [&](std::size_t first) {
+    const std::size_t end = std::min(run.size(), first + longest);
+    std::size_t coil_at = first;
+    if (current_varies)
+      while (coil_at < end && std::fabs(run.coil[coil_at]) < share * largest) ++coil_at;
+    std::size_t moved_at = first;
+    double high = run.displacement[first], low = high;
+    for (; moved_at < end; ++moved_at) {
+      const double x = run.displacement[moved_at];
+      high = std::max(high, x);
+      low = std::min(low, x);
+      if (x - low >= turn || high - x >= turn) break;
+    }
+    return std::max(coil_at, moved_at);
+  };
   const auto settle_from = [&](std::size_t first) {
-    std::size_t i = first;
-    while (i < run.size() && i - first < longest && std::fabs(run.coil[i]) < share * largest) ++i;
-    if (i > first) spans.push_back({first, i - 1, 0.0, 0.0, "current", ScreenReason::kSettling});
+    const std::size_t settled = settled_at(first);
+    if (settled > first)
+      spans.push_back({first, settled - 1, 0.0, 0.0, current_varies ? "current" : "displacement", ScreenReason::kSettling});
   };
   if (from_start) settle_from(0);
-  for (const auto& [first, last] : gaps) settle_from(last + 1);
+  // A gap of a few samples bridges what the coil and the rod did closely enough.
+  const auto shortest = static_cast<std::size_t>(std::max(10.0, std::ceil(0.01 * run.sample_rate)));
+  for (const auto& [first, last] : gaps)
+    if (last - first + 1 >= shortest && last + 1 < run.size()) settle_from(last + 1);
   return spans;
 }
 

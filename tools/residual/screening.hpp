@@ -73,13 +73,14 @@ Screening screen_run(const record::RecordedRun& run, const ScreeningOptions& opt
 // sample order: how screen_run sets its faults aside, and how a caller adds spans of its own.
 void set_aside(Screening& screening, const record::RecordedRun& run, std::vector<ScreenedSpan> found, double margin_s);
 
-// Where the J-A state cannot be known from the record: from the end of each of `gaps` (the
-// bridge is not the current the coil carried) and, with `from_start`, from the run's start (the
-// core's history before it is not logged), until |coil| first reaches `share` of its largest
-// value over the run, at most `longest_s` [s] each; a loop tip wipes out J-A's memory of what
-// came before. None where the coil current does not vary by 5 % of its largest value (a
-// constant current's state is settled by its first sample). Spans of `run`'s samples, reason
-// kSettling, channel "current".
+// Where the model's state cannot be known from the record: from the end of each of `gaps` of
+// at least 10 samples and 10 ms (the bridge is not what the coil and the rod did) and, with `from_start`, from the run's start
+// (the core's history before it is not logged), until |coil| first reaches `share` of its
+// largest value over the run (a loop tip wipes out J-A's memory; skipped where the current
+// varies by less than 5 % of its largest value) and the rod has travelled 5 % of its stroke one
+// way (the pre-yield element's state saturates), at most `longest_s` [s] each. Spans
+// of `run`'s samples, reason kSettling, channel "current" (or "displacement" at a constant
+// current).
 std::vector<ScreenedSpan> settling_spans(const record::RecordedRun& run,
                                          const std::vector<std::pair<std::size_t, std::size_t>>& gaps,
                                          bool from_start, double share = 0.95, double longest_s = 2.0);

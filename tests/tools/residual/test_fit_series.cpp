@@ -121,14 +121,19 @@ TEST(FitSeries, ALoggingGapCostsOnlyTheGap) {
   EXPECT_DOUBLE_EQ(s.sample_period, 1e-3);
   ASSERT_EQ(s.screenings.size(), 1u);
   const Screening& screening = s.screenings[0].second;
-  ASSERT_EQ(screening.spans.size(), 1u);
+  ASSERT_EQ(screening.spans.size(), 2u);
   EXPECT_EQ(screening.spans[0].reason, ScreenReason::kGap);
-  // The filled samples and a margin of 5-6 ms (5 ms, rounded up) on either side, nothing else.
+  // The filled samples and a margin of 5-6 ms (5 ms, rounded up) on either side, then the
+  // settling until the rod has travelled 5 % of its stroke (0.02 sin 2 pi t from 0.01902 m at
+  // 4.3 s down to 0.01702 m: 4.3381 s), nothing else.
   EXPECT_GE(screening.spans[0].first, 3994u);
   EXPECT_LE(screening.spans[0].first, 3995u);
   EXPECT_GE(screening.spans[0].last, 4304u);
   EXPECT_LE(screening.spans[0].last, 4305u);
-  EXPECT_LE(screening.excluded_samples, 312u);
+  EXPECT_EQ(screening.spans[1].reason, ScreenReason::kSettling);
+  EXPECT_EQ(screening.spans[1].first, 4300u);
+  EXPECT_EQ(screening.spans[1].last, 4337u);
+  EXPECT_LE(screening.excluded_samples, 344u);
   const double amplitude = 0.04 * std::numbers::pi;
   double worst = 0.0;
   for (std::size_t i = 0; i < s.size(); ++i) {

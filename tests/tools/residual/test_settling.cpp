@@ -30,7 +30,8 @@ mrd::record::RecordedRun following_run(double coil_offset) {
 
 TEST(Settling, LastsUntilTheCoilFirstReachesItsExtreme) {
   const auto run = following_run(0.0);
-  // |sin| first reaches 0.95 at 0.2 s (asin(0.95) / 2 pi = 0.1995 s), and 0.2 s after the gap's end.
+  // |sin| first reaches 0.95 at 0.2 s (asin(0.95) / 2 pi = 0.1995 s), long after the rod has
+  // travelled 5 % of its stroke; the same after the gap's end.
   const auto spans = settling_spans(run, {{1500, 1999}}, true);
   ASSERT_EQ(spans.size(), 2u);
   EXPECT_EQ(spans[0].first, 0u);
@@ -39,6 +40,9 @@ TEST(Settling, LastsUntilTheCoilFirstReachesItsExtreme) {
   EXPECT_EQ(spans[0].channel, "current");
   EXPECT_EQ(spans[1].first, 2000u);
   EXPECT_EQ(spans[1].last, 2199u);
+  // A gap of 9 samples bridges closely enough.
+  EXPECT_EQ(settling_spans(run, {{1500, 1508}}, false).size(), 0u);
+  EXPECT_EQ(settling_spans(run, {{1500, 1509}}, false).size(), 1u);
   // Without from_start, only the gap's; a cap bounds each.
   EXPECT_EQ(settling_spans(run, {{1500, 1999}}, false).size(), 1u);
   const auto capped = settling_spans(run, {}, true, 0.95, 0.05);
@@ -47,13 +51,31 @@ TEST(Settling, LastsUntilTheCoilFirstReachesItsExtreme) {
   EXPECT_EQ(std::string(to_string(ScreenReason::kSettling)), "settling");
 }
 
-TEST(Settling, AConstantCurrentIsSettledByItsFirstSample) {
+// At a constant current only the rod's travel settles (the pre-yield element's state): 5 % of
+// the stroke one way; a rod that stands settles for the cap.
+TEST(Settling, AConstantCurrentWaitsOnlyForTheRodsTravel) {
   auto run = following_run(0.0);
-  for (double& c : run.coil) c = 1.5;
-  EXPECT_TRUE(settling_spans(run, {{1500, 1999}}, true).empty());
-  // 4 % of wander is still a constant current.
-  const auto wandering = following_run(48.0);
-  EXPECT_TRUE(settling_spans(wandering, {}, true).empty());
+  for (std::size_t i = 0; i < run.size(); ++i) run.coil[i] = 48.0 + (i % 2 == 0 ? 1.0 : 0.0);  // 2 % wander
+  // 0.01 sin(2 pi t) reaches 0.001 (5 % of its 0.02 stroke) at asin(0.1) / 2 pi = 0.0159 s.
+  const auto spans = settling_spans(run, {{1500, 1999}}, true);
+  ASSERT_EQ(spans.size(), 2u);
+  EXPECT_EQ(spans[0].last, 15u);
+  EXPECT_EQ(spans[0].channel, "displacement");
+  EXPECT_EQ(spans[1].first, 2000u);
+  EXPECT_EQ(spans[1].last, 2015u);
+  // Up 3 %, then back: the 5 % counts from the turn at the top.
+  for (std::size_t i = 0; i < run.size(); ++i)
+    run.displacement[i] = i <= 30 ? 1e-3 * static_cast<double>(i) : 0.03 - 1e-3 * static_cast<double>(i - 30);
+  run.displacement.back() = 1.0;  // the stroke: 1 - (-3.939)
+  const double turn = 0.05 * (1.0 - run.displacement[3998]);
+  const auto turned = settling_spans(run, {}, true);
+  ASSERT_EQ(turned.size(), 1u);
+  EXPECT_EQ(turned[0].last, 30u + static_cast<std::size_t>(std::ceil(turn / 1e-3)) - 1u);
+  for (double& x : run.displacement) x = 0.0;
+  run.displacement.back() = 1.0;
+  const auto standing = settling_spans(run, {}, true, 0.95, 0.5);
+  ASSERT_EQ(standing.size(), 1u);
+  EXPECT_EQ(standing[0].last, 499u);
 }
 
 // By default only a gap settles: the run's start is the model's demagnetised core.
@@ -68,7 +90,7 @@ TEST(Settling, AGapInAVaryingCurrentRunSettlesAfterItsEnd) {
   const auto settling = std::ranges::find(spans, ScreenReason::kSettling, &ScreenedSpan::reason);
   ASSERT_NE(settling, spans.end());
   EXPECT_EQ(settling->first, 1600u);  // the first logged sample after the gap
-  EXPECT_NEAR(settling->end_s, 1.699, 1e-9);  // |sin| back at 0.95 0.1 s later
+  EXPECT_NEAR(settling->end_s, 1.699, 1e-9);  // |sin| back at 0.95 0.1 s after the gap's end
   EXPECT_EQ(std::ranges::count(spans, ScreenReason::kSettling, &ScreenedSpan::reason), 1);
   FitSeriesOptions from_start;
   from_start.settle_start = true;
