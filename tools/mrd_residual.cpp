@@ -59,14 +59,14 @@ int main(int argc, char** argv) {
   app.add_flag("--no-screening", no_screening,
                "fit every sample, even those screening finds no damper produced (clipped, stuck, spikes, gaps)");
   app.add_flag("--settle-start", series_options.settle_start,
-               "set aside each run's start until the coil current first reaches its extreme: the core had a "
-               "history before the record began (docs/CLOSING-THE-LOOP.md, \"Bad input\")");
+               "set aside each run's start until the coil current first reaches its extreme and the rod has "
+               "travelled 5 % of its stroke: the core had a history before the record began (docs/CLOSING-THE-LOOP.md, \"Bad input\")");
   bool no_discovery = false;
   app.add_flag("--no-discovery", no_discovery,
                "do not regress what the named effects leave on the library of terms (docs/CLOSING-THE-LOOP.md)");
   app.add_flag("--robust-fit", options.robust_fit,
                "where the least-squares base leaves a fault no screening rule names, identify the base again "
-               "under a robust loss and weigh every later fit (docs/CLOSING-THE-LOOP.md, \"Robust fit\")");
+               "under a robust loss, and run the candidates' fits and judgements under it (docs/CLOSING-THE-LOOP.md, \"Robust fit\")");
   app.add_option("--threshold", options.minimum_reduction,
                  "fraction by which an effect must lower the validation error to be accepted")
       ->capture_default_str();

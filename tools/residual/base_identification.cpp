@@ -71,11 +71,9 @@ FittedModel refit_robustly(Search& s, ParameterSpace& space, FittedModel base, i
   const RobustLoss& loss = s.options.robust;
   if (!s.options.robust_fit || !(loss.tuning > 0.0)) return base;
   const auto sigma_of = [&](const model::DamperModel& m) {
-    FitSeries plain = s.fit_series;
-    plain.loss = {};
     std::vector<double> force;
-    predict_force(m, plain, force);
-    return huber_weights(plain, force, loss);
+    predict_force(m, s.fit_series, force);
+    return huber_weights(s.fit_series, force, loss);
   };
   const auto set_loss = [&](FitLoss::Kind kind, double sigma) {
     s.fit_series.loss = s.swarm_series.loss = FitLoss{kind, loss.tuning * sigma};

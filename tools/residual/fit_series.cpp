@@ -144,7 +144,8 @@ FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const Fi
     // After the velocity: the samples beside a gap are measurements, set aside but not bridged;
     // so are those the model's J-A state cannot yet follow.
     set_aside_gaps(gap_filled, options.screening.margin_s, screening);
-    set_aside(screening, even, settling_spans(even, gap_filled.gaps, options.settle_start), 0.0);
+    // On the bridged run: a spike the screening set aside must not stretch the extremes.
+    set_aside(screening, even, settling_spans(run, gap_filled.gaps, options.settle_start), 0.0);
     check_motion(even, screening);
     s.run_starts.push_back(s.size());
     s.run_names.push_back(recorded.name);
@@ -179,6 +180,7 @@ FitSeries without_excluded(const FitSeries& series, const std::vector<double>& p
                            std::vector<double>& kept_values) {
   FitSeries out;
   out.notes = series.notes;
+  out.loss = series.loss;
   out.sample_period = series.sample_period;
   kept_values.clear();
   for (std::size_t r = 0; r < series.run_starts.size(); ++r) {
@@ -203,6 +205,7 @@ FitSeries decimate(const FitSeries& series, std::size_t wanted, double min_rate)
   if (wanted <= 1) return series;
   FitSeries out;
   out.notes = series.notes;
+  out.loss = series.loss;
   std::vector<std::size_t> ends(series.run_starts.begin() + 1, series.run_starts.end());
   ends.push_back(series.size());
   for (std::size_t r = 0; r < ends.size(); ++r) {
@@ -238,6 +241,7 @@ FitSeries run_openings(const FitSeries& series, std::size_t max_samples) {
   }
   FitSeries out;
   out.notes = series.notes;
+  out.loss = series.loss;
   for (std::size_t r = 0; r < runs; ++r) {
     if (take[r] == 0) continue;
     out.sample_period = out.run_starts.empty() ? series.run_periods[r] : std::min(out.sample_period, series.run_periods[r]);

@@ -59,8 +59,8 @@ struct FitSeriesOptions {
   int blocks = 24;
   // Screening before the fit (screening.hpp): spans no damper produced are set aside.
   bool screen = true;
-  // The J-A state's settling after each logging gap (settling_spans) is set aside, screened or
-  // not; with `settle_start`, also at each run's start: for a core that had a history before
+  // The model state's settling after each logging gap of 10 samples and 10 ms or more
+  // (settling_spans) is set aside, screened or not; with `settle_start`, also at each run's start: for a core that had a history before
   // the record began (the model starts it demagnetised). Off by default: on a run that did
   // start demagnetised the first ascent is information (the fastest, least-field samples of a
   // sine started at its zero crossing).

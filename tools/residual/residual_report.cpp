@@ -27,7 +27,7 @@ std::string screening_summary(const ResidualResult& r) {
     std::size_t gaps = 0;
     for (const auto& [run, s] : r.screenings) gaps += s.excluded_samples;
     return gaps == 0 ? std::string("screening: off (--no-screening)\n")
-                     : format("screening: off (--no-screening); %zu samples of logging gaps and J-A settling set aside\n", gaps);
+                     : format("screening: off (--no-screening); %zu samples of logging gaps and their settling set aside\n", gaps);
   }
   std::string out;
   std::size_t excluded = 0, lines = 0, total = 0;
@@ -51,7 +51,7 @@ std::string screening_summary(const ResidualResult& r) {
 std::string robust_summary(const ResidualResult& r) {
   const RobustWeights& w = r.robust_after;
   std::string out = format("robust loss: Huber at %g sigma (sigma %.4g N); %.2f%% of the kept samples' weight taken",
-                           ResidualOptions{}.robust.tuning, w.sigma, 100.0 * w.down_weighted_share);
+                           r.robust_tuning, w.sigma, 100.0 * w.down_weighted_share);
   out += !r.robust_fit         ? std::string("; the fits are least squares (--robust-fit not asked)\n")
          : r.robust_refits > 0 ? std::string("; the base identified again under the robust loss (--robust-fit)\n")
                                : std::string("; least squares sufficed (--robust-fit: too little weight taken)\n");
@@ -219,7 +219,8 @@ std::string residual_json(const ResidualResult& r, const ForceFitFigures* fit) {
                     {"discovered", discovered},
                     {"screening", {{"excluded_samples", excluded}, {"spans", spans}}},
                     {"robust",
-                     {{"sigma_N", r.robust_after.sigma},
+                     {{"asked", r.robust_fit},
+                      {"sigma_N", r.robust_after.sigma},
                       {"down_weighted_share", r.robust_after.down_weighted_share},
                       {"base_refits", r.robust_refits},
                       {"spans", down_weighted}}},

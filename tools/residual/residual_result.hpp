@@ -41,7 +41,8 @@ struct ResidualOptions {
   std::uint64_t seed = 1;
   bool discover = true;  // step 7: regress what the named effects left on the library of terms
   // Step 3b (opt-in): a least-squares base that leaves a material share of weight to the robust
-  // loss is identified again under it, and every later fit and judgement runs under it. Off by
+  // loss is identified again under it, and every later fit and judgement but the discovery's
+  // regression runs under it. Off by
   // default: see docs/CLOSING-THE-LOOP.md, "Limits". The down-weighted spans are reported either way.
   bool robust_fit = false;
   RobustLoss robust;
@@ -120,6 +121,7 @@ struct ResidualResult {
   // (0), and against the final model the residual's robust sigma [N], the share of weight the
   // loss takes and where it takes most.
   bool robust_fit = false;
+  double robust_tuning = 0.0;  // [robust sigmas], Huber's knee of robust_after
   int robust_refits = 0;
   RobustWeights robust_after;  // its weights: per sample of the full series
   std::vector<DownWeightedSpan> down_weighted;

@@ -55,6 +55,7 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   result.screenings = full.screenings;
   result.screened = full.screened;
   result.robust_fit = options.robust_fit;
+  result.robust_tuning = options.robust.tuning;
   result.fit_samples = s.fit_series.size();
   result.decimation = static_cast<std::size_t>(
       std::lround(static_cast<double>(full.size()) / static_cast<double>(s.fit_series.size())));

@@ -12,12 +12,12 @@ namespace mrd::tools {
 // reweighting. A sample whose residual lies beyond `tuning` robust sigmas (1.4826 MAD of the
 // kept samples' residual) weighs tuning sigma / |r|: its pull on a fit grows linearly, not
 // quadratically, so a fault no screening rule names moves the fit little. Gaussian noise
-// leaves 0.3 % of the samples beyond three sigmas, and those barely down-weighted: a clean run
-// fits as it did.
+// leaves 0.3 % of the samples beyond three sigmas, and those barely down-weighted (0.02 % of
+// the weight taken): a clean run fits as it did.
 struct RobustLoss {
   double tuning = 3.0;  // [robust sigmas]
   // The base is refitted with the weights only when they take at least this share of the kept
-  // samples' weight away (Gaussian noise takes about 0.05 %).
+  // samples' weight away (Gaussian noise takes about 0.02 %).
   double refit_share = 0.002;
 };
 

@@ -22,8 +22,8 @@ enum class ScreenReason : std::uint8_t {
   kTimeConflict,  // the same time with other values, or time going back
   kNonFinite,     // an empty, nan or inf cell
   kImplausible,   // the force swings through both signs again and again while the rod stands still
-  // The model's own: the core's state is not the record's until the current first reaches its
-  // extreme, at a varying-current run's start and after a logging gap (settling_spans).
+  // The model's own: its state (the core's, the pre-yield element's) is not the record's after a
+  // logging gap or at a run's start, until the current and the rod have settled it (settling_spans).
   kSettling,
 };
 [[nodiscard]] std::string_view to_string(ScreenReason r);

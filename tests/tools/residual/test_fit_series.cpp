@@ -125,7 +125,7 @@ TEST(FitSeries, ALoggingGapCostsOnlyTheGap) {
   EXPECT_EQ(screening.spans[0].reason, ScreenReason::kGap);
   // The filled samples and a margin of 5-6 ms (5 ms, rounded up) on either side, then the
   // settling until the rod has travelled 5 % of its stroke (0.02 sin 2 pi t from 0.01902 m at
-  // 4.3 s down to 0.01702 m: 4.3381 s), nothing else.
+  // 4.3 s down to 0.01702 m: 4.3380 s), nothing else.
   EXPECT_GE(screening.spans[0].first, 3994u);
   EXPECT_LE(screening.spans[0].first, 3995u);
   EXPECT_GE(screening.spans[0].last, 4304u);

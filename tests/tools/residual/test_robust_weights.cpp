@@ -43,7 +43,7 @@ TEST(RobustWeights, GaussianNoiseKeepsItsWeightBelowTheRefitShare) {
   const std::vector<double> zero(s.size(), 0.0);
   const RobustWeights w = huber_weights(s, zero);
   EXPECT_NEAR(w.sigma, 1.0, 0.03);
-  // E[1 - 3/|z|; |z| > 3] for a unit normal is about 3e-4.
+  // E[1 - 3/|z|; |z| > 3] for a unit normal is 2.2e-4.
   EXPECT_LT(w.down_weighted_share, RobustLoss{}.refit_share);
   EXPECT_GT(w.down_weighted_share, 0.0);
   EXPECT_TRUE(down_weighted_spans(s, zero, w).empty());

@@ -1,5 +1,5 @@
-// The J-A state's settling spans: at a run's start (opt-in) and after a logging gap, until the
-// coil current first reaches its extreme.
+// The model state's settling spans: at a run's start (opt-in) and after a logging gap, until the
+// coil current first reaches its extreme and the rod has travelled 5 % of its stroke.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -63,14 +63,14 @@ TEST(Settling, AConstantCurrentWaitsOnlyForTheRodsTravel) {
   EXPECT_EQ(spans[0].channel, "displacement");
   EXPECT_EQ(spans[1].first, 2000u);
   EXPECT_EQ(spans[1].last, 2015u);
-  // Up 3 %, then back: the 5 % counts from the turn at the top.
+  // Up 0.03 m, then back: the 5 % of the stroke (0.2469 m of 4.938 m) counts from the turn at
+  // the top (sample 30), so the rod has travelled it at sample 277.
   for (std::size_t i = 0; i < run.size(); ++i)
     run.displacement[i] = i <= 30 ? 1e-3 * static_cast<double>(i) : 0.03 - 1e-3 * static_cast<double>(i - 30);
-  run.displacement.back() = 1.0;  // the stroke: 1 - (-3.939)
-  const double turn = 0.05 * (1.0 - run.displacement[3998]);
+  run.displacement.back() = 1.0;  // the stroke: 1 - (-3.938)
   const auto turned = settling_spans(run, {}, true);
   ASSERT_EQ(turned.size(), 1u);
-  EXPECT_EQ(turned[0].last, 30u + static_cast<std::size_t>(std::ceil(turn / 1e-3)) - 1u);
+  EXPECT_EQ(turned[0].last, 276u);
   for (double& x : run.displacement) x = 0.0;
   run.displacement.back() = 1.0;
   const auto standing = settling_spans(run, {}, true, 0.95, 0.5);
