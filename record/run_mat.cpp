@@ -173,6 +173,8 @@ class MatRunReader {
     const double value = scalar_->unit.to_internal(file_.read(*v).front());
     if (!(value > 0.0 && std::isfinite(value))) throw fail(v->name, "must be a finite number > 0, got " + number(value, "%.6g"));
     const bool period = scalar_->unit.quantity == RunQuantity::kSampleTime;
+    // A denormal period or rate has no finite reciprocal: the times would not increase.
+    if (!std::isfinite(1.0 / value)) throw fail(v->name, "is too small to time samples by, got " + number(value, "%.6g"));
     assembler_options_.sample_rate = period ? 1.0 / value : value;
     notes_.push_back("time from the sample " + std::string(period ? "time '" : "rate '") + v->name + "': " +
                      number(period ? value : 1.0 / value, "%.6g") + " s a sample");
