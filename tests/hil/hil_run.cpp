@@ -154,8 +154,24 @@ std::string transitions(const HilResult& r) {
   return out;
 }
 
+// What the telemetry shows of the periods' health: each row's sample check where it changes
+// (a run of good periods that never grows long enough shows where it broke).
+std::string sample_checks(const HilResult& r) {
+  std::string out;
+  for (std::size_t i = 0; i < r.telemetry.size(); ++i) {
+    const auto& row = r.telemetry[i];
+    const bool changed = i == 0 || row.sample != r.telemetry[i - 1].sample || row.overruns > 0;
+    if (!changed) continue;
+    out += "  cycle " + std::to_string(row.cycle) + ": " + row.sample +
+           (row.overruns > 0 ? ", overruns " + std::to_string(row.overruns) : "") + ", setpoint " +
+           std::to_string(row.setpoint) + " A, measured " + std::to_string(row.measured_current) + " A\n";
+  }
+  return out;
+}
+
 std::string diagnosis(const HilResult& r) {
-  return "transitions:\n" + transitions(r) + "--- controller\n" + r.controller_output + "--- plant\n" +
+  return "transitions:\n" + transitions(r) + "sample checks where they change:\n" + sample_checks(r) +
+         "--- controller\n" + r.controller_output + "--- plant\n" +
          r.plant_output;
 }
 

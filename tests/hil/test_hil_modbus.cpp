@@ -155,10 +155,12 @@ TEST(HilModbus, PlantStarted30msLateIsWaitedForInInit) {
   expect_late_plant_waited_for(r, 2.5);
 }
 
+// 4 s: the link is up from about 0.55 s and INIT needs 1 s of good periods; the rest is room
+// for a loaded CI machine, where a period now and then is not good and the count starts again.
 TEST(HilModbus, PlantStartedHalfASecondLateIsWaitedForInInit) {
-  const HilResult r = run_late("late_500ms", 0.5, 3.0);
+  const HilResult r = run_late("late_500ms", 0.5, 4.0);
   SCOPED_TRACE(diagnosis(r));
-  ASSERT_NO_FATAL_FAILURE(expect_late_plant_waited_for(r, 3.0));
+  ASSERT_NO_FATAL_FAILURE(expect_late_plant_waited_for(r, 4.0));
   // The wait was real: the first periods had no sample.
   EXPECT_GE(run_length_before(r.telemetry, 10, no_sample), 11u);
 }

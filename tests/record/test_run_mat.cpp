@@ -204,6 +204,11 @@ TEST(RunFormatsErrors, MatErrorsNameTheFileTheVariableAndTheFault) {
             file + ": variable 't': a sample time or rate must be a scalar, not 3x1");
   EXPECT_EQ(mat_error_of({scalar_var("Ts", 0.0), I, data}, with_columns("Ts=sample_time_s,data:1=displacement_mm,I=current_A")),
             file + ": variable 'Ts': must be a finite number > 0, got 0");
+  // Found by fuzz_run_mat: a denormal has no finite reciprocal, so the times would not increase.
+  EXPECT_EQ(mat_error_of({scalar_var("Ts", 5e-324), I, data}, with_columns("Ts=sample_time_s,data:1=displacement_mm,I=current_A")),
+            file + ": variable 'Ts': is too small to time samples by, got 4.94066e-324");
+  EXPECT_EQ(mat_error_of({scalar_var("fs", 5e-324), I, data}, with_columns("fs=sample_rate_Hz,data:1=displacement_mm,I=current_A")),
+            file + ": variable 'fs': is too small to time samples by, got 4.94066e-324");
   EXPECT_EQ(mat_error_of({I, data}, with_columns("data:1=displacement_mm,I=current_A")),
             file + ": no time: expected a time_s or time_ms vector, a sample_time_s or sample_rate_Hz scalar, or "
                    "--sample-rate");
