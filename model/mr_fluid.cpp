@@ -27,7 +27,7 @@ ValidationReport validate(const MrFluid& fluid) {
     std::snprintf(got, sizeof got, "%g", b_s);
     report.error("saturation_induction", std::string("must be 0 (no saturation) or lie in [0.02, 50] T, got ") + got);
   }
-  report.require_in_range("saturation_shape", fluid.saturation_shape, -1.0, 1.0, false);
+  report.require_in_range("saturation_shape", fluid.saturation_shape, -1.0, 2.0, false);
   report.require_in_range("flow_index", fluid.flow_index, 0.3, 2.0, false);
   if (report.ok() && fluid.particle_diameter > 1e-3) {
     report.error("particle_diameter", "must be given in metres (MR particles are 0.1-100 um)");

@@ -15,10 +15,11 @@ struct MrFluid {
   double field_exponent = 0.5811;      // [-]
   // The induction B_s [T] at which the particles' own saturation bends the yield stress flat:
   // the B^n term becomes B_s^n s((|B| / B_s)^n), the power law below B_s and a ceiling above
-  // it, s the saturating_shape of `saturation_shape` (-1 slow, 0 tanh, +1 a sharp knee). 0 (the
+  // it, s the saturating_shape of `saturation_shape` (-1 slow, 0 tanh, +1 a sharp knee, +2 nearly
+  // a corner: a power law capped hard). 0 (the
   // default, and the paper's Eq. 13) is no saturation. Range 0.02-50 T.
   double saturation_induction = 0.0;   // [T]
-  double saturation_shape = 0.0;       // [-], in [-1, 1]
+  double saturation_shape = 0.0;       // [-], in [-1, 2]
   // Herschel-Bulkley flow index n: the viscous stress grows as |shear rate|^n (Bingham at n = 1,
   // shear thinning below). Physical range 0.3-2 (validate); MR fluids fit 0.5-1.5.
   double flow_index = 1.0;             // [-]

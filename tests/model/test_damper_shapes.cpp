@@ -2,6 +2,7 @@
 // against an analytic limit or a closed form it must meet, not against its own code.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -24,7 +25,7 @@ double slope_at_rest(double shape) {
 }
 
 TEST(SignShape, EveryShapeIsOddWithSlopeOneAtRestAndReachesOne) {
-  for (const double q : {-1.0, -0.4, 0.0, 0.3, 1.0}) {
+  for (const double q : {-1.0, -0.4, 0.0, 0.3, 1.0, 1.5, 2.0}) {
     EXPECT_NEAR(slope_at_rest(q), 1.0, 1e-6) << q;
     for (const double x : {0.05, 0.7, 3.0}) EXPECT_DOUBLE_EQ(saturating_shape(-x, q), -saturating_shape(x, q));
     EXPECT_NEAR(saturating_shape(1e5, q), 1.0, 1e-4) << q;
@@ -55,6 +56,22 @@ TEST(SignShape, IsMonotoneInTheShapeBetweenTheForms) {
   }
 }
 
+// Past +1 the knee sharpens: at 2 a power law capped hard, min(x, 1), to 0.6 % at the corner,
+// continuous with the order-8 knee at 1 and rising at the corner all the way.
+TEST(SignShape, PastOneTheKneeSharpensTowardsTheCorner) {
+  double worst = 0.0;
+  for (double x = 0.0; x <= 4.0; x += 0.01) worst = std::max(worst, std::fabs(saturating_shape(x, 2.0) - std::min(x, 1.0)));
+  EXPECT_LT(worst, 0.006);
+  EXPECT_GT(worst, 0.004);  // the corner itself is not reached
+  EXPECT_GT(std::fabs(saturating_shape(1.0, 1.0) - 1.0), 0.08);  // the order-8 knee is 8 % short of it
+  for (const double x : {0.3, 1.0, 1.7}) EXPECT_NEAR(saturating_shape(x, 1.0 + 1e-9), saturating_shape(x, 1.0), 1e-8);
+  double previous = saturating_shape(1.0, 1.0);
+  for (double q = 1.25; q <= 2.0; q += 0.25) {
+    EXPECT_GT(saturating_shape(1.0, q), previous) << q;
+    previous = saturating_shape(1.0, q);
+  }
+}
+
 TEST(SignShape, InverseRoundTripsEveryShapeAndRefusesTheCeiling) {
   EXPECT_NEAR(mrd::model::saturating_shape_inverse(std::tanh(0.8), 0.0), 0.8, 1e-12);
   // atan's closed-form inverse at q = -1: x = (2 / pi) tan(pi y / 2).
@@ -62,6 +79,12 @@ TEST(SignShape, InverseRoundTripsEveryShapeAndRefusesTheCeiling) {
               1e-9);
   for (const double q : {-0.5, 0.4, 1.0}) {
     for (const double x : {0.01, 0.9, 3.0}) {
+      EXPECT_NEAR(mrd::model::saturating_shape_inverse(saturating_shape(x, q), q), x, 1e-9 * (1.0 + x)) << q << " " << x;
+    }
+  }
+  // Past the knee the shape is flat to the last bit soon after x = 1: round trips up to there.
+  for (const double q : {1.3, 2.0}) {
+    for (const double x : {0.01, 0.9, 1.05}) {
       EXPECT_NEAR(mrd::model::saturating_shape_inverse(saturating_shape(x, q), q), x, 1e-9 * (1.0 + x)) << q << " " << x;
     }
   }
@@ -167,6 +190,11 @@ TEST(ShapeParameters, OutsideTheirPhysicalRangesAreErrorsNamingTheField) {
   EXPECT_TRUE(r.mentions("saturation_induction"));
   EXPECT_TRUE(r.mentions("field_exponent"));
   EXPECT_TRUE(r.mentions("flow_index"));
+  MrFluid capped;
+  capped.saturation_shape = 1.5;  // the yield ceiling's knee may sharpen past 1; the sign's may not
+  EXPECT_TRUE(mrd::model::validate(capped).ok());
+  capped.saturation_shape = 2.5;
+  EXPECT_TRUE(mrd::model::validate(capped).mentions("saturation_shape"));
   DamperGeometry g;
   g.sign_shape = 1.5;
   g.seal_friction = -1.0;

@@ -37,17 +37,20 @@ LinearEffects linear_effects_of(const model::DamperModel& model) {
 }  // namespace
 
 FittedModel identify_base(Search& s, const model::DamperModel& origin, ParameterSpace& space, bool from_origin,
-                          const Point* also_from) {
+                          int swarms, const Point* also_from) {
   const model::DamperModel& start = s.options.start;
   const FitSeries& openings = s.swarm_series;
   space = base_space(origin, start, s.scales, Magnetics::kMaterial);
   space.linear = linear_effects_of(origin);
   ParameterSpace exploring = space;
   exploring.origin.integration.max_substeps = std::min(exploring.origin.integration.max_substeps, 64);
-  const FittedModel swarm = fit_space(exploring, openings, &s.pool, s.seed++, 2 * s.options.evaluations_per_parameter);
-  s.evaluations += swarm.evaluations;
-  // The two chains, each serial, side by side.
-  std::vector<Point> starts{swarm.theta};
+  std::vector<Point> starts;
+  for (int k = 0; k < swarms; ++k) {
+    const FittedModel swarm = fit_space(exploring, openings, &s.pool, s.seed++, 2 * s.options.evaluations_per_parameter);
+    s.evaluations += swarm.evaluations;
+    starts.push_back(swarm.theta);
+  }
+  // The chains, each serial, side by side.
   if (from_origin) starts.push_back(base_coordinates(origin, start, s.scales, Magnetics::kMaterial));
   if (also_from != nullptr) starts.push_back(*also_from);
   std::vector<FittedModel> refined(starts.size());
@@ -64,7 +67,7 @@ FittedModel identify_base(Search& s, const model::DamperModel& origin, Parameter
 
 FittedModel fit_base_model(Search& s, ParameterSpace& space) {
   if (s.options.progress != nullptr) s.options.progress->report({.stage = "base fit"});
-  return identify_base(s, s.options.start, space, true);
+  return identify_base(s, s.options.start, space, true, 2);
 }
 
 FittedModel refit_robustly(Search& s, ParameterSpace& space, FittedModel base, int& refits) {
@@ -81,7 +84,7 @@ FittedModel refit_robustly(Search& s, ParameterSpace& space, FittedModel base, i
   const RobustWeights least_squares = sigma_of(base.model);
   if (least_squares.down_weighted_share < loss.refit_share) return base;
   set_loss(FitLoss::Kind::kCauchy, least_squares.sigma);
-  base = identify_base(s, s.options.start, space, true, &base.theta);
+  base = identify_base(s, s.options.start, space, true, 2, &base.theta);
   const double sigma = sigma_of(base.model).sigma;
   set_loss(FitLoss::Kind::kCauchy, sigma);
   base = refine_with_restarts(s, space, s.fit_series, base.theta);

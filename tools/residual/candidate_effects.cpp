@@ -112,7 +112,8 @@ std::vector<BaseCoordinate> base_coordinate_table(const model::DamperModel& star
                      // The top of the range is no saturation at all, so the paper's law is a point of it.
                      m.fluid.saturation_induction = v >= std::log10(30.0) - 1e-9 ? 0.0 : std::pow(10.0, v);
                    }});
-    out.push_back({"yield saturation shape (-1 slow, 0 tanh, 1 knee)", {-1.0, 1.0},
+    // Past 1 the knee sharpens towards a hard cap: a power law that stops at the particles' saturation.
+    out.push_back({"yield saturation shape (-1 slow, 0 tanh, 1 knee, 2 corner)", {-1.0, 2.0},
                    [](const model::DamperModel& m) { return m.fluid.saturation_shape; },
                    [](model::DamperModel& m, double v) { m.fluid.saturation_shape = v; }});
   }

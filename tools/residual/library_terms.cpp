@@ -102,8 +102,27 @@ void discover(Search& s, model::DamperModel& model, ResidualResult& result) {
                                                   "scale differently with them)"});
   }
   if (discovery.has_terms()) {
-    discovery.add_to(model);
-    predict_force(model, s.full, result.predicted_after);
+    // The regression weighs the terms on the residual; the model carries them through its own
+    // states and scales (an effect's force, the parts the force scale multiplies). A model that
+    // predicts worse with them than without keeps none, and the report says so.
+    model::DamperModel with_terms = model;
+    discovery.add_to(with_terms);
+    std::vector<double> predicted;
+    predict_force(with_terms, s.full, predicted);
+    const double without = residual_rms(s.full, result.predicted_after).all;
+    const double with = residual_rms(s.full, predicted).all;
+    if (with < without) {
+      model = std::move(with_terms);
+      result.predicted_after = std::move(predicted);
+    } else {
+      std::string names;
+      for (const DiscoveredTerm& t : result.discovered)
+        if (!t.interference) names += (names.empty() ? "" : " + ") + t.term;
+      std::erase_if(result.discovered, [](const DiscoveredTerm& t) { return !t.interference; });
+      result.revisions.push_back(format("the discovered terms %s not added: the model with them errs by %.4g N RMS, "
+                                        "without them %.4g N",
+                                        names.c_str(), with, without));
+    }
   }
   for (std::size_t i = 0; i < s.full.size(); ++i) result.predicted_after[i] += discovery.interference[i];
 }
