@@ -88,20 +88,27 @@ void BM_ObserverStepAllEffects(benchmark::State& state) {
 }
 BENCHMARK(BM_ObserverStepAllEffects);
 
-// The same step for a damper whose every shape differs from the paper's (docs/MODEL.md, "Shapes
-// of another damper"): a yield exponent and ceiling, a Herschel-Bulkley fluid, an atan-like sign
-// and seal friction, what mrd-residual may write into a config.
-void BM_ObserverStepOtherShapes(benchmark::State& state) {
+// A damper whose every shape differs from the paper's (docs/MODEL.md, "Shapes of another
+// damper"): a yield exponent and ceiling of knee `ceiling_shape`, a Herschel-Bulkley fluid, an
+// atan-like sign and seal friction, what mrd-residual may write into a config.
+mrd::model::DamperModel other_shapes(double ceiling_shape) {
   mrd::model::DamperModel m;
   m.fluid.field_exponent = 0.9;
   m.fluid.saturation_induction = 1.2;
-  m.fluid.saturation_shape = 0.5;
+  m.fluid.saturation_shape = ceiling_shape;
   m.fluid.flow_index = 0.7;
   m.geometry.sign_shape = -0.6;
   m.geometry.seal_friction = 300.0;
-  run_observer_steps(state, m);
+  return m;
 }
+
+void BM_ObserverStepOtherShapes(benchmark::State& state) { run_observer_steps(state, other_shapes(0.5)); }
 BENCHMARK(BM_ObserverStepOtherShapes);
+
+// The ceiling's knee past order 8 (a power law capped hard): the knee of order m costs an exp2
+// and two std::pow where order 8 takes multiplications.
+void BM_ObserverStepCappedYield(benchmark::State& state) { run_observer_steps(state, other_shapes(2.0)); }
+BENCHMARK(BM_ObserverStepCappedYield);
 
 void BM_CompensatorStep(benchmark::State& state) {
   const mrd::model::DamperModel m;

@@ -4,7 +4,9 @@
             --ambiguous a,b
 --named lists the effects mrd-residual must name (empty: none); --term a discovered term whose
 coefficient must lie within TOL (relative) of VALUE; without --term no term may be discovered on
-a telegraph run; --ambiguous a group the JSON's "ambiguous" must hold (led by the one kept)."""
+a telegraph run; --ambiguous a group the JSON's "ambiguous" must hold (led by the one kept); --seed N draws a random
+damper (damper_truth.py --damper random) for a run of --duration s; --no-terms asserts that no
+damper term is discovered, whatever the profile."""
 import argparse, json, os, subprocess, sys
 
 here = os.path.dirname(os.path.abspath(__file__))
@@ -14,10 +16,14 @@ p.add_argument("--effect", action="append", default=[])
 p.add_argument("--named", default="")
 p.add_argument("--term", action="append", default=[])
 p.add_argument("--ambiguous", action="append", default=[])
+p.add_argument("--seed", type=int)
+p.add_argument("--duration", default="6")
+p.add_argument("--no-terms", action="store_true")
 a = p.parse_args()
 os.makedirs(a.out, exist_ok=True)
 csv, js = os.path.join(a.out, a.name + ".csv"), os.path.join(a.out, a.name + ".json")
-gen = [sys.executable, os.path.join(here, "damper_truth.py"), "--profile", a.profile, "--duration", "6", "--out", csv]
+gen = [sys.executable, os.path.join(here, "damper_truth.py"), "--profile", a.profile, "--duration", a.duration, "--out", csv]
+if a.seed is not None: gen += ["--damper", "random", "--seed", str(a.seed)]
 for e in a.effect: gen += ["--effect", e]
 subprocess.run(gen, check=True)
 subprocess.run([a.residual, csv, "--json", js], check=True, stdout=subprocess.DEVNULL)
@@ -33,7 +39,7 @@ for name, (value, tol) in wanted_terms.items():
     got = terms.get(name)
     if got is None or abs(got - value) > tol * abs(value):
         print(f"term {name}: got {got}, expected {value} within {tol:.0%}"); ok = False
-if not a.term and a.profile == "telegraph" and terms:
+if not a.term and (a.profile == "telegraph" or a.no_terms) and terms:
     print(f"discovered {terms} on a run that carries no term"); ok = False
 for group in a.ambiguous:
     if group.split(",") not in r["ambiguous"]:

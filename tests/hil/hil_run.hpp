@@ -52,8 +52,8 @@ HilResult run_hil(const HilScenario& scenario);
 // Every state change, for failure messages.
 std::string transitions(const HilResult& r);
 
-// What a failed expectation on a run prints: the supervisor's transitions and both processes'
-// output (SCOPED_TRACE(diagnosis(r)) in each test).
+// What a failed expectation on a run prints: the supervisor's transitions, the sample checks
+// where they change, and both processes' output (SCOPED_TRACE(diagnosis(r)) in each test).
 std::string diagnosis(const HilResult& r);
 
 // Consecutive rows ending at `index` (inclusive, going back) for which `pred` holds.

@@ -162,23 +162,53 @@ TEST(YieldSaturation, IsThePowerLawBelowBsAndACeilingAboveAndInverts) {
   EXPECT_NEAR(saturating(beyond) - offset, gain * 0.8, 1e-6 * gain);
 }
 
+// Eq. 13 with exponent n and no ceiling: tau = offset + gain B^n, the reference for a ceiling.
+struct PowerLaw {
+  double offset, gain;  // [Pa], [Pa / T^n]
+};
+PowerLaw plain_power_law(double n) {
+  MrFluid fluid;
+  fluid.field_exponent = n;
+  const YieldStress plain(fluid);
+  return {plain.zero_field_stress(), plain(1.0) - plain.zero_field_stress()};
+}
+
+// A fluid of exponent n whose yield stress saturates at B_s with a knee of shape q.
+MrFluid saturating_fluid(double n, double b_s, double q) {
+  MrFluid fluid;
+  fluid.field_exponent = n;
+  fluid.saturation_induction = b_s;
+  fluid.saturation_shape = q;
+  return fluid;
+}
+
 TEST(YieldSaturation, AtAnotherExponentBendsAtBsToThePowerNAndInvertsThroughTheBlend) {
-  MrFluid bent;
-  bent.field_exponent = 0.8;
-  bent.saturation_induction = 0.9;
-  bent.saturation_shape = 0.5;
-  const YieldStress tau(bent);
-  MrFluid plain_fluid;
-  plain_fluid.field_exponent = 0.8;
-  const YieldStress plain(plain_fluid);
-  const double offset = plain.zero_field_stress();
-  const double gain = plain(1.0) - offset;  // [Pa / T^0.8]
+  const YieldStress tau(saturating_fluid(0.8, 0.9, 0.5));
+  const auto [offset, gain] = plain_power_law(0.8);  // gain [Pa / T^0.8]
   // The ceiling is gain B_s^0.8 (not gain B_s), reached far above B_s.
   EXPECT_NEAR(tau(500.0) - offset, gain * std::pow(0.9, 0.8), 1e-6 * gain);
   // At B = B_s: (B / B_s)^n = 1, the blend of tanh(1) and the knee's 1 / 2^(1/8) half and half.
   EXPECT_NEAR(tau(0.9) - offset, gain * std::pow(0.9, 0.8) * (0.5 * std::tanh(1.0) + 0.5 / std::pow(2.0, 0.125)),
               1e-9 * gain);
   for (const double B : {0.05, 0.6, 1.4}) EXPECT_NEAR(tau.induction(tau(B)), B, 1e-9) << B;
+}
+
+// A power law capped hard (the sharpest knee, q = 2): within 0.6 % of min(gain B^n, gain B_s^n)
+// everywhere, and the induction comes back from the stress below the cap, and at the cap.
+TEST(YieldSaturation, AtTheSharpestKneeIsAPowerLawCappedAtBs) {
+  const YieldStress tau(saturating_fluid(0.7, 0.6, 2.0));
+  const auto [offset, gain] = plain_power_law(0.7);  // gain [Pa / T^0.7]
+  const double cap = gain * std::pow(0.6, 0.7);
+  for (const double B : {0.05, 0.3, 0.55, 0.6, 0.65, 1.2, 3.0}) {
+    EXPECT_NEAR(tau(B) - offset, std::min(gain * std::pow(B, 0.7), cap), 0.006 * cap) << B;
+  }
+  for (const double B : {0.05, 0.3, 0.59}) EXPECT_NEAR(tau.induction(tau(B)), B, 1e-9) << B;
+  for (const double q : {1.5, 2.0}) {
+    const YieldStress at(saturating_fluid(0.7, 0.6, q));
+    const double beyond = at.induction(offset + 1.5 * cap);  // above the ceiling: finite, at the cap
+    EXPECT_TRUE(std::isfinite(beyond)) << q;
+    EXPECT_NEAR(at(beyond) - offset, cap, 1e-6 * cap) << q;
+  }
 }
 
 TEST(ShapeParameters, OutsideTheirPhysicalRangesAreErrorsNamingTheField) {

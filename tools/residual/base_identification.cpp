@@ -45,7 +45,7 @@ FittedModel identify_base(Search& s, const model::DamperModel& origin, Parameter
   ParameterSpace exploring = space;
   exploring.origin.integration.max_substeps = std::min(exploring.origin.integration.max_substeps, 64);
   std::vector<Point> starts;
-  for (int k = 0; k < swarms; ++k) {
+  for (int k = 0; k < std::max(swarms, 1); ++k) {
     const FittedModel swarm = fit_space(exploring, openings, &s.pool, s.seed++, 2 * s.options.evaluations_per_parameter);
     s.evaluations += swarm.evaluations;
     starts.push_back(swarm.theta);

@@ -19,8 +19,9 @@ namespace mrd::tools::search {
 // Nelder-Mead on the whole fitting series from the best. `space` is the whole space.
 // A first identification takes two swarms: with the material, the yield law and the shapes
 // free, one swarm's best lands in a poor basin now and then (on the random-damper study's clean
-// runs, 5 of 30 above 1.3x the noise with two, 10 with one). A re-identification after an
-// accepted effect starts a chain from the model already fitted, and one swarm serves.
+// runs, 5 of 30 above 1.3x the noise with two, 6 with one, one of them at 3.4x). A
+// re-identification after an accepted effect starts a chain from the model already fitted, and
+// one swarm serves. `swarms` is at least 1.
 FittedModel identify_base(Search& s, const model::DamperModel& origin, ParameterSpace& space, bool from_origin,
                           int swarms, const Point* also_from = nullptr);
 

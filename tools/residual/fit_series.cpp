@@ -12,6 +12,7 @@
 #include "record/csv.hpp"
 #include "record/run_gaps.hpp"
 #include "tools/signal/zero_phase_velocity.hpp"
+#include "tools/signal/signal_scale.hpp"
 
 namespace mrd::tools {
 
@@ -253,11 +254,6 @@ FitSeries run_openings(const FitSeries& series, std::size_t max_samples) {
   return out;
 }
 
-bool current_varies(const FitSeries& s) {
-  if (s.current.empty()) return false;
-  const auto [lo, hi] = std::minmax_element(s.current.begin(), s.current.end());
-  const double largest = std::max(std::fabs(*lo), std::fabs(*hi));
-  return largest > 0.0 && (*hi - *lo) > 0.05 * largest;
-}
+bool current_varies(const FitSeries& s) { return varies(s.current); }
 
 }  // namespace mrd::tools

@@ -95,23 +95,20 @@ void discover(Search& s, model::DamperModel& model, ResidualResult& result) {
   const TermDiscovery discovery = discover_terms(s.full, result.predicted_after, induction,
                                                  fluid_of(model), s.options.minimum_reduction);
   result.discovered = discovery.terms;
-  for (const auto& group : discovery.ambiguous) {
-    result.ambiguous.push_back({.members = group,
-                                .separating_run = "to separate the terms " + group.front() + " and " + group[1] +
-                                                  ", run: a motion at other frequencies and amplitudes (the terms "
-                                                  "scale differently with them)"});
-  }
+  bool added = true;
   if (discovery.has_terms()) {
     // The regression weighs the terms on the residual; the model carries them through its own
     // states and scales (an effect's force, the parts the force scale multiplies). A model that
-    // predicts worse with them than without keeps none, and the report says so.
+    // predicts worse with them than without keeps none of them, nor the refitted linear terms,
+    // and the report says so.
     model::DamperModel with_terms = model;
     discovery.add_to(with_terms);
     std::vector<double> predicted;
     predict_force(with_terms, s.full, predicted);
     const double without = residual_rms(s.full, result.predicted_after).all;
     const double with = residual_rms(s.full, predicted).all;
-    if (with < without) {
+    added = with < without;
+    if (added) {
       model = std::move(with_terms);
       result.predicted_after = std::move(predicted);
     } else {
@@ -119,9 +116,18 @@ void discover(Search& s, model::DamperModel& model, ResidualResult& result) {
       for (const DiscoveredTerm& t : result.discovered)
         if (!t.interference) names += (names.empty() ? "" : " + ") + t.term;
       std::erase_if(result.discovered, [](const DiscoveredTerm& t) { return !t.interference; });
-      result.revisions.push_back(format("the discovered terms %s not added: the model with them errs by %.4g N RMS, "
-                                        "without them %.4g N",
-                                        names.c_str(), with, without));
+      const std::string what = names.empty() ? "the refitted force scale and viscous term" : "the discovered terms " + names;
+      result.revisions.push_back(
+          format("%s not added: the model with them errs by %.4g N RMS, without them %.4g N", what.c_str(), with, without));
+    }
+  }
+  // Groups among terms the model did not take would name a choice that was never made.
+  if (added) {
+    for (const auto& group : discovery.ambiguous) {
+      result.ambiguous.push_back({.members = group,
+                                  .separating_run = "to separate the terms " + group.front() + " and " + group[1] +
+                                                    ", run: a motion at other frequencies and amplitudes (the terms "
+                                                    "scale differently with them)"});
     }
   }
   for (std::size_t i = 0; i < s.full.size(); ++i) result.predicted_after[i] += discovery.interference[i];

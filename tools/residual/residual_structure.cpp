@@ -6,17 +6,11 @@
 
 #include "tools/signal/spectrum.hpp"
 #include "tools/text_format.hpp"
+#include "tools/signal/signal_scale.hpp"
 
 namespace mrd::tools {
 
 namespace {
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  return *mid;
-}
 
 // Energy share of the masked samples over their sample share; 0 when the mask is empty.
 double concentration(const std::vector<double>& r, const std::vector<std::uint8_t>& mask) {
@@ -66,9 +60,7 @@ double noise_floor(const std::vector<double>& r) {
   if (r.size() < 3) return 0.0;
   std::vector<double> d(r.size() - 1);
   for (std::size_t i = 1; i < r.size(); ++i) d[i - 1] = r[i] - r[i - 1];
-  const double m = median(d);
-  for (double& v : d) v = std::fabs(v - m);
-  return 1.4826 * median(d) / std::sqrt(2.0);
+  return mad_sigma(std::move(d)) / std::sqrt(2.0);
 }
 
 ResidualStructure analyse_residual(const FitSeries& s, const std::vector<double>& r) {

@@ -3,23 +3,19 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tools/signal/signal_scale.hpp"
+
 namespace mrd::tools {
 
 namespace {
 
-// 1.4826 MAD of the kept samples' residual: the sigma of its Gaussian part.
+// The sigma of the kept samples' residual's Gaussian part.
 double robust_sigma(const FitSeries& series, const std::vector<double>& predicted) {
   std::vector<double> r;
   r.reserve(series.size());
   for (std::size_t i = 0; i < series.size(); ++i)
     if (series.role[i] != SampleRole::kExcluded) r.push_back(series.force[i] - predicted[i]);
-  if (r.empty()) return 0.0;
-  const auto mid = r.begin() + static_cast<std::ptrdiff_t>(r.size() / 2);
-  std::nth_element(r.begin(), mid, r.end());
-  const double centre = *mid;
-  for (double& x : r) x = std::fabs(x - centre);
-  std::nth_element(r.begin(), mid, r.end());
-  return 1.4826 * *mid;
+  return mad_sigma(std::move(r));
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tools/signal/signal_scale.hpp"
+
 namespace mrd::tools {
 
 std::string_view to_string(ScreenReason r) {
@@ -242,9 +244,8 @@ std::vector<ScreenedSpan> settling_spans(const record::RecordedRun& run,
                                          bool from_start, double share, double longest_s) {
   std::vector<ScreenedSpan> spans;
   if (run.size() < 2) return spans;
-  const auto [lo, hi] = std::minmax_element(run.coil.begin(), run.coil.end());
-  const double largest = run.coil.empty() ? 0.0 : std::max(std::fabs(*lo), std::fabs(*hi));
-  const bool current_varies = largest > 0.0 && *hi - *lo > 0.05 * largest;
+  const double largest = largest_magnitude(run.coil);
+  const bool current_varies = varies(run.coil);
   const auto [x_lo, x_hi] = std::minmax_element(run.displacement.begin(), run.displacement.end());
   const double turn = 0.05 * (*x_hi - *x_lo);
   const auto longest = static_cast<std::size_t>(std::ceil(longest_s * run.sample_rate));

@@ -9,13 +9,28 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <vector>
 
 #include "tests/tools/residual/residual_test_support.hpp"
 #include "tools/residual/residual_report.hpp"
+#include "tools/signal/signal_scale.hpp"
 
 namespace {
 
 using namespace mrd::tools;
+
+// The robust scales by hand: the median absolute deviation ignores the outlier, and a current
+// varies only past 5 % of its largest magnitude.
+TEST(SignalScale, MadSigmaAndVariesAgainstHandWorkedValues) {
+  EXPECT_DOUBLE_EQ(mad_sigma({1.0, 2.0, 3.0, 4.0, 100.0}), 1.4826);  // median 3, deviations' median 1
+  EXPECT_DOUBLE_EQ(mad_sigma({-5.0, -5.0, -5.0}), 0.0);
+  EXPECT_DOUBLE_EQ(mad_sigma({}), 0.0);
+  const std::vector<double> ripple{-1.0, -1.04}, steps{1.0, 0.94}, none{0.0, 0.0};
+  EXPECT_FALSE(varies(ripple));
+  EXPECT_TRUE(varies(steps));
+  EXPECT_FALSE(varies(none));
+  EXPECT_DOUBLE_EQ(largest_magnitude(ripple), 1.04);
+}
 
 // A series of n samples at 1 kHz whose force is Gaussian noise of sigma 1 N about a zero
 // prediction, every sample fitting.
