@@ -29,12 +29,24 @@ set(mrd_packages mrd-controller mrd-tools)
 foreach(component package IN ZIP_LISTS mrd_components mrd_packages)
   install(FILES ${mrd_deb_dir}/copyright ${mrd_changelog_gz}
           DESTINATION ${CMAKE_INSTALL_DATAROOTDIR}/doc/${package} COMPONENT ${component})
+  # The lintian tags that cannot be fixed, each with its reason (docs/DEPLOY.md, "Lintian").
+  install(FILES ${mrd_deb_dir}/${package}.lintian-overrides DESTINATION ${CMAKE_INSTALL_DATAROOTDIR}/lintian/overrides
+          RENAME ${package} COMPONENT ${component})
 endforeach()
-# The documentation (README.md, docs/ with its figures) goes with the tools.
+# The documentation (README.md, docs/ with its figures) goes with the tools, registered with
+# doc-base; the controller's own (FIRMWARE.md, DEPLOY.md, ...) is installed by firmware/.
 install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DATAROOTDIR}/doc/mrd-tools
         COMPONENT tools)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DATAROOTDIR}/doc/mrd-tools/docs
         COMPONENT tools)
+configure_file(${mrd_deb_dir}/mrd-tools.doc-base.in ${CMAKE_CURRENT_BINARY_DIR}/packaging/mrd-tools.doc-base @ONLY)
+install(FILES ${CMAKE_CURRENT_BINARY_DIR}/packaging/mrd-tools.doc-base
+        DESTINATION ${CMAKE_INSTALL_DATAROOTDIR}/doc-base RENAME mrd-tools COMPONENT tools)
+# The hardware-in-the-loop configs mrd-plant needs (its man page and docs/HIL.md run them): the
+# plant and the controller config it names (relative to itself), for the position and force modes.
+install(FILES ${PROJECT_SOURCE_DIR}/etc/mrd/plant.toml ${PROJECT_SOURCE_DIR}/etc/mrd/hil-modbus.toml
+              ${PROJECT_SOURCE_DIR}/etc/mrd/plant-force.toml ${PROJECT_SOURCE_DIR}/etc/mrd/hil-force-modbus.toml
+        DESTINATION ${CMAKE_INSTALL_DATAROOTDIR}/doc/mrd-tools/examples COMPONENT tools)
 
 # dpkg marks the config a conffile: an upgrade keeps local edits (and asks if both changed).
 file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/packaging/conffiles "${CMAKE_INSTALL_FULL_SYSCONFDIR}/mrd/mrd.toml\n")

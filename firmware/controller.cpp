@@ -81,6 +81,25 @@ void log_transitions(runtime::SupervisorFeed& feed, const runtime::Journal& jour
   }
 }
 
+// The run's verdict: kEndedSafe when a fault, not the stop, put the loop into the SAFE it ended
+// in, or a bus link was down at the end (a run shorter than link_timeout never leaves INIT on a
+// dead link), with the trigger and each bus whose link is down and why.
+int report_ending(std::FILE* out, const runtime::Journal& journal, control::Trigger safe_cause,
+                  const std::string& links) {
+  std::size_t from = 0;
+  for (std::size_t end; (end = links.find('\n', from)) != std::string::npos; from = end + 1) {
+    std::fprintf(out, "link down: %s\n", links.substr(from, end - from).c_str());
+  }
+  const bool through_fault = safe_cause != control::Trigger::kNone && safe_cause != control::Trigger::kShutdown;
+  if (!through_fault && links.empty()) return cli::kOk;
+  const std::string line = through_fault ? "the run ended in SAFE through " + std::string(control::to_string(safe_cause)) +
+                                               ", not the stop (exit status 4)"
+                                         : "the run ended with a bus link down (exit status 4)";
+  std::fprintf(out, "%s\n", line.c_str());
+  journal.write(runtime::Priority::kErr, line);
+  return cli::kEndedSafe;
+}
+
 }  // namespace
 
 int run_controller(const config::ControllerConfig& config, const RunOptions& options,
@@ -187,12 +206,14 @@ int run_controller(const config::ControllerConfig& config, const RunOptions& opt
   journal.write(runtime::Priority::kNotice, why + ", fail-safe current written");
   notifier.stopping(why);
   if (writer) writer->stop();
+  const std::string links = hal.link_problems();  // before stop(), which takes every link down
   hal.stop();
 
   print_stats(out, stats, feed, loop, hal, options.bench);
   std::fprintf(out, "final setpoint %.3f A (fail-safe %.3f A), enable %s\n", loop.last().setpoint,
                config.safety.fail_safe_current, loop.last().enable ? "on" : "off");
-  if (!queue) return cli::kOk;
+  const int status = report_ending(out, journal, feed.safe_cause(), links);
+  if (!queue) return status;
   // A run whose file is incomplete exits with the I/O code: its record cannot be trusted whole.
   const bool failed = writer->failures() > 0;
   std::fprintf(out, "telemetry: %llu records offered, %llu written, %llu dropped, %llu over the size cap, %llu lost to I/O -> %s\n",
@@ -208,7 +229,7 @@ int run_controller(const config::ControllerConfig& config, const RunOptions& opt
   if (const auto t0 = writer->start_time()) {
     std::fprintf(out, "telemetry: time_s 0 is CLOCK_MONOTONIC %.9f s\n", std::chrono::duration<double>(*t0).count());
   }
-  return failed ? cli::kIo : cli::kOk;
+  return failed ? cli::kIo : status;
 }
 
 }  // namespace mrd::firmware

@@ -107,4 +107,14 @@ std::string HalSet::counters() const {
   return out;
 }
 
+bool HalSet::link_never_up() const { return modbus_ && modbus_->never_connected(); }
+
+std::string HalSet::link_problems() const {
+  std::string out;
+  if (modbus_) {
+    if (const auto problem = modbus_->link_problem()) out += "modbus: " + *problem + "\n";
+  }
+  return out;
+}
+
 }  // namespace mrd::firmware

@@ -45,6 +45,9 @@ void note_network(const mrd::config::ControllerConfig& config) {
 int main(int argc, char** argv) {
   CLI::App app{"mrd-controller: real-time MR damper controller (default: the mock HAL)"};
   mrd::cli::set_up(app, "mrd-controller");
+  app.footer(mrd::cli::exit_code_footer() +
+             " 4: the run ended in SAFE through a fault, not through the stop (the trigger and any link "
+             "down printed last).");
   std::string config_path;
   std::string check_path;
   std::string telemetry_path;
@@ -56,9 +59,9 @@ int main(int argc, char** argv) {
                                           "also installed as etc/mrd/mrd.toml)");
   app.add_option("--check-config", check_path, "validate FILE, print every problem, exit 0 or 1");
   app.add_option("--duration", options.duration_s, "run this many seconds (0: until SIGTERM or SIGINT; SIGHUP re-checks the config file)")
-      ->check(CLI::Range(0.0, 1e7))->capture_default_str();
+      ->check(mrd::cli::finite_in(0.0, 1e7))->capture_default_str();
   app.add_option("--telemetry", telemetry_path, "write telemetry CSV to exactly this file (overrides telemetry.path, telemetry.directory with its directory, and telemetry.per_run)");
-  app.add_option("--rate", rate, "control rate [Hz] (overrides loop.rate)")->check(CLI::Range(10.0, 20000.0));
+  app.add_option("--rate", rate, "control rate [Hz] (overrides loop.rate)")->check(mrd::cli::finite_in(10.0, 20000.0));
   app.add_flag("--bench", options.bench,
                "loop benchmark: mock HAL and its sine whatever the config says, no telemetry, "
                "latency histograms printed");

@@ -136,6 +136,13 @@ std::string Probe::format(const ProbeReading& r, hal::Timestamp start) {
 
 namespace {
 
+void fail_each_line(const std::string& lines, std::FILE* out) {
+  std::size_t from = 0;
+  for (std::size_t end; (end = lines.find('\n', from)) != std::string::npos; from = end + 1) {
+    std::fprintf(out, "probe: FAIL: %s\n", lines.substr(from, end - from).c_str());
+  }
+}
+
 void sleep_until(hal::Timestamp t) {
   timespec ts{static_cast<time_t>(t.count() / 1'000'000'000), static_cast<long>(t.count() % 1'000'000'000)};
   while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) != 0) {
@@ -168,18 +175,23 @@ int run_probe(const config::ControllerConfig& config, const ProbeOptions& option
     const ProbeReading r = probe.poll(at);
     if (i <= options.print_readings) std::fputs(Probe::format(r, start).c_str(), out);
   }
+  const std::string links = hal.link_problems();
+  const bool never_up = hal.link_never_up();
   hal.stop();
   std::fputs(probe.summary().c_str(), out);
   std::fputs(hal.counters().c_str(), out);
-  const std::string problems = probe.problems();
+  // A link that never came up is the bus's fault, not the readings': say why, as mbpoll would,
+  // and nothing of readings that could not come. A link lost on the way is one more problem.
+  if (never_up) {
+    fail_each_line(links, out);
+    return cli::kIo;
+  }
+  const std::string problems = links + probe.problems();
   if (problems.empty()) {
     std::fputs("probe: OK\n", out);
     return cli::kOk;
   }
-  std::size_t from = 0;
-  for (std::size_t end; (end = problems.find('\n', from)) != std::string::npos; from = end + 1) {
-    std::fprintf(out, "probe: FAIL: %s\n", problems.substr(from, end - from).c_str());
-  }
+  fail_each_line(problems, out);
   return cli::kBadInput;  // the readings are wrong
 }
 

@@ -37,6 +37,13 @@ class SupervisorFeed {
     if (why != control::Trigger::kNone) {
       if (!ring_.push(SupervisorEvent{r.cycle, r.time, last_, to, why})) lost_.add();
     }
+    // What put the loop into SAFE, kept while it stays there: the exit status of a run that ends
+    // in SAFE through a fault rather than through the stop request.
+    if (to != control::SupervisorState::kSafe) {
+      safe_cause_.store(static_cast<std::uint8_t>(control::Trigger::kNone), std::memory_order_relaxed);
+    } else if (last_ != control::SupervisorState::kSafe) {
+      safe_cause_.store(static_cast<std::uint8_t>(why), std::memory_order_relaxed);
+    }
     last_ = to;
     if (r.force_scale_at_bound) {
       scale_at_bound_.store(r.force_scale, std::memory_order_relaxed);
@@ -61,6 +68,10 @@ class SupervisorFeed {
   }
   // Read after force_scale_bound_hits(): at least as new as the hit that count includes.
   [[nodiscard]] double force_scale_at_bound() const { return scale_at_bound_.load(std::memory_order_relaxed); }
+  // Any thread: the trigger that took the loop into the SAFE it is in (kNone when not in SAFE).
+  [[nodiscard]] control::Trigger safe_cause() const {
+    return static_cast<control::Trigger>(safe_cause_.load(std::memory_order_relaxed));
+  }
   // Any thread: transitions the ring had no room for.
   [[nodiscard]] std::uint64_t lost() const { return lost_.get(); }
 
@@ -74,6 +85,7 @@ class SupervisorFeed {
   boost::lockfree::spsc_queue<SupervisorEvent, boost::lockfree::capacity<kCapacity>> ring_;
   std::atomic<std::uint8_t> state_{static_cast<std::uint8_t>(control::SupervisorState::kInit)};
   std::atomic<bool> latched_{false};
+  std::atomic<std::uint8_t> safe_cause_{static_cast<std::uint8_t>(control::Trigger::kNone)};
   control::SupervisorState last_ = control::SupervisorState::kInit;  // loop thread only
   SingleWriterCounter lost_;
   std::atomic<std::uint64_t> scale_bound_hits_{0};

@@ -45,9 +45,20 @@ cleanup() {
 }
 trap cleanup EXIT
 
-# Lint: an error or a warning fails, but for the accepted tags (reasons in docs/DEPLOY.md).
-check "lintian: no errors or warnings beyond packaging/deb/lintian-accepted" lintian --fail-on error,warning --suppress-tags-from-file packaging/deb/lintian-accepted \
+# Lint at every level (-I --pedantic): any tag fails, but for the accepted ones
+# (packaging/deb/lintian-accepted) and those the packages override with their reason
+# (packaging/deb/*.lintian-overrides); both are explained in docs/DEPLOY.md, "Lintian".
+check "lintian -I --pedantic: no tag beyond packaging/deb/lintian-accepted and the packages' overrides" \
+  lintian -I --pedantic --fail-on error,warning,info,pedantic --suppress-tags-from-file packaging/deb/lintian-accepted \
   "$controller_deb" "$tools_deb"
+# Hardening (-D_FORTIFY_SOURCE=2, stack protector, PIE, -z relro -z now) by devscripts'
+# hardening-check where it is installed; lintian's hardening-* tags above check the same.
+if command -v hardening-check >/dev/null; then
+  dpkg-deb -x "$controller_deb" "$work/files"
+  dpkg-deb -x "$tools_deb" "$work/files"
+  check "hardening-check: every program fortified, stack-protected, PIE, relro and bind-now" \
+    hardening-check --quiet --nocfprotection "$work"/files/usr/bin/mrd-*
+fi
 
 dpkg-deb -e "$controller_deb" "$work/control"
 check "conffiles lists $config" grep -qx "$config" "$work/control/conffiles"
@@ -57,10 +68,19 @@ check "unit in /lib/systemd/system" bash -c "dpkg-deb -c '$controller_deb' | gre
 check "udev rule for /dev/cpu_dma_latency" bash -c "dpkg-deb -c '$controller_deb' | grep -q ' ./lib/udev/rules.d/60-mrd-cpu-dma-latency.rules$'"
 check "networkd file for can0" bash -c "dpkg-deb -c '$controller_deb' | grep -q ' ./lib/systemd/network/80-mrd-can0.network$'"
 check "example configs" bash -c "dpkg-deb -c '$controller_deb' | grep -q ' ./usr/share/doc/mrd-controller/examples/can-box.toml$'"
-# Every program of a package has its man page beside it (help2man, at build time).
+check "the controller's docs in /usr/share/doc/mrd-controller, none in /usr/share/doc/mrd" bash -c \
+  "dpkg-deb -c '$controller_deb' | grep -q ' ./usr/share/doc/mrd-controller/FIRMWARE.md$' && ! dpkg-deb -c '$controller_deb' | grep -q ' ./usr/share/doc/mrd/'"
+check "unit's Documentation= names the man page" bash -c \
+  "dpkg-deb --fsys-tarfile '$controller_deb' | tar -xO ./lib/systemd/system/mrd-controller.service | grep -qx 'Documentation=man:mrd-controller(1)'"
+# Every program of a package has its man page beside it (help2man, at build time), with EXIT
+# STATUS, FILES, EXAMPLES and SEE ALSO (tests/cli/check_man_page.sh; the options and exit codes
+# against the installed programs below, as root).
 for deb in "$controller_deb" "$tools_deb"; do
+  dpkg-deb -x "$deb" "$work/pages"
   for program in $(dpkg-deb -c "$deb" | sed -n 's|.* \./usr/bin/\(mrd-[a-z0-9-]*\)$|\1|p'); do
     check "man page of $program" bash -c "dpkg-deb -c '$deb' | grep -q ' ./usr/share/man/man1/$program.1.gz$'"
+    check "man page of $program: EXIT STATUS, FILES, EXAMPLES, SEE ALSO" \
+      bash tests/cli/check_man_page.sh "$work/pages/usr/share/man/man1/$program.1.gz" "$program"
   done
 done
 for program in mrd-plant mrd-hil-report mrd-identify mrd-residual; do
@@ -87,12 +107,21 @@ check "mrd-replay starts" /usr/bin/mrd-replay --help
 check "every installed program answers --version" bash -c \
   "for p in \$(dpkg -L mrd-controller mrd-tools | grep '^/usr/bin/mrd-'); do \$p --version | grep -q \"^\${p##*/} \" || exit 1; done"
 check "man mrd-replay reads" bash -c "man -P cat mrd-replay 2>/dev/null | grep -q 'Exit status' || zcat /usr/share/man/man1/mrd-replay.1.gz | grep -q 'Exit status'"
+check "every installed man page lists its program's options (mrd-identify: each subcommand's) and exit codes" bash -c \
+  "for p in \$(dpkg -L mrd-controller mrd-tools | grep '^/usr/bin/mrd-'); do bash tests/cli/check_man_page.sh /usr/share/man/man1/\${p##*/}.1.gz \${p##*/} \$p >/dev/null || exit 1; done"
 check "the installed example configs are accepted" bash -c \
   "for f in /usr/share/doc/mrd-controller/examples/*.toml; do /usr/bin/mrd-controller --check-config \$f || exit 1; done"
+check "the installed hardware-in-the-loop examples are accepted (mrd-plant's man page runs them)" bash -c \
+  "cd /usr/share/doc/mrd-tools/examples && /usr/bin/mrd-plant --check-config plant.toml && /usr/bin/mrd-plant --check-config plant-force.toml && /usr/bin/mrd-controller --check-config hil-modbus.toml && /usr/bin/mrd-controller --check-config hil-force-modbus.toml"
 check "unit is Type=notify with a watchdog" bash -c \
   "grep -qx 'Type=notify' /lib/systemd/system/mrd-controller.service && grep -q '^WatchdogSec=' /lib/systemd/system/mrd-controller.service"
 check "unit names the installed paths" \
   grep -qx "ExecStart=/usr/bin/mrd-controller --config $config" /lib/systemd/system/mrd-controller.service
+# systemd-analyze verify also runs man for each Documentation=man: entry.
+if command -v systemd-analyze >/dev/null; then
+  check "systemd-analyze verify accepts the installed unit (man:mrd-controller(1) found)" \
+    systemd-analyze verify /lib/systemd/system/mrd-controller.service
+fi
 
 # A local edit survives a reinstall and an upgrade whose default config did not change, silently.
 echo "# local edit (test-package.sh)" >>"$config"

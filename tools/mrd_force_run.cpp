@@ -80,9 +80,9 @@ bool write_trace(const std::string& path, const DemandProfile& profile, const Fo
 // Four panels, one a strategy, each with the desired force under the delivered one.
 std::string plot_script(const std::string& csv, const std::string& png, const std::string& title, bool against_time,
                         double from_s, double to_s) {
-  static const char* const kNames[] = {"clipped\\_on\\_off", "inverse\\_bingham", "inverse\\_ja", "inverse\\_ja\\_lag"};
-  std::string s = "set terminal pngcairo size 1200,850 font ',10'\nset output '" + png +
-                  "'\nset datafile separator ','\nset grid\nset key left top\n"
+  static const char* const kNames[] = {"clipped_on_off", "inverse_bingham", "inverse_ja", "inverse_ja_lag"};
+  std::string s = "set terminal pngcairo noenhanced size 1200,850 font ',10'\nset output '" + png +
+                  "'\nset datafile separator ','\nset grid\nset key below horizontal\n"
                   "set multiplot layout 2,2 title '" + title + "'\n";
   s += against_time ? "set xlabel 'time [s]'\nset ylabel 'force [kN]'\nset xrange [" + std::to_string(from_s) + ":" +
                           std::to_string(to_s) + "]\n"
@@ -108,12 +108,12 @@ std::string plot_script(const std::string& csv, const std::string& png, const st
 // out: inverse_ja is the third strategy, inverse_ja_load_cell the fifth with its scale after).
 std::string load_cell_plot_script(const std::string& csv, const std::string& png, const std::string& title,
                                   bool drifting) {
-  std::string s = "set terminal pngcairo size 1200,850 font ',10'\nset output '" + png +
-                  "'\nset datafile separator ','\nset grid\nset key left bottom\n"
+  std::string s = "set terminal pngcairo noenhanced size 1200,850 font ',10'\nset output '" + png +
+                  "'\nset datafile separator ','\nset grid\nset key below horizontal\n"
                   "set multiplot layout 2,1 title '" + title + "'\nset xlabel 'time [s]'\n";
   s += "set ylabel 'delivered - desired [kN]'\nset title 'force error'\n"
-       "plot '" + csv + "' every ::1 using 1:($9-$4) with lines lc rgb '#d62728' title 'inverse\\_ja', "
-       "'' every ::1 using 1:($13-$4) with lines lc rgb '#1f77b4' title 'inverse\\_ja\\_load\\_cell'\n";
+       "plot '" + csv + "' every ::1 using 1:($9-$4) with lines lc rgb '#d62728' title 'inverse_ja', "
+       "'' every ::1 using 1:($13-$4) with lines lc rgb '#1f77b4' title 'inverse_ja_load_cell'\n";
   s += "set ylabel 'yield scale [-]'\nset title 'the model yield force scale'\nplot '" + csv +
        "' every ::1 using 1:15 with lines lw 2 lc rgb '#1f77b4' title 'load-cell correction'";
   if (drifting) s += ", '' every ::1 using 1:16 with lines lw 2 lc rgb '#888888' title 'plant yield stress / its undrifted value'";
@@ -144,29 +144,30 @@ int main(int argc, char** argv) {
                                         "perturbed 10-20 %, or all three")
       ->check(CLI::IsMember({"matched", "identified", "perturbed", "all"}))->capture_default_str();
   app.add_option("--coil-lag-ms", coil_lag_ms, "the plant's coil lag time constant [ms], 0 for none")
-      ->check(CLI::Range(0.0, 200.0))->capture_default_str();
+      ->check(mrd::cli::finite_in(0.0, 200.0))->capture_default_str();
   app.add_option("--seed", seed, "seed of the profile, the noise and the identification")->capture_default_str();
   app.add_option("--duration", duration, "run length [s]; the first second is left out of the figures")
-      ->check(CLI::Range(2.0, 600.0))->capture_default_str();
+      ->check(mrd::cli::finite_in(2.0, 600.0))->capture_default_str();
   app.add_option("--force-noise-n", force_noise, "load-cell noise RMS [N] (the clipped law reads the load cell)")
-      ->check(CLI::Range(0.0, 1e4))->capture_default_str();
+      ->check(mrd::cli::finite_in(0.0, 1e4))->capture_default_str();
   app.add_option("--lqr-force-weight", lqr_force_weight, "structure profile: r, the LQR weight on the damper force "
                                                          "against the storey shears")
-      ->check(CLI::Range(1e-6, 1e6))->capture_default_str();
+      ->check(mrd::cli::finite_in(1e-6, 1e6))->capture_default_str();
   app.add_option("--pga-g", pga_g, "structure profile: peak ground acceleration [g]")
-      ->check(CLI::Range(0.01, 2.0))->capture_default_str();
+      ->check(mrd::cli::finite_in(0.01, 2.0))->capture_default_str();
   app.add_option("--drift", drift_pct, "the plant's yield stress falls by PCT % over the run, as the fluid heats")
-      ->check(CLI::Range(0.0, 60.0))->capture_default_str();
+      ->check(mrd::cli::finite_in(0.0, 60.0))->capture_default_str();
   app.add_flag("--load-cell", load_cell, "add inverse_ja_load_cell: inverse_ja with the load-cell correction of "
                                          "its model's yield force");
   app.add_option("--load-cell-tau", load_cell_tau, "the correction's time constant [s]")
-      ->check(CLI::Range(0.01, 1000.0))->capture_default_str();
+      ->check(mrd::cli::finite_in(0.01, 1000.0))->capture_default_str();
   app.add_option("--json", json_path, "write the figures as JSON to FILE");
   app.add_option("--out", out_dir, "folder for the CSV trace and the PNG plots (none without it)");
   app.add_flag("--no-plot", no_plot, "with --out, skip the PNGs");
   mrd::cli::set_up(app, "mrd-force-run");
   if (const auto status = mrd::cli::parse(app, argc, argv)) return *status;
   if (!out_dir.empty() && !mrd::cli::prepare_output_directory("mrd-force-run", out_dir)) return mrd::cli::kIo;
+  if (!mrd::cli::check_output_file("mrd-force-run", json_path)) return mrd::cli::kIo;
 
   const double dt = 1e-3;
   const mrd::model::DamperModel plant = mrd::tools::with_coil_lag({}, coil_lag_ms * 1e-3);

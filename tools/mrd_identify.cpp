@@ -1,7 +1,9 @@
 // mrd-identify: the five J-A parameters (Ms, a, alpha, k, c) from measured B-H (or B-I)
 // loops, by minimising the RMSE of B (Eq. 15). See docs/IDENTIFICATION.md.
 #include <CLI/CLI.hpp>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -36,6 +38,11 @@ Point parse_parameter_list(const std::string& option, const std::string& text) {
     }
     x[j] = *value;
   }
+  if (const auto report = mrd::model::validate(to_params(x)); !report.ok()) {
+    std::string why = report.to_string();
+    while (why.ends_with('\n')) why.pop_back();
+    throw CLI::ValidationError(option, why);
+  }
   return x;
 }
 
@@ -65,7 +72,7 @@ bool write_file(const std::string& path, const std::string& text) {
   std::ofstream out(path);
   out << text;
   out.close();
-  if (!out) std::fprintf(stderr, "mrd-identify: cannot write %s\n", path.c_str());
+  if (!out) std::fprintf(stderr, "mrd-identify: cannot write %s: %s\n", path.c_str(), std::strerror(errno));
   return static_cast<bool>(out);
 }
 
@@ -119,26 +126,34 @@ int reproduce_paper(const StudyOptions& study, double table1_H_max, const std::s
 // Options every search shares: the budget, the seed, the threads and the improved PSO's constants.
 void add_search_options(CLI::App& cmd, IdentifyOptions& options) {
   cmd.add_option("--seed", options.seed, "random seed; a seed gives the same run")->capture_default_str();
-  cmd.add_option("--population", options.budget.population)->check(CLI::Range(5, 10000))->capture_default_str();
+  cmd.add_option("--population", options.budget.population, "particles in the swarm (or the population of the other algorithms)")->check(CLI::Range(5, 10000))->capture_default_str();
   cmd.add_option("--evaluations", options.budget.evaluations, "budget of model evaluations")
       ->check(CLI::Range(10, 100000000))->capture_default_str();
-  cmd.add_option("--threads", options.threads, "0 = all cores (pagmo runs serially)")->capture_default_str();
+  cmd.add_option("--threads", options.threads, "0 = all cores (pagmo runs serially)")
+      ->check(CLI::Range(0, 1024))->capture_default_str();
   auto& ips = options.improved;
-  cmd.add_option("--w-max", ips.w_max, "improved-pso: inertia at the start, Eq. 16")->capture_default_str();
-  cmd.add_option("--w-min", ips.w_min, "improved-pso: inertia at the end, Eq. 16")->capture_default_str();
-  cmd.add_option("--c1", ips.c1, "improved-pso: cognitive factor, Eq. 14")->capture_default_str();
-  cmd.add_option("--c2", ips.c2, "improved-pso: social factor, Eq. 14")->capture_default_str();
+  cmd.add_option("--w-max", ips.w_max, "improved-pso: inertia at the start, Eq. 16")
+      ->check(mrd::cli::finite_in(0.0, 2.0))->capture_default_str();
+  cmd.add_option("--w-min", ips.w_min, "improved-pso: inertia at the end, Eq. 16")
+      ->check(mrd::cli::finite_in(0.0, 2.0))->capture_default_str();
+  cmd.add_option("--c1", ips.c1, "improved-pso: cognitive factor, Eq. 14")
+      ->check(mrd::cli::finite_in(0.0, 4.0))->capture_default_str();
+  cmd.add_option("--c2", ips.c2, "improved-pso: social factor, Eq. 14")
+      ->check(mrd::cli::finite_in(0.0, 4.0))->capture_default_str();
   cmd.add_option("--velocity-limit", ips.velocity_limit, "improved-pso: |v| limit, fraction of the range")
-      ->capture_default_str();
-  cmd.add_option("--F", ips.F, "improved-pso: DE scaling factor, Eq. 18")->capture_default_str();
+      ->check(mrd::cli::finite_in(1e-3, 1.0))->capture_default_str();
+  cmd.add_option("--F", ips.F, "improved-pso: DE scaling factor, Eq. 18")
+      ->check(mrd::cli::finite_in(0.0, 2.0))->capture_default_str();
   cmd.add_option("--F-spread", ips.F_spread, "improved-pso: F drawn from [F, F + spread] per trial")
-      ->capture_default_str();
-  cmd.add_option("--CR", ips.CR, "improved-pso: DE crossover probability, Eq. 19")->capture_default_str();
+      ->check(mrd::cli::finite_in(0.0, 2.0))->capture_default_str();
+  cmd.add_option("--CR", ips.CR, "improved-pso: DE crossover probability, Eq. 19")
+      ->check(mrd::cli::finite_in(0.0, 1.0))->capture_default_str();
   cmd.add_option("--stall", ips.stall_iterations, "improved-pso: iterations without gain before Cauchy")
-      ->capture_default_str();
-  cmd.add_option("--cauchy-scale", ips.cauchy_scale, "improved-pso: Eq. 22 step scale")->capture_default_str();
+      ->check(CLI::Range(1, 1000000))->capture_default_str();
+  cmd.add_option("--cauchy-scale", ips.cauchy_scale, "improved-pso: Eq. 22 step scale")
+      ->check(mrd::cli::finite_in(1e-9, 10.0))->capture_default_str();
   cmd.add_option("--cauchy-trials", ips.cauchy_trials, "improved-pso: Eq. 22 draws per stall")
-      ->capture_default_str();
+      ->check(CLI::Range(1, 10000))->capture_default_str();
 }
 
 // The input loops and how they are played through the model.
@@ -150,11 +165,11 @@ struct CurveArguments {
 
   void add_to(CLI::App& cmd) {
     cmd.add_option("file", file, "CSV with H<n>_A_per_m,B<n>_T column pairs (or I<n>_A for B-I)")->required();
-    cmd.add_option("--turns", turns, "N, for B-I files [-]");
-    cmd.add_option("--length", length, "Le, for B-I files [m]");
+    cmd.add_option("--turns", turns, "N, for B-I files [-]")->check(mrd::cli::finite_in(1.0, 1e6));
+    cmd.add_option("--length", length, "Le, for B-I files [m]")->check(mrd::cli::finite_in(1e-6, 10.0));
     cmd.add_option("--step-fraction", step_fraction,
                    "J-A sub-step as a fraction of min(a, k); larger is faster, less accurate")
-        ->check(CLI::Range(0.01, 4.0))->capture_default_str();
+        ->check(mrd::cli::finite_in(0.01, 4.0))->capture_default_str();
   }
   BHCurve read() const {
     BHCurveOptions curve_options;
@@ -256,14 +271,14 @@ int run_fit(const FitArguments& args) {
     damper.insert("jiles_atherton", std::move(ja));
     toml::table values;
     values.insert("damper", std::move(damper));
+    mrd::tools::round_floats(values);
     try {
       text = patch_toml(text, values);
     } catch (const std::exception& e) {
       std::fprintf(stderr, "mrd-identify: --write-config %s: %s\n", args.config_path.c_str(), e.what());
       return mrd::cli::kUsage;
     }
-    if (!write_file(args.config_path, text)) {
-      std::fprintf(stderr, "mrd-identify: cannot write %s\n", args.config_path.c_str());
+    if (!write_file(args.config_path, text)) {  // write_file says why
       return mrd::cli::kIo;
     }
   }
@@ -282,9 +297,9 @@ int run_fit(const FitArguments& args) {
 }
 
 int run_evaluate(const CurveArguments& curve_args, const std::string& parameter_text) {
-  const Point x = parse_parameter_list("params", parameter_text);
-  const BHObjective objective(curve_args.read(), curve_args.settings());
+  const Point x = parse_parameter_list("params", parameter_text);  // errors end here; warnings print
   std::fputs(mrd::model::validate(to_params(x)).to_string().c_str(), stderr);
+  const BHObjective objective(curve_args.read(), curve_args.settings());
   const FitEvaluation fit = objective.evaluate(to_params(x));
   std::printf("%s: %zu points, RMSE %.6g T (%.4g%% of rms B %.4g T)%s\n", curve_args.file.c_str(),
               objective.points(), fit.rmse, 100.0 * fit.rmse / objective.rms_B(), objective.rms_B(),
@@ -378,19 +393,23 @@ int main(int argc, char** argv) {
   paper_study.add_to(*paper_cmd, "reproduce-paper");
   paper_cmd->add_option("--table1-amplitude", table1_H_max,
                         "loop amplitude for the Table 1 set [A/m]; physical up to ~81")
-      ->check(CLI::Range(1.0, 1e6))->capture_default_str();
+      ->check(mrd::cli::finite_in(1.0, 1e6))->capture_default_str();
 
   SyntheticArguments synthetic;
   auto* synthetic_cmd = app.add_subcommand("synthetic", "write one simulated major loop of a known set to a CSV");
   synthetic_cmd->add_option("out", synthetic.path, "CSV to write")->required();
   synthetic_cmd->add_option("--truth", synthetic.truth_text, "Ms,a,alpha,k,c")->required();
   synthetic_cmd->add_option("--H-max", synthetic.H_max, "loop amplitude [A/m]")->required()
-      ->check(CLI::PositiveNumber);
-  synthetic_cmd->add_option("--points", synthetic.points, "points on the loop")->capture_default_str();
+      ->check(mrd::cli::finite_in(1e-9, 1e9));
+  synthetic_cmd->add_option("--points", synthetic.points, "points on the loop")
+      ->check(CLI::Range(8, 10000000))->capture_default_str();
 
   if (const auto status = mrd::cli::parse(app, argc, argv)) return *status;
-  // Every folder of results exists and is writable before the work starts.
-  for (const std::string* dir : {&fit.plot_dir, &compare_study.out_dir, &paper_study.out_dir}) {
+  // Every output can be written, and every folder of results exists, before the work starts.
+  for (const std::string* file : {&fit.json_path, &fit.config_path, &synthetic.path}) {
+    if (!mrd::cli::check_output_file("mrd-identify", *file)) return mrd::cli::kIo;
+  }
+  for (const std::string* dir : {&fit.plot_dir, &fit.report_dir, &compare_study.out_dir, &paper_study.out_dir}) {
     if (!dir->empty() && !mrd::cli::prepare_output_directory("mrd-identify", *dir)) return mrd::cli::kIo;
   }
   try {

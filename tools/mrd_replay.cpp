@@ -46,7 +46,8 @@ int main(int argc, char** argv) {
   auto* zero_phase_option = app.add_option(
       "--zero-phase-velocity", zero_phase,
       "offline: the velocity from a zero-phase filter of the displacement at this cutoff [Hz] "
-      "(0: from the motion's spectrum), as mrd-residual uses, instead of the controller's causal filter");
+      "(0: from the motion's spectrum), as mrd-residual uses, instead of the controller's causal filter")
+      ->check(mrd::cli::finite_in(0.0, 1e6));
   app.add_option("--plot", plot_dir,
                  "folder for the force-displacement, residual and current PNGs");
   app.add_option("--csv", csv_path, "write the per-sample replay as CSV");
@@ -61,7 +62,12 @@ int main(int argc, char** argv) {
 
   const auto config = run_options.load_config();
   if (!config) return mrd::cli::kUsage;
-  if (!plot_dir.empty() && !mrd::cli::prepare_output_directory("mrd-replay", plot_dir)) return mrd::cli::kIo;
+  for (const std::string* file : {&csv_path, &json_path, &candump_path}) {
+    if (!mrd::cli::check_output_file("mrd-replay", *file)) return mrd::cli::kIo;
+  }
+  for (const std::string* dir : {&plot_dir, &report_dir}) {
+    if (!dir->empty() && !mrd::cli::prepare_output_directory("mrd-replay", *dir)) return mrd::cli::kIo;
+  }
   replay_options.law = config->config.law;
   try {
     const mrd::record::RunReadOptions read = run_options.read_options(*config);

@@ -43,7 +43,12 @@ int main(int argc, char** argv) {
   RunOptionsCli run_options;
   run_options.add_to(app);
   app.add_option("--json", json_path, "write the result as JSON");
-  app.add_option("--write-config", config_out, "write the updated config (the fitted damper, accepted effects on)");
+  app.add_option("--write-config", config_out,
+                 "write the updated config (the fitted damper, accepted effects on); refused (exit 2) when a "
+                 "fitted parameter sits on its physical range's edge, unless --accept-unphysical");
+  bool accept_unphysical = false;
+  app.add_flag("--accept-unphysical", accept_unphysical,
+               "write --write-config even with parameters on their physical range's edge (they are listed)");
   app.add_option("--plot", plot_dir, "folder for the force-displacement, residual-time and residual-phase PNGs");
   app.add_option("--report", report_dir,
                  "write report.html here: fit, residual structure, parameters with standard deviations, "
@@ -69,13 +74,14 @@ int main(int argc, char** argv) {
                "under a robust loss, and run the candidates' fits and judgements under it (docs/CLOSING-THE-LOOP.md, \"Robust fit\")");
   app.add_option("--threshold", options.minimum_reduction,
                  "fraction by which an effect must lower the validation error to be accepted")
-      ->capture_default_str();
+      ->check(mrd::cli::finite_in(0.0, 0.9))->capture_default_str();
   app.add_option("--velocity-cutoff", series_options.velocity_cutoff,
                  "[Hz] zero-phase velocity filter, for runs without a velocity column (0: from the motion's spectrum)")
-      ->capture_default_str();
+      ->check(mrd::cli::finite_in(0.0, 1e6))->capture_default_str();
   app.add_option("--max-fit-samples", options.max_fit_samples, "fits run on every k-th sample of the runs, at most this many")
-      ->capture_default_str();
-  app.add_option("--threads", options.threads, "worker threads (0: every core)")->capture_default_str();
+      ->check(CLI::Range(std::size_t{1000}, std::size_t{100'000'000}))->capture_default_str();
+  app.add_option("--threads", options.threads, "worker threads (0: every core)")
+      ->check(CLI::Range(0u, 1024u))->capture_default_str();
   app.add_option("--seed", options.seed, "seed of the swarms")->capture_default_str();
   bool quiet = false;
   app.add_flag("--quiet,-q", quiet, "no progress line on stderr (it shows only when stderr is a terminal)");
@@ -89,7 +95,13 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "mrd-residual: --reference-spencer-dyke takes one run\n");
     return mrd::cli::kUsage;
   }
-  if (!plot_dir.empty() && !mrd::cli::prepare_output_directory("mrd-residual", plot_dir)) return mrd::cli::kIo;
+  // Every output is checked before the work, which may take minutes.
+  for (const std::string* file : {&json_path, &config_out}) {
+    if (!mrd::cli::check_output_file("mrd-residual", *file)) return mrd::cli::kIo;
+  }
+  for (const std::string* dir : {&plot_dir, &report_dir}) {
+    if (!dir->empty() && !mrd::cli::prepare_output_directory("mrd-residual", *dir)) return mrd::cli::kIo;
+  }
   options.start = config->config.law.damper;
   try {
     const mrd::record::RunReadOptions read = run_options.read_options(*config);
@@ -112,11 +124,17 @@ int main(int argc, char** argv) {
     }
     int status = 0;
     const ForceFitFigures fit = force_fit_figures(residual_traces(runs, series, result));
+    std::fputs(per_run_text(fit).c_str(), stdout);
     if (!json_path.empty() && !mrd::record::write_text_file(json_path, residual_json(result, &fit))) {
       std::fprintf(stderr, "mrd-residual: cannot write %s\n", json_path.c_str());
       status = mrd::cli::kIo;
     }
-    if (!config_out.empty()) {
+    if (!config_out.empty() && !result.unphysical.empty() && !accept_unphysical) {
+      std::fprintf(stderr, "mrd-residual: --write-config: %s not written: %zu parameter(s) outside what a damper has "
+                   "(listed as 'unphysical:' above); --accept-unphysical writes it anyway\n",
+                   config_out.c_str(), result.unphysical.size());
+      status = mrd::cli::kBadInput;
+    } else if (!config_out.empty()) {
       const std::string text = run_options.config_path().empty()
                                    ? std::string(mrd::config::default_config_text())
                                    : mrd::record::read_text_file(run_options.config_path());

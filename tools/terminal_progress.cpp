@@ -7,7 +7,8 @@
 
 namespace mrd::tools {
 
-TerminalProgress::TerminalProgress(std::FILE* out) : out_(out), start_(std::chrono::steady_clock::now()) {}
+TerminalProgress::TerminalProgress(std::FILE* out, Clock clock)
+    : out_(out), clock_(std::move(clock)), start_(clock_()) {}
 
 TerminalProgress::~TerminalProgress() {
   if (shown_) std::fputs("\n", out_);
@@ -15,7 +16,13 @@ TerminalProgress::~TerminalProgress() {
 
 void TerminalProgress::report(const ProgressReport& r) {
   const std::lock_guard lock(mutex_);
-  const auto now = std::chrono::steady_clock::now();
+  const auto now = clock_();
+  if (r.stage != stage_ || r.round != stage_round_) {
+    stage_ = std::string(r.stage);
+    stage_round_ = r.round;
+    stage_start_ = now;
+    stage_done_ = r.done;
+  }
   const bool last_of_stage = r.total > 0 && r.done >= r.total;
   if (shown_ && !last_of_stage && now - last_ < std::chrono::milliseconds(100)) return;
   last_ = now;
@@ -29,6 +36,12 @@ void TerminalProgress::report(const ProgressReport& r) {
   if (r.total > 0) {
     std::snprintf(part, sizeof part, " (%lld/%lld)", static_cast<long long>(r.done), static_cast<long long>(r.total));
     line += part;
+    // The rest of the stage at the pace since its first report.
+    if (r.done > stage_done_ && r.done < r.total) {
+      const double pace = std::chrono::duration<double>(now - stage_start_).count() / static_cast<double>(r.done - stage_done_);
+      std::snprintf(part, sizeof part, ", about %.0f s left", pace * static_cast<double>(r.total - r.done));
+      line += part;
+    }
   }
   if (std::isfinite(r.best_error)) {
     std::snprintf(part, sizeof part, ", best %.4g %.*s", r.best_error, static_cast<int>(r.unit.size()),

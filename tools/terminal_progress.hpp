@@ -1,20 +1,25 @@
 #pragma once
 
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <mutex>
+#include <string>
 
 #include "tools/progress.hpp"
 
 namespace mrd::tools {
 
 // The progress of a long job as one status line on stderr, rewritten at most ten times a second
-// with the elapsed time: round, candidate, best error. Scripts and tests see nothing: it is
+// with the elapsed time: round, candidate, count and total, the time the stage still needs at
+// its pace so far, best error. Scripts and tests see nothing: it is
 // made only when stderr is a terminal and the user did not ask for --quiet.
 class TerminalProgress final : public ProgressSink {
  public:
-  explicit TerminalProgress(std::FILE* out);
+  using Clock = std::function<std::chrono::steady_clock::time_point()>;
+  explicit TerminalProgress(std::FILE* out, Clock clock = &std::chrono::steady_clock::now);
   ~TerminalProgress() override;  // ends the status line
   TerminalProgress(const TerminalProgress&) = delete;
   TerminalProgress& operator=(const TerminalProgress&) = delete;
@@ -26,8 +31,14 @@ class TerminalProgress final : public ProgressSink {
 
  private:
   std::FILE* out_;
+  Clock clock_;
   std::mutex mutex_;
   const std::chrono::steady_clock::time_point start_;
+  // The stage (and round) in progress: when its first report came and how much was done then.
+  std::string stage_;
+  int stage_round_ = 0;
+  std::chrono::steady_clock::time_point stage_start_{};
+  std::int64_t stage_done_ = 0;
   std::chrono::steady_clock::time_point last_{};
   bool shown_ = false;
 };

@@ -1,6 +1,9 @@
 #include "tools/toml_patch.hpp"
 
 #include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <optional>
 #include <sstream>
@@ -202,6 +205,28 @@ std::string patch_toml(std::string_view text, const toml::table& values) {
     throw std::runtime_error("the patched config does not parse: " + std::string(e.description()));
   }
   return patch.text();
+}
+
+namespace {
+
+void round_node(toml::node& node, int digits) {
+  if (auto* d = node.as_floating_point()) {
+    const double x = d->get();
+    if (!std::isfinite(x) || x == 0.0) return;
+    char buffer[40];
+    std::snprintf(buffer, sizeof buffer, "%.*g", digits, x);
+    *d = std::strtod(buffer, nullptr);
+  } else if (auto* t = node.as_table()) {
+    for (auto&& [key, child] : *t) round_node(child, digits);
+  } else if (auto* a = node.as_array()) {
+    for (toml::node& child : *a) round_node(child, digits);
+  }
+}
+
+}  // namespace
+
+void round_floats(toml::table& values, int digits) {
+  for (auto&& [key, child] : values) round_node(child, digits);
 }
 
 }  // namespace mrd::tools

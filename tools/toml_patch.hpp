@@ -34,6 +34,10 @@ class TomlPatch {
 // A value as TOML writes it; doubles in the shortest form that reads back to the same bits.
 [[nodiscard]] std::string toml_value_text(const toml::node& value);
 
+// Every floating-point leaf of `values` (arrays and inner tables too) rounded to `digits`
+// significant digits: fitted values are written as far as they mean anything, not to 17 digits.
+void round_floats(toml::table& values, int digits = 7);
+
 // `text` with every leaf of `values` set (TomlPatch::set_all); checked to parse.
 [[nodiscard]] std::string patch_toml(std::string_view text, const toml::table& values);
 

@@ -2,7 +2,9 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 
 namespace mrd::cli {
@@ -28,11 +30,72 @@ void set_up(CLI::App& app, std::string_view program) {
   app.footer(exit_code_footer());
 }
 
+namespace {
+
+// CLI11 says "Could not convert: --threshold = abc"; an engineer reads "not a number".
+std::optional<std::string> not_a_number(const CLI::ConversionError& e) {
+  const std::string text = e.what();
+  const std::string prefix = "Could not convert: ";
+  const auto eq = text.find(" = ");
+  if (!text.starts_with(prefix) || eq == std::string::npos) return std::nullopt;
+  return text.substr(prefix.size(), eq - prefix.size()) + ": '" + text.substr(eq + 3) + "' is not a number";
+}
+
+}  // namespace
+
+CLI::Validator finite_in(double lo, double hi) {
+  char range[96];
+  std::snprintf(range, sizeof range, "in [%g, %g]", lo, hi);
+  return CLI::Validator(
+      [lo, hi, range = std::string(range)](std::string& text) {
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        if (end == text.c_str() || *end != '\0') return "'" + text + "' is not a number";
+        if (!std::isfinite(v) || v < lo || v > hi) return text + " is not " + range;
+        return std::string();
+      },
+      "FLOAT " + std::string(range));
+}
+
+bool check_output_file(std::string_view program, const std::string& file) {
+  namespace fs = std::filesystem;
+  if (file.empty()) return true;
+  std::error_code ec;
+  const fs::path path(file);
+  const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  if (fs::is_directory(path, ec)) {
+    ec = std::make_error_code(std::errc::is_a_directory);
+  } else if (fs::exists(path, ec)) {
+    if (::access(file.c_str(), W_OK) != 0) ec = std::error_code(errno, std::generic_category());
+  } else if (!fs::exists(folder, ec)) {
+    // A plain file on the way reads as "not a folder", the rest as "no such folder".
+    fs::path up = folder;
+    while (up.has_parent_path() && !fs::exists(up, ec) && up != up.parent_path()) up = up.parent_path();
+    ec = fs::exists(up, ec) && !fs::is_directory(up, ec) ? std::make_error_code(std::errc::not_a_directory)
+                                                         : std::make_error_code(std::errc::no_such_file_or_directory);
+  } else if (!fs::is_directory(folder, ec)) {
+    ec = std::make_error_code(std::errc::not_a_directory);
+  } else if (::access(folder.c_str(), W_OK | X_OK) != 0) {
+    ec = std::error_code(errno, std::generic_category());
+  }
+  if (!ec) return true;
+  std::fprintf(stderr, "%.*s: cannot write %s: %s\n", static_cast<int>(program.size()), program.data(), file.c_str(),
+               ec.message().c_str());
+  return false;
+}
+
 std::optional<int> parse(CLI::App& app, int argc, const char* const* argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --help-all, --version
     return app.exit(e);
+  } catch (const CLI::ConversionError& e) {
+    if (const auto why = not_a_number(e)) {
+      std::fprintf(stderr, "%s\nRun with --help for more information.\n", why->c_str());
+      return kUsage;
+    }
+    app.exit(e);
+    return kUsage;
   } catch (const CLI::Error& e) {
     app.exit(e);  // prints the message and the hint to run --help
     return kUsage;

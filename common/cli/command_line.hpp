@@ -26,6 +26,15 @@ void set_up(CLI::App& app, std::string_view program);
 // kUsage after a parse or validation error (CLI11's own codes would be 105, 109, ...).
 [[nodiscard]] std::optional<int> parse(CLI::App& app, int argc, const char* const* argv);
 
+// Checks, before the work, that FILE can be written: not a folder, its folder there and writable
+// (or the file itself writable). False, with "<program>: cannot write FILE: <reason>" on stderr
+// (the system's reason: a folder, no such folder, permission denied): exit with kIo then.
+[[nodiscard]] bool check_output_file(std::string_view program, const std::string& file);
+
+// A validator for a finite number in [lo, hi] ("--threshold: 1.5 is not in [0, 0.99]"); CLI11's
+// own Range lets nan and inf through the conversion of some options.
+[[nodiscard]] CLI::Validator finite_in(double lo, double hi);
+
 // Creates the folder (and its parents) for --out or --plot. False, with the reason on stderr
 // prefixed by the program's name, when it cannot be created or written: exit with kIo then.
 [[nodiscard]] bool prepare_output_directory(std::string_view program, const std::string& directory);

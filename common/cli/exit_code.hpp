@@ -9,6 +9,7 @@ enum ExitCode : int {
   kUsage = 1,     // a bad command line or config (CLI11's parse errors among them)
   kBadInput = 2,  // an input file (or, for --probe, the readings) that is malformed or wrong
   kIo = 3,        // a file, folder or bus that cannot be opened or written
+  kEndedSafe = 4, // mrd-controller: the run ended in SAFE through a fault, not through the stop
 };
 
 }  // namespace mrd::cli

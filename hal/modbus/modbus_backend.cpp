@@ -88,6 +88,25 @@ StartResult ModbusBackend::start() {
 
 void ModbusBackend::stop() { thread_.stop(); }
 
+std::string ModbusBackend::endpoint() const {
+  const std::string slave = " (slave " + std::to_string(config_.slave_id) + ")";
+  if (config_.transport == Transport::kTcp) return config_.tcp.host + ":" + std::to_string(config_.tcp.port) + slave;
+  const RtuConfig& rtu = config_.rtu;
+  return rtu.device + " " + std::to_string(rtu.baud) + " " + std::to_string(rtu.data_bits) + rtu.parity +
+         std::to_string(rtu.stop_bits) + slave;
+}
+
+std::optional<std::string> ModbusBackend::link_problem() const {
+  if (connected()) return std::nullopt;
+  const ModbusCounters c = counters();
+  const std::uint64_t attempts = c[ModbusEvent::kConnectFailures];
+  if (attempts == 0 && c[ModbusEvent::kDisconnects] == 0) return std::nullopt;
+  std::string text = endpoint() + ": " + modbus_strerror(last_errno());
+  if (attempts > 0) text += ", " + std::to_string(attempts) + " failed connect attempt" + (attempts == 1 ? "" : "s");
+  text += c[ModbusEvent::kConnects] == 0 ? ", never connected" : ", link lost";
+  return text;
+}
+
 std::optional<DisplacementSample> ModbusBackend::latest() { return samples_.pop_latest(); }
 
 std::optional<DemandSample> ModbusBackend::latest_demand() { return demands_.pop_latest(); }

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 
 #include "hal/clock.hpp"
@@ -90,6 +91,15 @@ class ModbusBackend final : public DisplacementSource,
   [[nodiscard]] IoThread& io_thread() { return thread_; }
   [[nodiscard]] bool connected() const { return connected_.load(std::memory_order_relaxed); }
   [[nodiscard]] int last_errno() const { return last_errno_.load(std::memory_order_relaxed); }
+  // Where the device is: "127.0.0.1:1502 (slave 1)" or "/dev/ttyUSB0 19200 8N1 (slave 1)".
+  [[nodiscard]] std::string endpoint() const;
+  // Why the link is down, as mbpoll would say it ("127.0.0.1:1502 (slave 1): Connection refused,
+  // 7 connect attempts, never connected"); nullopt while it is up or before the first attempt.
+  [[nodiscard]] std::optional<std::string> link_problem() const;
+  // Whether the link is down and never came up since start(): the bus, not the device's data.
+  [[nodiscard]] bool never_connected() const {
+    return !connected() && counters_.get(ModbusEvent::kConnects) == 0 && counters_.get(ModbusEvent::kConnectFailures) > 0;
+  }
 
  private:
   enum class Outcome { kOk, kDeviceRefused, kLinkFailed };

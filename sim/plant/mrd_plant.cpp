@@ -237,7 +237,7 @@ int main(int argc, char** argv) {
   app.add_option("--check-config", check_path, "validate FILE, print every problem, exit 0 or 1");
   app.add_option("--duration", overrides.duration,
                  "run this many seconds (overrides plant.duration; 0: until SIGTERM)")
-      ->check(CLI::Range(0.0, 1e7));
+      ->check(mrd::cli::finite_in(0.0, 1e7));
   app.add_option("--port", overrides.port, "Modbus TCP port (overrides modbus.port; 0: any free port, printed)")
       ->check(CLI::Range(0, 65535));
   app.add_option("--log", overrides.log_path, "recorded-run CSV (overrides plant.log)");

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "common/cli/exit_code.hpp"
 #include "control/supervisor.hpp"
 #include "model/current_schedule.hpp"
 #include "tests/hil/child_process.hpp"
@@ -25,11 +26,12 @@ inline bool fresh_with_demand(const TelemetryRow& r) { return fresh(r) && r.dema
 // A period the supervisor counts towards stale_periods: no fresh sample (overruns aside).
 inline bool no_sample(const TelemetryRow& r) { return r.sample != "fresh"; }
 
-// The run was made, both processes exited with 0, and the telemetry has rows (callers wrap it
-// in ASSERT_NO_FATAL_FAILURE).
-inline void expect_processes_ran(const HilResult& r) {
+// The run was made, the plant exited with 0 and the controller with `controller_exit` (a run
+// that ends in SAFE through a fault: cli::kEndedSafe), and the telemetry has rows (callers wrap
+// it in ASSERT_NO_FATAL_FAILURE).
+inline void expect_processes_ran(const HilResult& r, int controller_exit = cli::kOk) {
   ASSERT_TRUE(r.failure.empty()) << r.failure;
-  EXPECT_EQ(r.controller_exit, 0) << r.controller_output;
+  EXPECT_EQ(r.controller_exit, controller_exit) << r.controller_output;
   EXPECT_EQ(r.plant_exit, 0) << r.plant_output;
   ASSERT_FALSE(r.telemetry.empty());
 }

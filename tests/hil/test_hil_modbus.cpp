@@ -314,7 +314,8 @@ TEST(HilModbus, ForceModeFollowsThePlantsDemandAndAStaleDemandTripsSafe) {
            "[faults.quiet]\nkind = \"demand_stale\"\nstart = 2.0\n",
        4.0, true, {}});
   SCOPED_TRACE(diagnosis(r));
-  ASSERT_NO_FATAL_FAILURE(expect_processes_ran(r));
+  ASSERT_NO_FATAL_FAILURE(expect_processes_ran(r, mrd::cli::kEndedSafe));
+  EXPECT_NE(r.controller_output.find("the run ended in SAFE through demand_stale, not the stop"), std::string::npos);
   const auto& safety = force_safety();
   const std::size_t run_at = expect_first_run(r, safety, fresh_with_demand);
   const std::size_t safe = first_in(r, SupervisorState::kSafe, 0.0);

@@ -366,7 +366,8 @@ TEST_F(HilVm, ForceModeOverVcanTripsSafeWhenTheDemandStops) {
                                "[faults.quiet]\nkind = \"demand_stale\"\nstart = 1.0\n",
                                2.0, false, {}});
   SCOPED_TRACE(diagnosis(r));
-  ASSERT_NO_FATAL_FAILURE(expect_processes_ran(r));
+  ASSERT_NO_FATAL_FAILURE(expect_processes_ran(r, mrd::cli::kEndedSafe));
+  EXPECT_NE(r.controller_output.find("the run ended in SAFE through demand_stale, not the stop"), std::string::npos);
   const std::size_t run_at = expect_first_run(r, force_safety, fresh_with_demand);
   // The demand was c v, not the idle 0: the sine's peak c v is 31.4 kN.
   double peak = 0.0;

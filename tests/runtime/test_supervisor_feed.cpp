@@ -53,6 +53,28 @@ TEST(SupervisorFeed, EachTransitionIsOneEventWithTheStateItLeft) {
   EXPECT_TRUE(drain(feed).empty());
 }
 
+// The exit status reads what took the loop into the SAFE it ended in: a fault before the stop
+// stays the cause through the shutdown cycle; SAFE entered by the stop is the stop's.
+TEST(SupervisorFeed, TheCauseOfTheSafeStateIsKeptWhileItLasts) {
+  SupervisorFeed feed;
+  EXPECT_EQ(feed.safe_cause(), Trigger::kNone);
+  feed.publish(record(1, SupervisorState::kSafe, Trigger::kLinkTimeout));
+  EXPECT_EQ(feed.safe_cause(), Trigger::kLinkTimeout);
+  feed.publish(record(2, SupervisorState::kSafe));
+  feed.publish(record(3, SupervisorState::kSafe, Trigger::kShutdown));
+  EXPECT_EQ(feed.safe_cause(), Trigger::kLinkTimeout);
+  feed.publish(record(4, SupervisorState::kRun, Trigger::kGoodPeriods));
+  EXPECT_EQ(feed.safe_cause(), Trigger::kNone);
+  // The supervisor's own sequence: RUN -> SAFE on a fault, then the shutdown cycle in SAFE
+  // carries no trigger of its own.
+  feed.publish(record(5, SupervisorState::kSafe, Trigger::kDriverFault));
+  feed.publish(record(6, SupervisorState::kSafe));
+  EXPECT_EQ(feed.safe_cause(), Trigger::kDriverFault);
+  feed.publish(record(7, SupervisorState::kRun, Trigger::kGoodPeriods));
+  feed.publish(record(8, SupervisorState::kSafe, Trigger::kShutdown));
+  EXPECT_EQ(feed.safe_cause(), Trigger::kShutdown);
+}
+
 TEST(SupervisorFeed, TheLatchIsPublishedWithTheStateAndClearsWithIt) {
   SupervisorFeed feed;
   EXPECT_FALSE(feed.latched());

@@ -54,6 +54,27 @@ TEST(TerminalProgress, HoldsBackReportsWithin100MsButNotTheLastOfAStage) {
   EXPECT_LT(lines, 10u) << text;
 }
 
+// The time left in a stage at its pace so far, on an injected clock: 2 of 10 candidates in the 8 s
+// after the stage's first report leave 6 to go at 4 s each.
+TEST(TerminalProgress, EstimatesTheStagesTimeLeftFromItsPace) {
+  std::FILE* file = std::tmpfile();
+  ASSERT_NE(file, nullptr);
+  std::chrono::steady_clock::time_point now{};
+  {
+    mrd::tools::TerminalProgress progress(file, [&] { return now; });
+    progress.report({.stage = "round", .round = 1, .done = 2, .total = 10});
+    now += std::chrono::seconds(8);
+    progress.report({.stage = "round", .round = 1, .done = 4, .total = 10});
+    now += std::chrono::seconds(1);
+    progress.report({.stage = "round", .round = 2, .done = 1, .total = 10});  // a new stage: no pace yet
+  }
+  const std::string text = read_back(file);
+  std::fclose(file);
+  EXPECT_NE(text.find("[    8.0 s] round 1 (4/10), about 24 s left"), std::string::npos) << text;
+  EXPECT_EQ(text.find("(2/10), about"), std::string::npos) << text;
+  EXPECT_NE(text.find("round 2 (1/10)\n"), std::string::npos) << text;
+}
+
 TEST(TerminalProgress, NoneWhenQuietOrStderrIsNotATerminal) {
   EXPECT_EQ(mrd::tools::TerminalProgress::on_stderr(true), nullptr);
   if (isatty(2) != 1) EXPECT_EQ(mrd::tools::TerminalProgress::on_stderr(false), nullptr);

@@ -81,6 +81,21 @@ TEST(TomlPatch, DoublesReadBackToTheSameBits) {
   EXPECT_TRUE(toml::parse(out)["whole"].is_floating_point()) << out;  // 3.0, not 3
 }
 
+// Fitted values go out at 7 significant digits wherever they sit; integers, booleans and
+// exact zeros stay as they are.
+TEST(TomlPatch, FloatsRoundToSevenSignificantDigitsAtEveryDepth) {
+  toml::table values = toml::parse(
+      "v = 6.852856037433653e-54\nn = 3\nz = 0.0\n[t]\nw = 1234567.891\nlist = [0.1234567891, true]\n");
+  mrd::tools::round_floats(values);
+  EXPECT_EQ(values["v"].value<double>(), 6.852856e-54);
+  EXPECT_EQ(values["n"].value<std::int64_t>(), 3);
+  EXPECT_EQ(values["z"].value<double>(), 0.0);
+  EXPECT_EQ(values["t"]["w"].value<double>(), 1234568.0);
+  EXPECT_EQ(values["t"]["list"][0].value<double>(), 0.1234568);
+  EXPECT_EQ(values["t"]["list"][1].value<bool>(), true);
+  EXPECT_EQ(mrd::tools::patch_toml("v = 1.0\n", values).find("v = 6.852856e-54\n"), 0u);
+}
+
 TEST(TomlPatch, AStringWithAHashIsNotACommentAndAnArrayOfTablesIsLeftAlone) {
   const std::string text = "name = \"a # b\" # note\n[[runs]]\nx = 1\n";
   const std::string out = patch_toml(text, patch_values("name = \"c\"\n"));

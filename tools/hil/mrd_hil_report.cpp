@@ -19,11 +19,11 @@
 namespace {
 
 std::string plot_script(const std::string& data, const std::string& png) {
-  return "set terminal pngcairo size 1000,700 font ',11'\n"
+  return "set terminal pngcairo noenhanced size 1000,700 font ',11'\n"
          "set output '" + png + "'\n"
          "set datafile separator ','\n"
          "set title 'mrd-controller against mrd-plant: force against displacement'\n"
-         "set xlabel 'displacement [mm]'\nset ylabel 'force [kN]'\nset grid\nset key left top\n"
+         "set xlabel 'displacement [mm]'\nset ylabel 'force [kN]'\nset grid\nset key below horizontal\n"
          "plot '" + data + "' using 1:2 with lines lw 2 lc rgb '#888888' title "
          "'plant (true force)', '' using 1:3 with lines lc rgb '#1f77b4' title "
          "'controller observer'\n";

@@ -1,9 +1,11 @@
 #include "tools/identification/identify_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "tools/gnuplot.hpp"
@@ -126,21 +128,26 @@ std::string plot_identification(const IdentifyResult& r, const BHObjective& obje
       out << "\n\n";
     }
     std::ofstream conv(convergence_file);
-    for (const auto& c : r.search.convergence) conv << c.evaluations << ' ' << c.best_fitness << '\n';
+    double global = std::numeric_limits<double>::infinity();
+    for (const auto& c : r.search.convergence) {
+      global = std::min(global, c.best_fitness);
+      conv << c.evaluations << ' ' << global << ' ' << c.best_fitness << '\n';
+    }
   }
   const std::string label = std::string(algorithm_name(r.algorithm)) + (r.polish ? " + LM" : "");
   std::ostringstream gp;
-  gp << "set terminal pngcairo size 900,650\n"
+  gp << "set terminal pngcairo noenhanced size 900,650\n"
      << "set output '" << (fs::path(directory) / "identify_bh.png").string() << "'\n"
      << "set title 'B-H loops: measured and fitted (" << label << ", RMSE "
      << format("%.9g", r.polish ? r.polish->rmse : r.fit.rmse) << " T)' noenhanced\n"
-     << "set xlabel 'H [A/m]'\nset ylabel 'B [T]'\nset grid\nset key left top\n"
+     << "set xlabel 'H [A/m]'\nset ylabel 'B [T]'\nset grid\nset key below horizontal\n"
      << "plot '" << loops_file << "' using 1:2 with points pt 7 ps 0.4 title 'measured', '"
      << loops_file << "' using 1:3 with lines lw 2 title 'J-A fit'\n"
      << "set output '" << (fs::path(directory) / "identify_convergence.png").string() << "'\n"
      << "set title 'Convergence (" << label << ")' noenhanced\n"
      << "set xlabel 'evaluations'\nset ylabel 'best fitness [T]'\nset logscale y\n"
-     << "plot '" << convergence_file << "' using 1:2 with steps lw 2 title 'global best'\n";
+     << "plot '" << convergence_file << "' using 1:3 with steps lw 1 lc rgb '#9ecae1' title 'best of the search box in use', '"
+     << convergence_file << "' using 1:2 with steps lw 2 lc rgb '#1f77b4' title 'global best'\n";
   return run_gnuplot(gp.str());
 }
 
@@ -210,15 +217,20 @@ std::string write_identify_report(const IdentifyResult& r, const IdentifyStatist
                            format("autocorrelation of the B residual, 95 %% bounds +-%.3g",
                                   autocorrelation_bound_95(point_residual.size())));
   report.heading("Convergence");
-  std::vector<double> evaluations, fitness;
+  // The search restarts its box now and then; the global best is the best of all boxes so far
+  // and never rises, the box's own best may.
+  std::vector<double> evaluations, fitness, box;
   for (const auto& c : r.search.convergence) {
     evaluations.push_back(static_cast<double>(c.evaluations));
-    fitness.push_back(c.best_fitness);
+    box.push_back(c.best_fitness);
+    fitness.push_back(fitness.empty() ? c.best_fitness : std::min(fitness.back(), c.best_fitness));
   }
-  const std::string conv = report.data("convergence", {"evaluations", "best_fitness_T"}, {&evaluations, &fitness});
+  const std::string conv =
+      report.data("convergence", {"evaluations", "best_fitness_T", "box_best_fitness_T"}, {&evaluations, &fitness, &box});
   report.plot("convergence", "best fitness of the global search against model evaluations",
               "set xlabel 'evaluations'\nset ylabel 'best fitness [T]'\nset logscale y\nplot '" + conv +
-                  "' using 1:2 with steps lw 2 title 'global best'\n");
+                  "' using 1:3 with steps lw 1 lc rgb '#9ecae1' title 'best of the search box in use', '" + conv +
+                  "' using 1:2 with steps lw 2 lc rgb '#1f77b4' title 'global best'\n");
   report.provenance(provenance);
   return report.write();
 }

@@ -184,7 +184,7 @@ std::string plot_replay(const ReplayContext& c, const std::string& directory) {
                                            : "";
   auto png = [&](const char* file) { return (fs::path(directory) / file).string(); };
   std::ostringstream gp;
-  gp << "set terminal pngcairo size 900,650\nset grid\nset key left top\n"
+  gp << "set terminal pngcairo noenhanced size 900,650\nset grid\nset key below horizontal\n"
      << "set output '" << png("replay_force_displacement.png") << "'\n"
      << "set title '" << name << ": force against displacement" << error << "' noenhanced\n"
      << "set xlabel 'displacement [mm]'\nset ylabel 'force [N]'\n"

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <string_view>
 
+#include "common/cli/command_line.hpp"
 #include "record/csv.hpp"
 #include "record/run_columns.hpp"
 
@@ -29,14 +30,17 @@ void RunOptionsCli::add_to(CLI::App& app) {
             }
           },
           "MAPPING"));
-  current_option_ = app.add_option("--current", current_, "constant coil current of the run [A]");
+  current_option_ = app.add_option("--current", current_, "constant coil current of the run [A]")
+                        ->check(cli::finite_in(-1000.0, 1000.0));
   auto* from_name = app.add_flag("--current-from-name", current_from_name_,
                                  "read the constant current from the file name (25mm0x25Hz0x5A.txt: 0.5 A)");
   current_option_->excludes(from_name);
-  rate_option_ = app.add_option("--sample-rate", sample_rate_, "[Hz], for files without a time column");
+  rate_option_ = app.add_option("--sample-rate", sample_rate_, "[Hz], for files without a time column")
+                     ->check(cli::finite_in(1.0, 1e6));
   app.add_option("--config", config_path_, "the controller's TOML config (default: the embedded one)");
   gain_option_ = app.add_option("--amps-per-volt", amps_per_volt_,
-                                "current driver gain [A/V], for runs that logged its command voltage");
+                                "current driver gain [A/V], for runs that logged its command voltage")
+                     ->check(cli::finite_in(1e-6, 1e6));
 }
 
 std::optional<config::LoadedConfig> RunOptionsCli::load_config() const {

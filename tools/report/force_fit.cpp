@@ -10,12 +10,71 @@ namespace mrd::tools {
 
 namespace {
 
-std::vector<double> kept_residual(const ForceFitTraces& t) {
+// The samples [from, to) of one run.
+struct RunSpan {
+  std::size_t from = 0;
+  std::size_t to = 0;
+};
+
+std::vector<RunSpan> run_spans(const ForceFitTraces& t) {
+  std::vector<RunSpan> out;
+  if (t.run_starts.size() < 2) return {{0, t.measured.size()}};
+  for (std::size_t r = 0; r < t.run_starts.size(); ++r)
+    out.push_back({t.run_starts[r], r + 1 < t.run_starts.size() ? t.run_starts[r + 1] : t.measured.size()});
+  return out;
+}
+
+std::vector<double> kept_residual(const ForceFitTraces& t, RunSpan span) {
   std::vector<double> e;
-  e.reserve(t.measured.size());
-  for (std::size_t i = 0; i < t.measured.size(); ++i)
+  e.reserve(span.to - span.from);
+  for (std::size_t i = span.from; i < span.to; ++i)
     if (t.keep.empty() || t.keep[i]) e.push_back(t.measured[i] - t.predicted[i]);
   return e;
+}
+
+std::vector<double> kept_residual(const ForceFitTraces& t) { return kept_residual(t, {0, t.measured.size()}); }
+
+double rms_of(const std::vector<double>& e, double& max_abs) {
+  double sum = 0.0;
+  for (const double x : e) {
+    sum += x * x;
+    max_abs = std::max(max_abs, std::abs(x));
+  }
+  return e.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(e.size()));
+}
+
+double share_outside(const std::vector<double>& r, double bound) {
+  std::size_t outside = 0;
+  for (std::size_t k = 1; k < r.size(); ++k) outside += std::abs(r[k]) > bound ? 1 : 0;
+  return r.size() > 1 ? static_cast<double>(outside) / static_cast<double>(r.size() - 1) : 0.0;
+}
+
+double step_of(const ForceFitTraces& t, RunSpan span) {
+  return span.to > span.from + 1 ? (t.time[span.to - 1] - t.time[span.from]) / static_cast<double>(span.to - span.from - 1)
+                                 : 0.0;
+}
+
+// The runs' autocorrelations averaged by their kept samples: each at its own step, so a
+// residual's correlation is never measured across a boundary or at another run's rate.
+std::vector<double> pooled_autocorrelation(const ForceFitTraces& t, std::size_t lags, std::size_t& samples) {
+  std::vector<double> pooled;
+  samples = 0;
+  // A run too short for every lag (one mostly screened out) would cut the others' lags: it is
+  // left out whenever a run long enough exists.
+  const std::vector<RunSpan> spans = run_spans(t);
+  bool any_long = false;
+  for (const RunSpan span : spans) any_long = any_long || kept_residual(t, span).size() > 4 * lags;
+  for (const RunSpan span : spans) {
+    const std::vector<double> e = kept_residual(t, span);
+    if (any_long && e.size() <= 4 * lags) continue;
+    const std::vector<double> r = autocorrelation(e, lags);
+    if (r.empty()) continue;
+    if (pooled.empty() || r.size() < pooled.size()) pooled.resize(r.size());
+    for (std::size_t k = 0; k < pooled.size(); ++k) pooled[k] += static_cast<double>(e.size()) * r[k];
+    samples += e.size();
+  }
+  for (double& r : pooled) r /= static_cast<double>(std::max<std::size_t>(samples, 1));
+  return pooled;
 }
 
 }  // namespace
@@ -25,34 +84,62 @@ ForceFitFigures force_fit_figures(const ForceFitTraces& t, std::size_t lags) {
   f.fit_percent = nrmse_fit_percent(t.measured, t.predicted, t.keep);
   f.baseline_fit_percent = t.baseline.empty() ? std::numeric_limits<double>::quiet_NaN()
                                               : nrmse_fit_percent(t.measured, t.baseline, t.keep);
-  const std::vector<double> e = kept_residual(t);
-  double sum = 0.0;
-  for (const double x : e) {
-    sum += x * x;
-    f.max_N = std::max(f.max_N, std::abs(x));
-  }
-  f.rms_N = e.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(e.size()));
-  const std::vector<double> r = autocorrelation(e, lags);
+  f.rms_N = rms_of(kept_residual(t), f.max_N);
+  std::size_t samples = 0;
+  const std::vector<double> r = pooled_autocorrelation(t, lags, samples);
   f.lags = r.empty() ? 0 : r.size() - 1;
-  f.lag_step_s = t.time.size() > 1 ? (t.time.back() - t.time.front()) / static_cast<double>(t.time.size() - 1) : 0.0;
-  f.acf_bound = autocorrelation_bound_95(e.size());
-  std::size_t outside = 0;
-  for (std::size_t k = 1; k < r.size(); ++k) outside += std::abs(r[k]) > f.acf_bound ? 1 : 0;
-  f.acf_outside = f.lags > 0 ? static_cast<double>(outside) / static_cast<double>(f.lags) : 0.0;
+  f.acf_bound = autocorrelation_bound_95(samples);
+  f.acf_outside = share_outside(r, f.acf_bound);
+  const std::vector<RunSpan> spans = run_spans(t);
+  f.lag_step_s = step_of(t, spans.front());
+  if (t.run_starts.size() < 2) return f;
+  for (std::size_t k = 0; k < spans.size(); ++k) {
+    const RunSpan span = spans[k];
+    RunFitFigures run;
+    run.name = k < t.run_names.size() ? t.run_names[k] : "run " + std::to_string(k + 1);
+    const auto slice = [&](const std::vector<double>& v) { return std::vector<double>(v.begin() + span.from, v.begin() + span.to); };
+    std::vector<bool> keep = t.keep.empty() ? std::vector<bool>() : std::vector<bool>(t.keep.begin() + span.from, t.keep.begin() + span.to);
+    run.fit_percent = nrmse_fit_percent(slice(t.measured), slice(t.predicted), keep);
+    const std::vector<double> e = kept_residual(t, span);
+    run.samples = e.size();
+    run.rms_N = rms_of(e, run.max_N);
+    run.lag_step_s = step_of(t, span);
+    run.acf_outside = share_outside(autocorrelation(e, lags), autocorrelation_bound_95(e.size()));
+    // One lag step for all only when the runs share a rate (within 1 %).
+    if (std::abs(run.lag_step_s - f.lag_step_s) > 0.01 * f.lag_step_s) f.lag_step_s = 0.0;
+    f.runs.push_back(std::move(run));
+  }
   return f;
 }
 
 Json force_fit_json(const ForceFitFigures& f) {
-  return {{"fit_percent", f.fit_percent},   {"rms_N", f.rms_N},
-          {"max_N", f.max_N},               {"baseline_fit_percent", f.baseline_fit_percent},
-          {"acf_lags", f.lags},             {"acf_lag_step_s", f.lag_step_s},
-          {"acf_bound", f.acf_bound},       {"acf_outside_fraction", f.acf_outside}};
+  Json out = {{"fit_percent", f.fit_percent},   {"rms_N", f.rms_N},
+              {"max_N", f.max_N},               {"baseline_fit_percent", f.baseline_fit_percent},
+              {"acf_lags", f.lags},             {"acf_lag_step_s", f.lag_step_s},
+              {"acf_bound", f.acf_bound},       {"acf_outside_fraction", f.acf_outside}};
+  if (f.runs.empty()) return out;
+  Json runs = Json::array();
+  for (const RunFitFigures& r : f.runs)
+    runs.push_back({{"run", r.name}, {"samples", r.samples}, {"fit_percent", r.fit_percent}, {"rms_N", r.rms_N},
+                    {"max_N", r.max_N}, {"acf_lag_step_s", r.lag_step_s}, {"acf_outside_fraction", r.acf_outside}});
+  out["runs"] = runs;
+  return out;
 }
 
-void add_autocorrelation_plot(HtmlReport& report, const std::vector<double>& residual, std::size_t lags,
-                              double lag_step, const std::string& lag_label, const std::string& caption) {
-  const std::vector<double> r = autocorrelation(residual, lags);
-  const double bound = autocorrelation_bound_95(residual.size());
+std::string per_run_text(const ForceFitFigures& f) {
+  std::string out;
+  if (f.runs.empty()) return out;
+  out += "per run (final model, kept samples):\n";
+  for (const RunFitFigures& r : f.runs)
+    out += format("  %-40s fit %6.2f %%  RMS %9.4g N  max %9.4g N  %7zu samples at %.4g ms\n", r.name.c_str(), r.fit_percent,
+                  r.rms_N, r.max_N, r.samples, 1e3 * r.lag_step_s);
+  return out;
+}
+
+namespace {
+
+void plot_autocorrelation(HtmlReport& report, const std::vector<double>& r, double bound, double lag_step,
+                          const std::string& lag_label, const std::string& caption) {
   std::vector<double> lag(r.size()), upper(r.size(), bound), lower(r.size(), -bound);
   for (std::size_t k = 0; k < r.size(); ++k) lag[k] = static_cast<double>(k) * lag_step;
   const std::string acf = report.data("autocorrelation", {"lag", "r", "upper_95", "lower_95"}, {&lag, &r, &upper, &lower});
@@ -61,6 +148,28 @@ void add_autocorrelation_plot(HtmlReport& report, const std::vector<double>& res
                   "' using 1:2 with impulses lw 2 lc rgb '#1f77b4' title 'r(k)', '" + acf +
                   "' using 1:3 with lines dt 2 lc rgb '#d62728' title '95 % bound', '" + acf +
                   "' using 1:4 with lines dt 2 lc rgb '#d62728' notitle\n");
+}
+
+// Where one run ends and the next begins on a time axis: a dotted line each, named while
+// there are few enough to read.
+std::string run_boundaries(const ForceFitTraces& t) {
+  std::string out;
+  if (t.run_starts.size() < 2) return out;
+  for (std::size_t r = 0; r < t.run_starts.size(); ++r) {
+    const double at = t.time[t.run_starts[r]];
+    if (r > 0) out += format("set arrow from %.9g, graph 0 to %.9g, graph 1 nohead dt 3 lc rgb '#888888'\n", at, at);
+    if (t.run_starts.size() <= 8 && r < t.run_names.size())
+      out += format("set label '%s' at %.9g, graph 0.97 left front font ',8' noenhanced\n", t.run_names[r].c_str(), at);
+  }
+  return out;
+}
+
+}  // namespace
+
+void add_autocorrelation_plot(HtmlReport& report, const std::vector<double>& residual, std::size_t lags,
+                              double lag_step, const std::string& lag_label, const std::string& caption) {
+  plot_autocorrelation(report, autocorrelation(residual, lags), autocorrelation_bound_95(residual.size()), lag_step,
+                       lag_label, caption);
 }
 
 ForceFitFigures add_force_fit(HtmlReport& report, const ForceFitTraces& t) {
@@ -73,6 +182,15 @@ ForceFitFigures add_force_fit(HtmlReport& report, const ForceFitTraces& t) {
   };
   if (!t.baseline.empty()) rows.push_back({"fit of the " + t.baseline_label, "fit.baseline_fit_percent", f.baseline_fit_percent, "%"});
   report.figures("Fit (as MATLAB's compare: NRMSE fit)", rows);
+  if (!f.runs.empty()) {
+    std::vector<std::vector<std::string>> per_run;
+    for (const RunFitFigures& r : f.runs)
+      per_run.push_back({r.name, std::to_string(r.samples), format("%.2f", r.fit_percent), format("%.4g", r.rms_N),
+                         format("%.4g", r.max_N), format("%.4g", 1e3 * r.lag_step_s), format("%.0f", 100.0 * r.acf_outside)});
+    report.table("Per run (the JSON's fit.runs)",
+                 {"run", "kept samples", "fit [%]", "RMS [N]", "max [N]", "sample step [ms]", "lags outside the 95 % bound [%]"},
+                 per_run);
+  }
 
   const std::size_t n = t.measured.size();
   std::vector<double> x_mm(n), v_mm(n), residual(n), aside(n, NAN);
@@ -98,8 +216,10 @@ ForceFitFigures add_force_fit(HtmlReport& report, const ForceFitTraces& t) {
       out += format(", %s using %d:8 with points pt 6 ps 0.5 lc rgb '#ff7f0e' title 'set aside by screening'", q.c_str(), x);
     return out + "\n";
   };
+  const bool several = t.run_starts.size() > 1;
+  const char* time_label = several ? "time, each run after the one before [s]" : "time [s]";
   report.plot("force_time", format("%s: measured and predicted force against time, fit %.2f %%", t.name.c_str(), f.fit_percent),
-              overlay(1, "time [s]", "lines lw 1"));
+              run_boundaries(t) + overlay(1, time_label, "lines lw 1"));
   report.plot("force_displacement", t.name + ": force against displacement", overlay(2, "displacement [mm]", "points pt 7 ps 0.2"));
   report.plot("force_velocity", t.name + ": force against velocity", overlay(3, "velocity [mm/s]", "points pt 7 ps 0.2"));
 
@@ -110,12 +230,13 @@ ForceFitFigures add_force_fit(HtmlReport& report, const ForceFitTraces& t) {
                   {"95 % bound, 1.96/sqrt(N)", "fit.acf_bound", f.acf_bound, ""},
                   {"share of lags outside the bound", "fit.acf_outside_fraction", f.acf_outside, "(0 to 1)"}});
   report.plot("residual_time", t.name + ": residual, measured - predicted, against time",
-              "set xlabel 'time [s]'\nset ylabel 'residual [N]'\nplot " + q +
+              run_boundaries(t) + "set xlabel '" + time_label + "'\nset ylabel 'residual [N]'\nplot " + q +
                   " using 1:6 with lines lw 1 lc rgb '#1f77b4' title 'measured - predicted'\n");
-  std::vector<double> kept;
-  for (std::size_t i = 0; i < n; ++i)
-    if (t.keep.empty() || t.keep[i]) kept.push_back(residual[i]);
-  add_autocorrelation_plot(report, kept, f.lags, 1e3 * f.lag_step_s, "lag [ms]",
+  std::size_t pooled_samples = 0;
+  const std::vector<double> r = pooled_autocorrelation(t, f.lags, pooled_samples);
+  const bool in_ms = f.lag_step_s > 0.0;
+  plot_autocorrelation(report, r, f.acf_bound, in_ms ? 1e3 * f.lag_step_s : 1.0,
+                       in_ms ? "lag [ms]" : "lag [samples, each run at its own rate]",
                            format("%s: autocorrelation of the residual, 95 %% bounds +-%.3g (%.0f %% of lags outside)",
                                   t.name.c_str(), f.acf_bound, 100.0 * f.acf_outside));
   report.plot("residual_velocity", t.name + ": residual against velocity (structure left in the model)",

@@ -21,6 +21,21 @@ struct ForceFitTraces {
   std::vector<double> baseline;     // optional second prediction [N] (e.g. the base model)
   std::string baseline_label;
   std::vector<bool> keep;           // optional: false where screening set a sample aside
+  // Several runs analysed together: each one's first sample and name (empty: one run). `time`
+  // then runs on from one run to the next, each span the run's own seconds.
+  std::vector<std::size_t> run_starts;
+  std::vector<std::string> run_names;
+};
+
+// One run's share of the figures, at its own sample step.
+struct RunFitFigures {
+  std::string name;
+  std::size_t samples = 0;   // kept
+  double fit_percent = 0.0;
+  double rms_N = 0.0;
+  double max_N = 0.0;
+  double lag_step_s = 0.0;   // its own sample period
+  double acf_outside = 0.0;  // fraction of lags 1..lags with |r| above its own 95 % bound
 };
 
 struct ForceFitFigures {
@@ -32,12 +47,18 @@ struct ForceFitFigures {
   double lag_step_s = 0.0;
   double acf_bound = 0.0;    // 95 % bound, 1.96/sqrt(N)
   double acf_outside = 0.0;  // fraction of lags 1..lags with |r| above it
+  // With several runs: each run's figures; the autocorrelation above is then the runs' own,
+  // averaged by their kept samples, at lags in samples (lag_step_s is 0 when their rates differ).
+  std::vector<RunFitFigures> runs;
 };
 [[nodiscard]] ForceFitFigures force_fit_figures(const ForceFitTraces& t, std::size_t lags = 100);
 
 // The figures as the tools' JSON "fit" object: fit_percent, rms_N, max_N, baseline_fit_percent,
 // acf_lags, acf_lag_step_s, acf_bound, acf_outside_fraction. The report's cells name them "fit.*".
 [[nodiscard]] Json force_fit_json(const ForceFitFigures& f);
+
+// The per-run figures as text lines (none for one run), for the tools' summaries.
+[[nodiscard]] std::string per_run_text(const ForceFitFigures& f);
 
 // The plot "residual_autocorrelation": r(k) of `residual` for k = 0..lags as impulses, at lag
 // k * lag_step on an axis labelled `lag_label`, between the 95 % bounds +-1.96/sqrt(N).

@@ -184,7 +184,7 @@ std::string HtmlReport::write() {
     const fs::path gp = fs::path(directory_) / (p.name + ".gp");
     std::ofstream out(gp);
     out << "# " << p.caption << "\n# redraw: gnuplot " << p.name << ".gp (in this directory)\n"
-        << "set terminal svg size 860,440 font 'Helvetica,12' background '#ffffff'\n"
+        << "set terminal svg noenhanced size 860,440 font 'Helvetica,12' background '#ffffff'\n"
         << "set output '" << p.name << ".svg'\nset grid\nset key below horizontal noenhanced\n"
         << p.body << (p.body.empty() || p.body.back() == '\n' ? "" : "\n") << "unset output\n";
     if (!out) return "cannot write " + gp.string();

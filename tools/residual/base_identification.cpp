@@ -94,7 +94,7 @@ FittedModel refit_robustly(Search& s, ParameterSpace& space, FittedModel base, i
 }
 
 std::vector<std::string> describe_base(const ParameterSpace& space, const FittedModel& fit,
-                                       const model::DamperModel& start) {
+                                       const model::DamperModel& start, const SeriesScales& scales) {
   std::vector<std::string> lines;
   const model::DamperModel& m = fit.model;
   const model::BinghamDamper damper = fluid_of(m);
@@ -124,16 +124,7 @@ std::vector<std::string> describe_base(const ParameterSpace& space, const Fitted
       lines.push_back(format("the config's J-A material (a prior): k %.4g A/m, c %.3g, alpha %.4g",
                              start.jiles_atherton.k, start.jiles_atherton.c, start.jiles_atherton.alpha));
   }
-  // A coordinate on its range's edge: the run asks for more than the physical range allows.
-  const Point theta = fit.theta;
-  for (Eigen::Index i = 0; i < theta.size() && i < space.bounds.dimension(); ++i) {
-    const double span = space.bounds.upper[i] - space.bounds.lower[i];
-    const bool none_at_top = space.parameters[static_cast<std::size_t>(i)].starts_with("log10 yield saturation");
-    if (theta[i] <= space.bounds.lower[i] + 1e-3 * span || (!none_at_top && theta[i] >= space.bounds.upper[i] - 1e-3 * span))
-      lines.push_back(format("%s at the edge of its physical range [%.3g, %.3g]",
-                             space.parameters[static_cast<std::size_t>(i)].c_str(), space.bounds.lower[i],
-                             space.bounds.upper[i]));
-  }
+  for (std::string& edge : base_coordinates_at_edge(m, start, scales, Magnetics::kMaterial)) lines.push_back(std::move(edge));
   return lines;
 }
 

@@ -42,6 +42,6 @@ FittedModel refit_robustly(Search& s, ParameterSpace& space, FittedModel base, i
 // What the base fit found, one line each, for the reports: the fitted damper's figures and the
 // coordinates left on their range's edge.
 std::vector<std::string> describe_base(const ParameterSpace& space, const FittedModel& fit,
-                                       const model::DamperModel& start);
+                                       const model::DamperModel& start, const SeriesScales& scales);
 
 }  // namespace mrd::tools::search

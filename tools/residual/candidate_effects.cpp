@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "tools/residual/residual_structure.hpp"
+#include "tools/text_format.hpp"
 
 namespace mrd::tools {
 
@@ -72,6 +73,10 @@ struct BaseCoordinate {
   std::pair<double, double> range;
   double (*get)(const model::DamperModel&);
   void (*set)(model::DamperModel&, double);
+  // Edges that are a physical member of the family (atan and the knee of the sign shape, no mean
+  // field): reported, but no reason to refuse the model.
+  bool lower_is_physical = false;
+  bool upper_is_physical = false;
 };
 
 double k_over_a(const model::DamperModel& m) { return std::log10(m.jiles_atherton.k / m.jiles_atherton.a); }
@@ -96,7 +101,8 @@ std::vector<BaseCoordinate> base_coordinate_table(const model::DamperModel& star
                    [](const model::DamperModel& m) { return m.jiles_atherton.mean_field_gain(); },
                    [](model::DamperModel& m, double v) {
                      m.jiles_atherton.alpha = v * 3.0 * m.jiles_atherton.a / m.jiles_atherton.Ms;
-                   }});
+                   },
+                   true, false});
   }
   if (scales.current_varies) {
     // Power laws of MR fluids' yield stress in B run from about 0.3 to 1.2 (Eq. 13: 0.5811).
@@ -115,7 +121,7 @@ std::vector<BaseCoordinate> base_coordinate_table(const model::DamperModel& star
     // Past 1 the knee sharpens towards a hard cap: a power law that stops at the particles' saturation.
     out.push_back({"yield saturation shape (-1 slow, 0 tanh, 1 knee, 2 corner)", {-1.0, 2.0},
                    [](const model::DamperModel& m) { return m.fluid.saturation_shape; },
-                   [](model::DamperModel& m, double v) { m.fluid.saturation_shape = v; }});
+                   [](model::DamperModel& m, double v) { m.fluid.saturation_shape = v; }, true, true});
   }
   // The sign velocity: from 0.1 % of the run's speed to 15 % of it and at most 50 mm/s, so that
   // the yield term cannot take the viscous term's place (a v_s near the speed makes s(v) linear).
@@ -126,13 +132,30 @@ std::vector<BaseCoordinate> base_coordinate_table(const model::DamperModel& star
                  [](model::DamperModel& m, double v) { m.geometry.sign_velocity_scale = std::pow(10.0, v); }});
   out.push_back({"sign shape (-1 atan, 0 tanh, 1 knee)", {-1.0, 1.0},
                  [](const model::DamperModel& m) { return m.geometry.sign_shape; },
-                 [](model::DamperModel& m, double v) { m.geometry.sign_shape = v; }});
+                 [](model::DamperModel& m, double v) { m.geometry.sign_shape = v; }, true, true});
   out.push_back({"flow index n", {0.5, 1.5}, [](const model::DamperModel& m) { return m.fluid.flow_index; },
                  [](model::DamperModel& m, double v) { m.fluid.flow_index = v; }});
   return out;
 }
 
 }  // namespace
+
+std::vector<std::string> base_coordinates_at_edge(const model::DamperModel& model, const model::DamperModel& start,
+                                                  const SeriesScales& scales, Magnetics magnetics, bool unphysical_only) {
+  std::vector<std::string> out;
+  for (const BaseCoordinate& c : base_coordinate_table(start, scales, magnetics)) {
+    const auto [lo, hi] = c.range;
+    const double v = c.get(model);
+    const double margin = 1e-3 * (hi - lo);
+    const bool none_at_top = c.name.starts_with("log10 yield saturation");
+    const bool at_lower = !(v > lo + margin) && !(unphysical_only && c.lower_is_physical);
+    const bool at_upper = !none_at_top && !(v < hi - margin) && !(unphysical_only && c.upper_is_physical);
+    if (at_lower || at_upper) {
+      out.push_back(format("%s at the edge of its physical range [%.3g, %.3g]", c.name.c_str(), lo, hi));
+    }
+  }
+  return out;
+}
 
 Magnetics free_magnetics(const SeriesScales& scales, Magnetics wanted) {
   return scales.current_varies ? wanted : Magnetics::kKept;

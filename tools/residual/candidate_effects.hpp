@@ -42,6 +42,14 @@ ParameterSpace base_space(const model::DamperModel& origin, const model::DamperM
 // The base coordinates of `model` in that space.
 Point base_coordinates(const model::DamperModel& model, const model::DamperModel& start,
                        const SeriesScales& scales, Magnetics magnetics = Magnetics::kGain);
+// The base coordinates of `model` on (or past) the edge of their physical range, one line each
+// ("J-A c at the edge of its physical range [0.01, 0.95]"): the run asks for more than the range
+// allows. The ceiling's top is no ceiling at all (Eq. 13's plain law), so it is no edge. With
+// `unphysical_only`, edges that are a member of the family (the sign shape's atan and knee, the
+// ceiling's slow and corner shapes, no mean field) are left out.
+std::vector<std::string> base_coordinates_at_edge(const model::DamperModel& model, const model::DamperModel& start,
+                                                  const SeriesScales& scales, Magnetics magnetics = Magnetics::kGain,
+                                                  bool unphysical_only = false);
 // What base_space frees for this run: kept fields stay kept.
 Magnetics free_magnetics(const SeriesScales& scales, Magnetics wanted);
 

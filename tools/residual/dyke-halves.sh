@@ -20,7 +20,7 @@ for pair in first:second second:first; do
   fit=${pair%%:*}
   other=${pair##*:}
   "$build/tools/mrd-residual" "$out/$fit.csv" --columns "$columns" --amps-per-volt 0.5 --quiet \
-    --json "$out/$fit.json" --write-config "$out/$fit.toml" > "$out/$fit.txt"
+    --json "$out/$fit.json" --write-config "$out/$fit.toml" --accept-unphysical > "$out/$fit.txt"
   "$build/tools/mrd-replay" "$out/$other.csv" --columns "$columns" --amps-per-volt 0.5 \
     --config "$out/$fit.toml" --recorded-velocity > "$out/$fit-predicts-$other.txt"
   python3 - "$out/$fit.json" "$out/$fit-predicts-$other.txt" "$fit" "$other" <<'PY'

@@ -256,4 +256,19 @@ FitSeries run_openings(const FitSeries& series, std::size_t max_samples) {
 
 bool current_varies(const FitSeries& s) { return varies(s.current); }
 
+std::vector<double> series_time(const FitSeries& s) {
+  std::vector<double> out(s.size());
+  double offset = 0.0;
+  for (std::size_t r = 0; r < s.run_starts.size(); ++r) {
+    const std::size_t from = s.run_starts[r];
+    const std::size_t to = r + 1 < s.run_starts.size() ? s.run_starts[r + 1] : s.size();
+    const double period = r < s.run_periods.size() ? s.run_periods[r] : s.sample_period;
+    const bool timed = s.time.size() == s.size();
+    for (std::size_t i = from; i < to; ++i)
+      out[i] = offset + (timed ? s.time[i] - s.time[from] : static_cast<double>(i - from) * period);
+    if (to > from) offset = out[to - 1] + period;
+  }
+  return out;
+}
+
 }  // namespace mrd::tools

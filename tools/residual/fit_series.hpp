@@ -97,6 +97,10 @@ FitSeries without_excluded(const FitSeries& series, const std::vector<double>& p
 // decides whether a run can show the magnetics at all.
 bool current_varies(const FitSeries& series);
 
+// A time for every sample on one axis for plots: each run's own clock from 0, the next run
+// starting a sample period after the one before ends (so a 22.4 s run at 200 Hz spans 22.4 s).
+std::vector<double> series_time(const FitSeries& s);
+
 // The factor that brings the series to at most `max_samples`.
 std::size_t decimation_factor(const FitSeries& series, std::size_t max_samples);
 

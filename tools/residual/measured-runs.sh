@@ -13,13 +13,13 @@ replay="$build/tools/mrd-replay"
 echo "== Dyke, ranran_50.csv"
 "$residual" data/damper/dyke-nees-prototype/ranran_50.csv \
   --columns t=time_s,D=displacement_cm,Y=voltage_V,F=force_N,V=velocity_cm_s --amps-per-volt 0.5 \
-  --reference-spencer-dyke --json "$out/dyke/residual.json" --write-config "$out/dyke/fitted.toml" \
+  --reference-spencer-dyke --json "$out/dyke/residual.json" --write-config "$out/dyke/fitted.toml" --accept-unphysical \
   --plot "$out/dyke" | tee "$out/dyke/summary.txt"
 
 echo "== Quiroz, the 20 sine tests together"
 "$residual" data/damper/quiroz-utfsm/sine/*.txt \
   --columns 1=time_s,2=displacement_mm,3=velocity_mm_s,4=force_N --current-from-name \
-  --json "$out/quiroz/residual.json" --write-config "$out/quiroz/fitted.toml" \
+  --json "$out/quiroz/residual.json" --write-config "$out/quiroz/fitted.toml" --accept-unphysical \
   --plot "$out/quiroz" | tee "$out/quiroz/summary.txt"
 
 echo "== Quiroz, validation.csv predicted with the fitted config, per current"

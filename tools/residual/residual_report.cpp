@@ -143,8 +143,10 @@ std::string residual_summary(const std::vector<record::RecordedRun>& runs, const
   if (!r.parameters.empty()) {
     out += "final model's base parameters (value, standard deviation; nan: the run does not determine it):\n";
     for (const ParameterEstimate& p : r.parameters)
-      out += format("  %-30s %12.4g +- %-10.2g %s\n", p.name.c_str(), p.value, p.standard_deviation, p.unit.c_str());
+      out += format("  %-30s %12.4g +- %-10.2g %-5s%s\n", p.name.c_str(), p.value, p.standard_deviation, p.unit.c_str(),
+                    determined(p) ? "" : " (not determined by the run)");
   }
+  for (const std::string& line : r.unphysical) out += "unphysical: " + line + " (--write-config needs --accept-unphysical)\n";
   out += format("analysed %zu samples in %.2f s (%lld observer passes over the fitting series)\n", r.samples,
                 r.seconds, static_cast<long long>(r.evaluations));
   return out;
@@ -196,7 +198,8 @@ std::string residual_json(const ResidualResult& r, const ForceFitFigures* fit) {
                              {"peak_residual_N", span.peak_residual}});
   Json parameters = Json::array();
   for (const ParameterEstimate& p : r.parameters)
-    parameters.push_back({{"name", p.name}, {"value", p.value}, {"sd", p.standard_deviation}, {"unit", p.unit}});
+    parameters.push_back({{"name", p.name}, {"value", p.value}, {"sd", p.standard_deviation}, {"unit", p.unit},
+                          {"determined", determined(p)}});
   Json ambiguous = Json::array(), ambiguity_tests = Json::array();
   for (const AmbiguousGroup& group : r.ambiguous) {
     ambiguous.push_back(group.members);
@@ -207,6 +210,7 @@ std::string residual_json(const ResidualResult& r, const ForceFitFigures* fit) {
                     {"fit_before_percent", r.fit_before_percent},
                     {"fit_after_percent", r.fit_after_percent},
                     {"parameters", parameters},
+                    {"unphysical", r.unphysical},
                     {"max_before_N", r.before.max},
                     {"effects", r.accepted},
                     {"effect", r.accepted.empty() ? "none" : r.accepted.front()},
@@ -268,6 +272,7 @@ std::string updated_config(std::string_view config_text, const ResidualResult& r
   damper.insert_or_assign("effects", *effects["damper"]["effects"].as_table());
   toml::table values;
   values.insert("damper", std::move(damper));
+  round_floats(values);
   // Values patched in place: the starting config's order and comments stay (tools/toml_patch).
   std::string header = "# Written by mrd-residual: the damper fitted to the run";
   if (!r.accepted.empty()) {
@@ -288,10 +293,11 @@ std::string plot_residual(const FitSeries& s, const ResidualResult& r, const std
   if (ec) return "cannot create " + directory + ": " + ec.message();
   const std::size_t stride = std::max<std::size_t>(1, s.size() / 40000);
   const std::string data = (fs::path(directory) / "residual.dat").string();
+  const std::vector<double> time = series_time(s);
   {
     std::ofstream out(data);
     for (std::size_t i = 0; i < s.size(); i += stride) {
-      out << static_cast<double>(i) * s.sample_period << ' ' << 1e3 * s.displacement[i] << ' ' << 1e3 * s.velocity[i]
+      out << time[i] << ' ' << 1e3 * s.displacement[i] << ' ' << 1e3 * s.velocity[i]
           << ' ' << s.force[i] << ' ' << r.predicted_before[i] << ' ' << r.predicted_after[i] << ' '
           << s.force[i] - r.predicted_before[i] << ' ' << s.force[i] - r.predicted_after[i] << ' '
           << (s.role[i] == SampleRole::kExcluded ? 1 : 0) << '\n';
@@ -305,8 +311,12 @@ std::string plot_residual(const FitSeries& s, const ResidualResult& r, const std
   }
   const std::string figures = format("RMS %.4g N -> %.4g N (range %.4g N)", r.before.all, r.after.all, range_of(s.force));
   auto png = [&](const char* file) { return (fs::path(directory) / file).string(); };
+  std::string boundaries;  // where each run after the first begins
+  for (std::size_t k = 1; k < s.run_starts.size(); ++k)
+    boundaries += format("set arrow from %.9g, graph 0 to %.9g, graph 1 nohead dt 3 lc rgb '#888888'\n",
+                         time[s.run_starts[k]], time[s.run_starts[k]]);
   std::ostringstream gp;
-  gp << "set terminal pngcairo size 900,650\nset grid\nset key left top\n"
+  gp << "set terminal pngcairo noenhanced size 900,650\nset grid\nset key below horizontal\n"
      << "set output '" << png("residual_force_displacement.png") << "'\n"
      << "set title '" << name << ": force against displacement, " << figures << "' noenhanced\n"
      << "set xlabel 'displacement [mm]'\nset ylabel 'force [N]'\n"
@@ -316,11 +326,13 @@ std::string plot_residual(const FitSeries& s, const ResidualResult& r, const std
      << "' using 2:($9 > 0 ? $4 : 1/0) with points pt 6 ps 0.5 lc rgb '#ff7f0e' title 'set aside by the screening'\n"
      << "set output '" << png("residual_time.png") << "'\n"
      << "set title '" << name << ": residual against time, " << figures << "' noenhanced\n"
-     << "set xlabel 'time in the analysed series [s]'\nset ylabel 'measured - predicted [N]'\n"
+     << boundaries
+     << "set xlabel '" << (s.run_starts.size() > 1 ? "time, each run after the one before [s]" : "time [s]")
+     << "'\nset ylabel 'measured - predicted [N]'\n"
      << "plot '" << data << "' using 1:7 with lines lw 1 lc rgb '#1f77b4' title 'base model', '" << data
      << "' using 1:8 with lines lw 1 lc rgb '#d62728' title '" << after << "', '" << data
      << "' using 1:($9 > 0 ? $8 : 1/0) with points pt 6 ps 0.5 lc rgb '#ff7f0e' title 'set aside by the screening'\n"
-     << "set terminal pngcairo size 1200,500\nset output '" << png("residual_phase.png") << "'\n"
+     << "unset arrow\nset terminal pngcairo noenhanced size 1200,500\nset output '" << png("residual_phase.png") << "'\n"
      << "set multiplot layout 1,2 title '" << name << ": residual against the motion' noenhanced\n"
      << "set title 'against displacement'\nset xlabel 'displacement [mm]'\n"
      << "plot '" << data << "' using 2:7 with points pt 7 ps 0.2 lc rgb '#1f77b4' title 'base', '" << data
@@ -338,8 +350,11 @@ ForceFitTraces residual_traces(const std::vector<record::RecordedRun>& runs, con
   for (const auto& e : r.accepted) effects += (effects.empty() ? "" : ", ") + e;
   ForceFitTraces traces;
   traces.name = runs.size() == 1 ? runs.front().name : std::to_string(runs.size()) + " runs";
-  traces.time.resize(s.size());
-  for (std::size_t i = 0; i < s.size(); ++i) traces.time[i] = static_cast<double>(i) * s.sample_period;
+  traces.time = series_time(s);
+  if (s.run_starts.size() > 1) {
+    traces.run_starts = s.run_starts;
+    traces.run_names = s.run_names;
+  }
   traces.displacement = s.displacement;
   traces.velocity = s.velocity;
   traces.measured = s.force;
@@ -384,6 +399,13 @@ std::string write_residual_report(const std::vector<record::RecordedRun>& runs, 
   }
   report.parameters("Final model: standard deviations from sigma^2 (J^T J)^-1 at the fit (central differences over "
                     "the fitting series)", rows);
+  std::vector<std::vector<std::string>> flagged;
+  for (const ParameterEstimate& p : r.parameters)
+    if (!determined(p))
+      flagged.push_back({p.name, p.shape ? "not determined by the run (standard deviation nan or above 1)"
+                                         : "not determined by the run (standard deviation nan or above its value)"});
+  for (const std::string& line : r.unphysical) flagged.push_back({line, "unphysical: --write-config needs --accept-unphysical"});
+  if (!flagged.empty()) report.table("Flagged parameters", {"parameter", "why"}, flagged);
   std::vector<std::vector<std::string>> effect_rows;
   for (const auto& e : r.accepted)
     for (const auto& [key, value] : model::find_effect(e)->report(r.final_model.effects))

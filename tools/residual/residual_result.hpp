@@ -105,6 +105,9 @@ struct ResidualResult {
   double fit_after_percent = 0.0;
   // The final model's core parameters with their standard deviations (model_uncertainty).
   std::vector<ParameterEstimate> parameters;
+  // The final model's parameters on their physical range's edge or outside the model's bounds,
+  // one line each: --write-config refuses them without --accept-unphysical.
+  std::vector<std::string> unphysical;
   std::vector<std::string> accepted;  // in the order accepted, after the set revision
   // Candidates the run cannot tell apart: the others within the threshold of the kept one.
   std::vector<AmbiguousGroup> ambiguous;

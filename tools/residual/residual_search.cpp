@@ -35,6 +35,18 @@ ResidualStructure structure_of(const FitSeries& full, const std::vector<double>&
   return analyse_residual(kept_series, kept);
 }
 
+// What keeps the final model from being written as a config: a base coordinate on its range's
+// edge, or a parameter outside the model's own bounds.
+std::vector<std::string> unphysical_parameters(const model::DamperModel& m, const model::DamperModel& start,
+                                               const SeriesScales& scales) {
+  std::vector<std::string> out = base_coordinates_at_edge(m, start, scales, Magnetics::kMaterial, true);
+  const ValidationReport report = model::validate(m);
+  for (const ValidationIssue& issue : report.issues()) {
+    if (issue.severity == ValidationIssue::Severity::kError) out.push_back(issue.field + ": " + issue.message);
+  }
+  return out;
+}
+
 }  // namespace
 
 ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions& given) {
@@ -65,7 +77,7 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   const FittedModel identified = search::fit_base_model(s, base_fit_space);
   const FittedModel base = search::refit_robustly(s, base_fit_space, identified, result.robust_refits);
   result.base = reported(base.model);
-  result.base_parameters = search::describe_base(base_fit_space, base, options.start);
+  result.base_parameters = search::describe_base(base_fit_space, base, options.start, s.scales);
   predict_force(result.base, full, result.predicted_before);
   result.before = residual_rms(full, result.predicted_before);
   result.structure_before = structure_of(full, result.predicted_before);
@@ -98,6 +110,7 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   linearised.integration = options.start.integration;
   result.parameters = model_uncertainty(linearised, s.fit_series, free_magnetics(s.scales, Magnetics::kMaterial));
   result.unexplained = describe(result.structure_after);
+  result.unphysical = unphysical_parameters(result.final_model, options.start, s.scales);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return result;
 }

@@ -272,6 +272,7 @@ TEST_F(ModbusBackendTest, ReconnectsWhenTheServerGoesAwayAndComesBack) {
   EXPECT_TRUE(wait_for([&] { return backend.counters()[ModbusEvent::kDisconnects] >= 1; }));
   EXPECT_TRUE(wait_for([&] { return backend.counters()[ModbusEvent::kConnectFailures] >= 2; }));
   EXPECT_FALSE(backend.connected());
+  EXPECT_TRUE(backend.link_problem().value_or("").ends_with(", link lost")) << backend.link_problem().value_or("none");
   // While it is away, setpoints are queued and the loop is told.
   EXPECT_EQ(backend.write_setpoint(0.25), IoStatus::kNotConnected);
   (void)backend.latest();  // drop what arrived before the outage
@@ -290,6 +291,7 @@ TEST_F(ModbusBackendTest, ReconnectsWhenTheServerGoesAwayAndComesBack) {
   EXPECT_GE(counters[ModbusEvent::kConnects], 2u);
   EXPECT_GE(counters[ModbusEvent::kReadErrors] + counters[ModbusEvent::kWriteErrors], 1u);
   EXPECT_TRUE(backend.connected());
+  EXPECT_FALSE(backend.link_problem().has_value());
 }
 
 TEST_F(ModbusBackendTest, SilentServerCountsTimeoutsAndStillStops) {
@@ -333,6 +335,12 @@ TEST_F(ModbusBackendTest, NoServerMeansConnectFailuresWithBackOff) {
   EXPECT_TRUE(wait_for([&] { return backend.counters()[ModbusEvent::kConnectFailures] >= 3; }));
   EXPECT_FALSE(backend.connected());
   EXPECT_FALSE(backend.latest().has_value());
+  // Where and why, as mbpoll says it.
+  const auto problem = backend.link_problem();
+  ASSERT_TRUE(problem.has_value());
+  EXPECT_TRUE(problem->starts_with("127.0.0.1:" + std::to_string(port) + " (slave 1): Connection refused, "))
+      << *problem;
+  EXPECT_TRUE(problem->ends_with("failed connect attempts, never connected")) << *problem;
 }
 
 TEST_F(ModbusBackendTest, MissingSerialDeviceIsRetriedNotFatal) {
@@ -343,6 +351,10 @@ TEST_F(ModbusBackendTest, MissingSerialDeviceIsRetriedNotFatal) {
   ASSERT_TRUE(backend.start().ok);
   EXPECT_TRUE(wait_for([&] { return backend.counters()[ModbusEvent::kConnectFailures] >= 1; }));
   EXPECT_FALSE(backend.connected());
+  const auto problem = backend.link_problem();
+  ASSERT_TRUE(problem.has_value());
+  EXPECT_TRUE(problem->starts_with("/dev/mrd-no-such-tty 115200 8N1 (slave 1): No such file or directory, "))
+      << *problem;
 }
 
 TEST_F(ModbusBackendTest, BadConfigAndBadSetpointsAreRefusedClearly) {

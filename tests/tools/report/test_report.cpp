@@ -10,6 +10,7 @@
 #include <random>
 
 #include "tools/report/fit_statistics.hpp"
+#include "tools/report/force_fit.hpp"
 #include "tools/report/html_report.hpp"
 #include "tools/report/sha256.hpp"
 
@@ -146,6 +147,39 @@ TEST(ReportFit, ParametersThatActOnlyTogetherLeaveTheRestDetermined) {
 std::string report_slurp(const std::filesystem::path& path) {
   std::ifstream in(path);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Two runs at their own rates (1 kHz and 200 Hz): each gets its own figures and lag step, and no
+// common step is claimed for the two rates.
+TEST(ReportFit, SeveralRunsHaveTheirOwnFiguresAndSteps) {
+  mrd::tools::ForceFitTraces t;
+  t.run_starts = {0, 1000};
+  t.run_names = {"fast.csv", "slow.csv"};
+  for (int i = 0; i < 1000; ++i) t.time.push_back(1e-3 * i);
+  for (int i = 0; i < 200; ++i) t.time.push_back(1.0 + 5e-3 * i);
+  for (std::size_t i = 0; i < t.time.size(); ++i) {
+    const double sign = i % 2 == 0 ? 1.0 : -1.0;
+    t.measured.push_back(100.0 * std::sin(7.0 * static_cast<double>(i)));
+    t.predicted.push_back(t.measured.back() - (i < 1000 ? 2.0 : 5.0) * sign);
+  }
+  t.displacement.assign(t.time.size(), 0.0);
+  t.velocity.assign(t.time.size(), 0.0);
+  const mrd::tools::ForceFitFigures f = mrd::tools::force_fit_figures(t, 10);
+  ASSERT_EQ(f.runs.size(), 2u);
+  EXPECT_EQ(f.runs[0].name, "fast.csv");
+  EXPECT_EQ(f.runs[1].samples, 200u);
+  EXPECT_NEAR(f.runs[0].rms_N, 2.0, 1e-12);
+  EXPECT_NEAR(f.runs[1].rms_N, 5.0, 1e-12);
+  EXPECT_NEAR(f.runs[0].lag_step_s, 1e-3, 1e-12);
+  EXPECT_NEAR(f.runs[1].lag_step_s, 5e-3, 1e-12);
+  EXPECT_EQ(f.lag_step_s, 0.0);
+  EXPECT_DOUBLE_EQ(f.acf_outside, 1.0);  // an alternating residual in each run: every lag outside
+  const auto json = mrd::tools::force_fit_json(f);
+  ASSERT_EQ(json["runs"].size(), 2u);
+  EXPECT_EQ(json["runs"][1]["acf_lag_step_s"].get<double>(), f.runs[1].lag_step_s);
+  EXPECT_NE(mrd::tools::per_run_text(f).find("slow.csv"), std::string::npos);
+  t.run_starts.clear();  // one run: no per-run figures, and one step
+  EXPECT_TRUE(mrd::tools::force_fit_figures(t, 10).runs.empty());
 }
 
 TEST(ReportHtml, InlinesOneSvgPerPlotAndKeepsTheScripts) {

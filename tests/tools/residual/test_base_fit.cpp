@@ -129,4 +129,40 @@ TEST(BaseFit, CoordinatesStayInsideTheirPhysicalRanges) {
   EXPECT_EQ(base_space(start, start, scales, Magnetics::kMaterial).parameters.size(), 3u);
 }
 
+// What --write-config refuses: a coordinate on (or past) its range's edge is named with its
+// range; the ceiling's top is Eq. 13's plain law, no edge; the middle of every range is clean.
+TEST(BaseFit, ACoordinateOnItsRangesEdgeIsNamed) {
+  SeriesScales scales;
+  scales.speed = 0.1;
+  scales.current_varies = true;
+  const mrd::model::DamperModel start;
+  const ParameterSpace space = base_space(start, start, scales, Magnetics::kMaterial);
+  const Point middle = 0.5 * (space.bounds.lower + space.bounds.upper);
+  EXPECT_TRUE(base_coordinates_at_edge(space.build(middle), start, scales, Magnetics::kMaterial).empty());
+  for (Eigen::Index i = 0; i < middle.size(); ++i) {
+    for (const double edge : {space.bounds.lower[i], space.bounds.upper[i]}) {
+      Point p = middle;
+      p[i] = edge;
+      const auto flagged = base_coordinates_at_edge(space.build(p), start, scales, Magnetics::kMaterial);
+      const std::string& name = space.parameters[static_cast<std::size_t>(i)];
+      if (name.starts_with("log10 yield saturation") && edge == space.bounds.upper[i]) {
+        EXPECT_TRUE(flagged.empty()) << flagged.front();
+        continue;
+      }
+      ASSERT_EQ(flagged.size(), 1u) << name;
+      EXPECT_TRUE(flagged.front().starts_with(name + " at the edge of its physical range [")) << flagged.front();
+    }
+  }
+  // The sign shape's ends are atan and the knee: named, but nothing to refuse a model for.
+  const auto shape = std::ranges::find(space.parameters, std::string("sign shape (-1 atan, 0 tanh, 1 knee)"));
+  ASSERT_NE(shape, space.parameters.end());
+  Point atan_end = middle;
+  atan_end[shape - space.parameters.begin()] = -1.0;
+  EXPECT_EQ(base_coordinates_at_edge(space.build(atan_end), start, scales, Magnetics::kMaterial).size(), 1u);
+  EXPECT_TRUE(base_coordinates_at_edge(space.build(atan_end), start, scales, Magnetics::kMaterial, true).empty());
+  mrd::model::DamperModel beyond = space.build(middle);
+  beyond.jiles_atherton.c = 0.99;  // a prior outside the range the fit searches
+  EXPECT_EQ(base_coordinates_at_edge(beyond, start, scales, Magnetics::kMaterial).size(), 1u);
+}
+
 }  // namespace

@@ -46,6 +46,19 @@ TEST(FitSeries, HalfOfTheBlocksValidateAndEveryRunStartsAgain) {
   EXPECT_LT(changes, 23);
 }
 
+// The plots' time axis: a 6 s run at 200 Hz after a 6 s run at 1 kHz spans 6 s, not 1.2 s of
+// sample index x the shorter period.
+TEST(FitSeries, EachRunKeepsItsOwnSecondsOnThePlotsTimeAxis) {
+  const FitSeries s = make_fit_series({sine_run(1000, 6, true), sine_run(200, 6, true)}, {});
+  const std::vector<double> t = series_time(s);
+  ASSERT_EQ(t.size(), s.size());
+  EXPECT_DOUBLE_EQ(t[0], 0.0);
+  EXPECT_NEAR(t[5999], 5.999, 1e-12);
+  EXPECT_NEAR(t[6000], 6.0, 1e-12);  // a period after the first run's last sample
+  EXPECT_NEAR(t.back() - t[6000], 5.995, 1e-12);
+  EXPECT_NEAR(t[6001] - t[6000], 5e-3, 1e-12);
+}
+
 TEST(FitSeries, DecimationPicksSamplesAndKeepsEachRunAboveTheMinimumRate) {
   const FitSeries s = make_fit_series({sine_run(1000, 6, true), sine_run(200, 6, true)}, {});
   const FitSeries d = decimate(s, 4, 200.0);
