@@ -85,11 +85,8 @@ void log_transitions(runtime::SupervisorFeed& feed, const runtime::Journal& jour
 // in, or a bus link was down at the end (a run shorter than link_timeout never leaves INIT on a
 // dead link), with the trigger and each bus whose link is down and why.
 int report_ending(std::FILE* out, const runtime::Journal& journal, control::Trigger safe_cause,
-                  const std::string& links) {
-  std::size_t from = 0;
-  for (std::size_t end; (end = links.find('\n', from)) != std::string::npos; from = end + 1) {
-    std::fprintf(out, "link down: %s\n", links.substr(from, end - from).c_str());
-  }
+                  const std::vector<std::string>& links) {
+  for (const std::string& link : links) std::fprintf(out, "link down: %s\n", link.c_str());
   const bool through_fault = safe_cause != control::Trigger::kNone && safe_cause != control::Trigger::kShutdown;
   if (!through_fault && links.empty()) return cli::kOk;
   const std::string line = through_fault ? "the run ended in SAFE through " + std::string(control::to_string(safe_cause)) +
@@ -206,7 +203,7 @@ int run_controller(const config::ControllerConfig& config, const RunOptions& opt
   journal.write(runtime::Priority::kNotice, why + ", fail-safe current written");
   notifier.stopping(why);
   if (writer) writer->stop();
-  const std::string links = hal.link_problems();  // before stop(), which takes every link down
+  const std::vector<std::string> links = hal.link_problems();  // before stop(), which takes every link down
   hal.stop();
 
   print_stats(out, stats, feed, loop, hal, options.bench);

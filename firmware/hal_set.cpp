@@ -109,10 +109,10 @@ std::string HalSet::counters() const {
 
 bool HalSet::link_never_up() const { return modbus_ && modbus_->never_connected(); }
 
-std::string HalSet::link_problems() const {
-  std::string out;
+std::vector<std::string> HalSet::link_problems() const {
+  std::vector<std::string> out;
   if (modbus_) {
-    if (const auto problem = modbus_->link_problem()) out += "modbus: " + *problem + "\n";
+    if (const auto problem = modbus_->link_problem()) out.push_back("modbus: " + *problem);
   }
   return out;
 }

@@ -36,7 +36,7 @@ class HalSet {
   // One line per bus back end with its counters, for the statistics printout.
   [[nodiscard]] std::string counters() const;
   // One line per bus whose link is down, with the endpoint and the system's reason (empty: none).
-  [[nodiscard]] std::string link_problems() const;
+  [[nodiscard]] std::vector<std::string> link_problems() const;
   // Whether a bus link never came up at all (the probe's "bus cannot start").
   [[nodiscard]] bool link_never_up() const;
 

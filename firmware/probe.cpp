@@ -175,19 +175,17 @@ int run_probe(const config::ControllerConfig& config, const ProbeOptions& option
     const ProbeReading r = probe.poll(at);
     if (i <= options.print_readings) std::fputs(Probe::format(r, start).c_str(), out);
   }
-  const std::string links = hal.link_problems();
+  const std::vector<std::string> links = hal.link_problems();
   const bool never_up = hal.link_never_up();
   hal.stop();
   std::fputs(probe.summary().c_str(), out);
   std::fputs(hal.counters().c_str(), out);
   // A link that never came up is the bus's fault, not the readings': say why, as mbpoll would,
   // and nothing of readings that could not come. A link lost on the way is one more problem.
-  if (never_up) {
-    fail_each_line(links, out);
-    return cli::kIo;
-  }
-  const std::string problems = links + probe.problems();
-  if (problems.empty()) {
+  for (const std::string& link : links) std::fprintf(out, "probe: FAIL: %s\n", link.c_str());
+  if (never_up) return cli::kIo;
+  const std::string problems = probe.problems();
+  if (problems.empty() && links.empty()) {
     std::fputs("probe: OK\n", out);
     return cli::kOk;
   }

@@ -86,6 +86,7 @@ class SupervisorFeed {
   std::atomic<std::uint8_t> state_{static_cast<std::uint8_t>(control::SupervisorState::kInit)};
   std::atomic<bool> latched_{false};
   std::atomic<std::uint8_t> safe_cause_{static_cast<std::uint8_t>(control::Trigger::kNone)};
+  static_assert(std::atomic<std::uint8_t>::is_always_lock_free, "the loop publishes the state without a lock");
   control::SupervisorState last_ = control::SupervisorState::kInit;  // loop thread only
   SingleWriterCounter lost_;
   std::atomic<std::uint64_t> scale_bound_hits_{0};

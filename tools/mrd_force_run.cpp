@@ -166,8 +166,7 @@ int main(int argc, char** argv) {
   app.add_flag("--no-plot", no_plot, "with --out, skip the PNGs");
   mrd::cli::set_up(app, "mrd-force-run");
   if (const auto status = mrd::cli::parse(app, argc, argv)) return *status;
-  if (!out_dir.empty() && !mrd::cli::prepare_output_directory("mrd-force-run", out_dir)) return mrd::cli::kIo;
-  if (!mrd::cli::check_output_file("mrd-force-run", json_path)) return mrd::cli::kIo;
+  if (!mrd::cli::check_outputs("mrd-force-run", {&json_path}, {&out_dir})) return mrd::cli::kIo;
 
   const double dt = 1e-3;
   const mrd::model::DamperModel plant = mrd::tools::with_coil_lag({}, coil_lag_ms * 1e-3);

@@ -406,11 +406,9 @@ int main(int argc, char** argv) {
 
   if (const auto status = mrd::cli::parse(app, argc, argv)) return *status;
   // Every output can be written, and every folder of results exists, before the work starts.
-  for (const std::string* file : {&fit.json_path, &fit.config_path, &synthetic.path}) {
-    if (!mrd::cli::check_output_file("mrd-identify", *file)) return mrd::cli::kIo;
-  }
-  for (const std::string* dir : {&fit.plot_dir, &fit.report_dir, &compare_study.out_dir, &paper_study.out_dir}) {
-    if (!dir->empty() && !mrd::cli::prepare_output_directory("mrd-identify", *dir)) return mrd::cli::kIo;
+  if (!mrd::cli::check_outputs("mrd-identify", {&fit.json_path, &fit.config_path, &synthetic.path},
+                                {&fit.plot_dir, &fit.report_dir, &compare_study.out_dir, &paper_study.out_dir})) {
+    return mrd::cli::kIo;
   }
   try {
     if (*fit_cmd) return run_fit(fit);

@@ -62,11 +62,8 @@ int main(int argc, char** argv) {
 
   const auto config = run_options.load_config();
   if (!config) return mrd::cli::kUsage;
-  for (const std::string* file : {&csv_path, &json_path, &candump_path}) {
-    if (!mrd::cli::check_output_file("mrd-replay", *file)) return mrd::cli::kIo;
-  }
-  for (const std::string* dir : {&plot_dir, &report_dir}) {
-    if (!dir->empty() && !mrd::cli::prepare_output_directory("mrd-replay", *dir)) return mrd::cli::kIo;
+  if (!mrd::cli::check_outputs("mrd-replay", {&csv_path, &json_path, &candump_path}, {&plot_dir, &report_dir})) {
+    return mrd::cli::kIo;
   }
   replay_options.law = config->config.law;
   try {

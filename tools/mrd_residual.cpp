@@ -96,12 +96,7 @@ int main(int argc, char** argv) {
     return mrd::cli::kUsage;
   }
   // Every output is checked before the work, which may take minutes.
-  for (const std::string* file : {&json_path, &config_out}) {
-    if (!mrd::cli::check_output_file("mrd-residual", *file)) return mrd::cli::kIo;
-  }
-  for (const std::string* dir : {&plot_dir, &report_dir}) {
-    if (!dir->empty() && !mrd::cli::prepare_output_directory("mrd-residual", *dir)) return mrd::cli::kIo;
-  }
+  if (!mrd::cli::check_outputs("mrd-residual", {&json_path, &config_out}, {&plot_dir, &report_dir})) return mrd::cli::kIo;
   options.start = config->config.law.damper;
   try {
     const mrd::record::RunReadOptions read = run_options.read_options(*config);

@@ -84,6 +84,15 @@ bool check_output_file(std::string_view program, const std::string& file) {
   return false;
 }
 
+bool check_outputs(std::string_view program, std::initializer_list<const std::string*> files,
+                   std::initializer_list<const std::string*> folders) {
+  for (const std::string* file : files)
+    if (!check_output_file(program, *file)) return false;
+  for (const std::string* folder : folders)
+    if (!folder->empty() && !prepare_output_directory(program, *folder)) return false;
+  return true;
+}
+
 std::optional<int> parse(CLI::App& app, int argc, const char* const* argv) {
   try {
     app.parse(argc, argv);

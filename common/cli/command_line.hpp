@@ -5,6 +5,7 @@
 // usage code, and output folders created up front so a bad --out or --plot fails before the work.
 #include <CLI/CLI.hpp>
 
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -30,6 +31,12 @@ void set_up(CLI::App& app, std::string_view program);
 // (or the file itself writable). False, with "<program>: cannot write FILE: <reason>" on stderr
 // (the system's reason: a folder, no such folder, permission denied): exit with kIo then.
 [[nodiscard]] bool check_output_file(std::string_view program, const std::string& file);
+
+// Every output of a run, before its work: each file (check_output_file), then each folder
+// (prepare_output_directory), so a refused file leaves no folder behind. Empty paths are not
+// asked for. False after the first that fails (its reason on stderr): exit with kIo then.
+[[nodiscard]] bool check_outputs(std::string_view program, std::initializer_list<const std::string*> files,
+                                 std::initializer_list<const std::string*> folders);
 
 // A validator for a finite number in [lo, hi] ("--threshold: 1.5 is not in [0, 0.99]"); CLI11's
 // own Range lets nan and inf through the conversion of some options.

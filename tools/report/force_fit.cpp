@@ -150,21 +150,20 @@ void plot_autocorrelation(HtmlReport& report, const std::vector<double>& r, doub
                   "' using 1:4 with lines dt 2 lc rgb '#d62728' notitle\n");
 }
 
-// Where one run ends and the next begins on a time axis: a dotted line each, named while
-// there are few enough to read.
-std::string run_boundaries(const ForceFitTraces& t) {
+}  // namespace
+
+std::string run_boundaries(const std::vector<double>& time, const std::vector<std::size_t>& run_starts,
+                           const std::vector<std::string>& run_names) {
   std::string out;
-  if (t.run_starts.size() < 2) return out;
-  for (std::size_t r = 0; r < t.run_starts.size(); ++r) {
-    const double at = t.time[t.run_starts[r]];
+  if (run_starts.size() < 2) return out;
+  for (std::size_t r = 0; r < run_starts.size(); ++r) {
+    const double at = time[run_starts[r]];
     if (r > 0) out += format("set arrow from %.9g, graph 0 to %.9g, graph 1 nohead dt 3 lc rgb '#888888'\n", at, at);
-    if (t.run_starts.size() <= 8 && r < t.run_names.size())
-      out += format("set label '%s' at %.9g, graph 0.97 left front font ',8' noenhanced\n", t.run_names[r].c_str(), at);
+    if (run_starts.size() <= 8 && r < run_names.size())
+      out += format("set label '%s' at %.9g, graph 0.97 left front font ',8' noenhanced\n", run_names[r].c_str(), at);
   }
   return out;
 }
-
-}  // namespace
 
 void add_autocorrelation_plot(HtmlReport& report, const std::vector<double>& residual, std::size_t lags,
                               double lag_step, const std::string& lag_label, const std::string& caption) {
@@ -219,7 +218,7 @@ ForceFitFigures add_force_fit(HtmlReport& report, const ForceFitTraces& t) {
   const bool several = t.run_starts.size() > 1;
   const char* time_label = several ? "time, each run after the one before [s]" : "time [s]";
   report.plot("force_time", format("%s: measured and predicted force against time, fit %.2f %%", t.name.c_str(), f.fit_percent),
-              run_boundaries(t) + overlay(1, time_label, "lines lw 1"));
+              run_boundaries(t.time, t.run_starts, t.run_names) + overlay(1, time_label, "lines lw 1"));
   report.plot("force_displacement", t.name + ": force against displacement", overlay(2, "displacement [mm]", "points pt 7 ps 0.2"));
   report.plot("force_velocity", t.name + ": force against velocity", overlay(3, "velocity [mm/s]", "points pt 7 ps 0.2"));
 
@@ -230,7 +229,7 @@ ForceFitFigures add_force_fit(HtmlReport& report, const ForceFitTraces& t) {
                   {"95 % bound, 1.96/sqrt(N)", "fit.acf_bound", f.acf_bound, ""},
                   {"share of lags outside the bound", "fit.acf_outside_fraction", f.acf_outside, "(0 to 1)"}});
   report.plot("residual_time", t.name + ": residual, measured - predicted, against time",
-              run_boundaries(t) + "set xlabel '" + time_label + "'\nset ylabel 'residual [N]'\nplot " + q +
+              run_boundaries(t.time, t.run_starts, t.run_names) + "set xlabel '" + time_label + "'\nset ylabel 'residual [N]'\nplot " + q +
                   " using 1:6 with lines lw 1 lc rgb '#1f77b4' title 'measured - predicted'\n");
   std::size_t pooled_samples = 0;
   const std::vector<double> r = pooled_autocorrelation(t, f.lags, pooled_samples);

@@ -57,6 +57,11 @@ struct ForceFitFigures {
 // acf_lags, acf_lag_step_s, acf_bound, acf_outside_fraction. The report's cells name them "fit.*".
 [[nodiscard]] Json force_fit_json(const ForceFitFigures& f);
 
+// gnuplot commands marking where each run after the first begins on a time axis (a dotted
+// line each, named while there are eight runs or fewer); none for one run.
+[[nodiscard]] std::string run_boundaries(const std::vector<double>& time, const std::vector<std::size_t>& run_starts,
+                                         const std::vector<std::string>& run_names);
+
 // The per-run figures as text lines (none for one run), for the tools' summaries.
 [[nodiscard]] std::string per_run_text(const ForceFitFigures& f);
 

@@ -311,10 +311,7 @@ std::string plot_residual(const FitSeries& s, const ResidualResult& r, const std
   }
   const std::string figures = format("RMS %.4g N -> %.4g N (range %.4g N)", r.before.all, r.after.all, range_of(s.force));
   auto png = [&](const char* file) { return (fs::path(directory) / file).string(); };
-  std::string boundaries;  // where each run after the first begins
-  for (std::size_t k = 1; k < s.run_starts.size(); ++k)
-    boundaries += format("set arrow from %.9g, graph 0 to %.9g, graph 1 nohead dt 3 lc rgb '#888888'\n",
-                         time[s.run_starts[k]], time[s.run_starts[k]]);
+  const std::string boundaries = run_boundaries(time, s.run_starts, s.run_names);
   std::ostringstream gp;
   gp << "set terminal pngcairo noenhanced size 900,650\nset grid\nset key below horizontal\n"
      << "set output '" << png("residual_force_displacement.png") << "'\n"
@@ -332,7 +329,7 @@ std::string plot_residual(const FitSeries& s, const ResidualResult& r, const std
      << "plot '" << data << "' using 1:7 with lines lw 1 lc rgb '#1f77b4' title 'base model', '" << data
      << "' using 1:8 with lines lw 1 lc rgb '#d62728' title '" << after << "', '" << data
      << "' using 1:($9 > 0 ? $8 : 1/0) with points pt 6 ps 0.5 lc rgb '#ff7f0e' title 'set aside by the screening'\n"
-     << "unset arrow\nset terminal pngcairo noenhanced size 1200,500\nset output '" << png("residual_phase.png") << "'\n"
+     << "unset arrow\nunset label\nset terminal pngcairo noenhanced size 1200,500\nset output '" << png("residual_phase.png") << "'\n"
      << "set multiplot layout 1,2 title '" << name << ": residual against the motion' noenhanced\n"
      << "set title 'against displacement'\nset xlabel 'displacement [mm]'\n"
      << "plot '" << data << "' using 2:7 with points pt 7 ps 0.2 lc rgb '#1f77b4' title 'base', '" << data
