@@ -13,6 +13,8 @@ packages=(
   libpagmo-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox
+  libssl-dev  # libcrypto: the reports' SHA-256 and base64
+  chromium-headless-shell  # the report's charts checked in a browser (tests/tools/report)
   python3-numpy  # the independent truth generator (tests/generator)
   # The HIL VM (scripts/hil-vm.sh): qemu, headers to build gpio-sim against, and the CAN and
   # GPIO tools copied into the VM.
@@ -34,4 +36,12 @@ if ((${#missing[@]})); then
   fi
   apt-get update -qq
   apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+# uPlot, which the reports inline (tools/report/web/package.json), at the lock file's version; npm
+# comes with the machine's Node.js. Skipped when that version is already there.
+web=$(realpath "$(dirname "$0")/../tools/report/web")
+command -v npm > /dev/null || { echo "install-deps: npm (Node.js) is needed for tools/report/web" >&2; exit 1; }
+version() { node -p "try { require('$1').${2} } catch (e) { '' }"; }
+if [[ $(version "$web/node_modules/uplot/package.json" version) != "$(version "$web/package.json" 'dependencies.uplot')" ]]; then
+  npm ci --prefix "$web" --no-audit --no-fund --loglevel=error
 fi

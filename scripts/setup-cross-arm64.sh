@@ -12,7 +12,7 @@ export DEBIAN_FRONTEND=noninteractive
 
 host_packages=(crossbuild-essential-arm64 qemu-user-static)
 target_packages=(libmodbus-dev libgpiod-dev libboost-dev libtomlplusplus-dev libsystemd-dev
-                 libgtest-dev libgmock-dev libbenchmark-dev)
+                 libgtest-dev libgmock-dev libbenchmark-dev libssl-dev)
 wanted=("${host_packages[@]}" "${target_packages[@]/%/:arm64}")
 
 missing=()

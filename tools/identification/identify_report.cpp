@@ -177,6 +177,8 @@ std::string write_identify_report(const IdentifyResult& r, const IdentifyStatist
                         ? "Identified set (J^T J is singular: the loops do not determine every parameter)"
                         : "Identified set: standard deviations from sigma^2 (J^T J)^-1 at the optimum (central differences)",
                     rows);
+  std::vector<std::string> names(kParameterNames.begin(), kParameterNames.end());
+  report.correlation_matrix("Correlation of the estimates", names, statistics.uncertainty.correlation);
 
   const std::vector<double> B = measured_B(curve);
   const std::vector<double> fitted = objective.simulate(to_params(best));

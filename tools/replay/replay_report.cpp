@@ -69,6 +69,21 @@ ForceFitTraces replay_traces(const ReplayContext& c) {
   return traces;
 }
 
+// A replay worse than the measured mean is almost always a config made for another damper: say
+// so, and how to get this one's. "" when the fit is not that bad or there is no force.
+std::string unfitted_hint(const ReplayContext& c) {
+  if (!c.result.force) return {};
+  const double fit = replay_fit_percent(c);
+  if (!(fit < 0.0)) return {};
+  const Range predicted = range_of(c.result.trace.predicted_force);
+  const Range measured = range_of(c.run.force);
+  const double ratio = (predicted.max - predicted.min) / std::max(measured.max - measured.min, 1e-300);
+  return format("hint: the config's damper predicts this run worse than the measured mean force (fit %.0f %%; its force "
+                "range is %.3g times the measured one), so it is not a model of this damper. Identify this one with "
+                "`mrd-residual RUN --write-config damper.toml` and replay with `--config damper.toml`.",
+                fit, ratio);
+}
+
 }  // namespace
 
 std::string replay_summary(const ReplayContext& c) {
@@ -84,6 +99,7 @@ std::string replay_summary(const ReplayContext& c) {
         "force error (measured - predicted): RMS %.4g N, max %.4g N, mean %.4g N; "
         "NRMSE %.4g (RMS / measured range %.4g N); fit %.2f %%\n",
         f->rms, f->max, f->mean, f->nrmse, f->measured_range, replay_fit_percent(c));
+    if (const std::string hint = unfitted_hint(c); !hint.empty()) out += hint + "\n";
   } else {
     out += "force error: the run has no measured force\n";
   }
@@ -226,6 +242,7 @@ std::string write_replay_report(const ReplayContext& c, const Provenance& proven
     run_rows.push_back({"NRMSE (RMS / measured range)", "force.nrmse", f->nrmse, ""});
   }
   report.figures("The run and the force error (as the JSON)", run_rows);
+  if (const std::string hint = unfitted_hint(c); !hint.empty()) report.paragraph(hint);
   for (const auto& note : run.notes) report.paragraph("note: " + note);
   std::vector<double> time(run.size());
   for (std::size_t i = 0; i < run.size(); ++i) time[i] = run.time[i] - run.time[0];
@@ -235,11 +252,9 @@ std::string write_replay_report(const ReplayContext& c, const Provenance& proven
     report.paragraph("The run has no measured force: only the prediction and the current are shown.");
   }
   report.heading("Coil current");
-  const std::string dat = report.data("current", {"time_s", "coil_current_A", "command_current_A", "predicted_force_N"},
-                                      {&time, &t.coil_current, &t.command_current, &t.predicted_force});
-  report.plot("current", "the run's coil current (drives the observer) and the command the controller would give",
-              "set xlabel 'time [s]'\nset ylabel 'current [A]'\nplot '" + dat +
-                  "' using 1:2 with lines lw 1 title 'run', '" + dat + "' using 1:3 with lines lw 1 title 'controller command'\n");
+  report.time_chart({"current", "the run's coil current (drives the observer) and the command the controller would give",
+                     "time [s]", "current [A]", &time,
+                     {{"run", &t.coil_current, "#1f77b4"}, {"controller command", &t.command_current, "#2ca02c"}}, {}});
   report.heading("Damper parameters");
   const model::DamperModel& m = c.options.law.damper;
   report.parameters("From the config (a replay fits nothing, so no standard deviations)",

@@ -49,6 +49,31 @@ std::vector<double> autocorrelation(const std::vector<double>& e, std::size_t ma
   return r;
 }
 
+std::vector<double> cross_correlation(const std::vector<double>& u, const std::vector<double>& e, std::size_t max_lag) {
+  const std::size_t n = e.size();
+  if (n == 0 || u.size() != n) return {};
+  double mu = 0.0, me = 0.0;
+  for (std::size_t i = 0; i < n; ++i) mu += u[i], me += e[i];
+  mu /= static_cast<double>(n);
+  me /= static_cast<double>(n);
+  double uu = 0.0, ee = 0.0;
+  for (std::size_t i = 0; i < n; ++i) uu += (u[i] - mu) * (u[i] - mu), ee += (e[i] - me) * (e[i] - me);
+  if (uu <= 0.0 || ee <= 0.0) return {};
+  const std::size_t lags = std::min(max_lag, n - 1);
+  std::vector<double> r(2 * lags + 1, 0.0);
+  const double norm = std::sqrt(uu * ee);
+  for (std::size_t k = 0; k <= lags; ++k) {
+    double ahead = 0.0, behind = 0.0;  // e after u by k; e before u by k
+    for (std::size_t i = 0; i + k < n; ++i) {
+      ahead += (u[i] - mu) * (e[i + k] - me);
+      behind += (u[i + k] - mu) * (e[i] - me);
+    }
+    r[lags + k] = ahead / norm;
+    r[lags - k] = behind / norm;
+  }
+  return r;
+}
+
 double autocorrelation_bound_95(std::size_t samples) {
   return samples > 0 ? 1.96 / std::sqrt(static_cast<double>(samples)) : 0.0;
 }

@@ -19,6 +19,14 @@ namespace mrd::tools {
 [[nodiscard]] std::vector<double> autocorrelation(const std::vector<double>& residual, std::size_t max_lag);
 [[nodiscard]] double autocorrelation_bound_95(std::size_t samples);
 
+// Normalised cross-correlation of an input u and a residual e (means removed), as MATLAB's resid
+// shows it: r(k) = sum u_i e_{i+k} / sqrt(sum u^2 sum e^2) for k = -max_lag..max_lag, at index
+// k + max_lag. A model that leaves nothing of u unexplained keeps |r(k)| within 1.96/sqrt(N) at
+// 95 % (e white); a peak at k > 0 is an effect of u that the residual shows k samples later.
+// Empty when the lengths differ or either is constant.
+[[nodiscard]] std::vector<double> cross_correlation(const std::vector<double>& u, const std::vector<double>& e,
+                                                    std::size_t max_lag);
+
 // Parameter standard deviations of a least-squares fit at its optimum x: the covariance
 // sigma^2 (J^T J)^-1 with sigma^2 = |r|^2 / (N - p) and J = dr/dx by central differences
 // (step: relative_step |x_j|, or relative_step where x_j = 0). `residuals` maps parameters to

@@ -77,6 +77,54 @@ std::vector<double> pooled_autocorrelation(const ForceFitTraces& t, std::size_t 
   return pooled;
 }
 
+// The runs' cross-correlations of an input with the residual on the kept samples, averaged by
+// their kept samples as the autocorrelation is; lags -lags..lags at index k + lags.
+std::vector<double> pooled_cross_correlation(const ForceFitTraces& t, const std::vector<double>& input, std::size_t lags) {
+  std::vector<double> pooled(2 * lags + 1, 0.0);
+  std::size_t samples = 0;
+  for (const RunSpan span : run_spans(t)) {
+    std::vector<double> u, e;
+    for (std::size_t i = span.from; i < span.to; ++i)
+      if (t.keep.empty() || t.keep[i]) {
+        u.push_back(input[i]);
+        e.push_back(t.measured[i] - t.predicted[i]);
+      }
+    if (e.size() <= 4 * lags) continue;
+    const std::vector<double> r = cross_correlation(u, e, lags);
+    if (r.size() != pooled.size()) continue;
+    for (std::size_t k = 0; k < r.size(); ++k) pooled[k] += static_cast<double>(e.size()) * r[k];
+    samples += e.size();
+  }
+  if (samples == 0) return {};
+  for (double& r : pooled) r /= static_cast<double>(samples);
+  return pooled;
+}
+
+InputCorrelation input_correlation(const std::string& name, const std::vector<double>& r, double bound, double lag_step) {
+  InputCorrelation c{name, 0.0, 0.0, 0.0, r};
+  if (r.empty()) return {name, NAN, NAN, NAN, {}};
+  const std::size_t lags = r.size() / 2;
+  std::size_t outside = 0;
+  for (std::size_t k = 0; k < r.size(); ++k) {
+    outside += std::abs(r[k]) > bound ? 1 : 0;
+    if (std::abs(r[k]) > c.max_abs_r) {
+      c.max_abs_r = std::abs(r[k]);
+      c.at_lag_s = (static_cast<double>(k) - static_cast<double>(lags)) * lag_step;
+    }
+  }
+  c.outside = static_cast<double>(outside) / static_cast<double>(r.size());
+  return c;
+}
+
+// After the lag step is known (0 when the runs' rates differ: lags then in samples).
+void add_input_correlations(const ForceFitTraces& t, ForceFitFigures& f) {
+  const double step = f.lag_step_s > 0.0 ? f.lag_step_s : 1.0;
+  for (const auto& [name, input] : {std::pair{"velocity", &t.velocity}, std::pair{"displacement", &t.displacement}}) {
+    if (input->size() != t.measured.size()) continue;
+    f.inputs.push_back(input_correlation(name, pooled_cross_correlation(t, *input, f.lags), f.acf_bound, step));
+  }
+}
+
 }  // namespace
 
 ForceFitFigures force_fit_figures(const ForceFitTraces& t, std::size_t lags) {
@@ -92,7 +140,10 @@ ForceFitFigures force_fit_figures(const ForceFitTraces& t, std::size_t lags) {
   f.acf_outside = share_outside(r, f.acf_bound);
   const std::vector<RunSpan> spans = run_spans(t);
   f.lag_step_s = step_of(t, spans.front());
-  if (t.run_starts.size() < 2) return f;
+  if (t.run_starts.size() < 2) {
+    add_input_correlations(t, f);
+    return f;
+  }
   for (std::size_t k = 0; k < spans.size(); ++k) {
     const RunSpan span = spans[k];
     RunFitFigures run;
@@ -109,6 +160,7 @@ ForceFitFigures force_fit_figures(const ForceFitTraces& t, std::size_t lags) {
     if (std::abs(run.lag_step_s - f.lag_step_s) > 0.01 * f.lag_step_s) f.lag_step_s = 0.0;
     f.runs.push_back(std::move(run));
   }
+  add_input_correlations(t, f);
   return f;
 }
 
@@ -117,6 +169,10 @@ Json force_fit_json(const ForceFitFigures& f) {
               {"max_N", f.max_N},               {"baseline_fit_percent", f.baseline_fit_percent},
               {"acf_lags", f.lags},             {"acf_lag_step_s", f.lag_step_s},
               {"acf_bound", f.acf_bound},       {"acf_outside_fraction", f.acf_outside}};
+  Json inputs = Json::array();
+  for (const InputCorrelation& c : f.inputs)
+    inputs.push_back({{"input", c.input}, {"max_abs_r", c.max_abs_r}, {"at_lag_s", c.at_lag_s}, {"outside_fraction", c.outside}});
+  out["input_xcorr"] = inputs;
   if (f.runs.empty()) return out;
   Json runs = Json::array();
   for (const RunFitFigures& r : f.runs)
@@ -152,15 +208,62 @@ void plot_autocorrelation(HtmlReport& report, const std::vector<double>& r, doub
 
 }  // namespace
 
+namespace {
+
+// The residual's cross-correlation with each input against the lag, between the 95 % bounds.
+void add_input_correlation_plot(HtmlReport& report, const std::string& name, const ForceFitFigures& f) {
+  if (f.inputs.empty() || f.inputs.front().r.empty()) return;
+  const bool in_ms = f.lag_step_s > 0.0;
+  const std::size_t lags = f.inputs.front().r.size() / 2;
+  std::vector<double> lag, upper(2 * lags + 1, f.acf_bound), lower(2 * lags + 1, -f.acf_bound);
+  for (std::size_t k = 0; k <= 2 * lags; ++k)
+    lag.push_back((static_cast<double>(k) - static_cast<double>(lags)) * (in_ms ? 1e3 * f.lag_step_s : 1.0));
+  std::vector<std::string> names = {"lag", "upper_95", "lower_95"};
+  std::vector<const std::vector<double>*> columns = {&lag, &upper, &lower};
+  std::vector<ReportFigure> rows;
+  std::string plot = "plot ";
+  const char* colours[] = {"#1f77b4", "#2ca02c"};
+  for (std::size_t i = 0; i < f.inputs.size() && i < 2; ++i) {
+    const InputCorrelation& c = f.inputs[i];
+    if (c.r.size() != lag.size()) continue;
+    names.push_back(c.input);
+    columns.push_back(&c.r);
+    plot += format("'xcorr.dat' using 1:%zu with lines lw 2 lc rgb '%s' title '%s', ", columns.size(), colours[i], c.input.c_str());
+    const std::string key = "fit.input_xcorr." + std::to_string(i);
+    rows.push_back({c.input + ": largest |r|", key + ".max_abs_r", c.max_abs_r, ""});
+    rows.push_back({c.input + ": at lag", key + ".at_lag_s", c.at_lag_s, in_ms ? "s" : "samples"});
+    rows.push_back({c.input + ": share of lags outside the bound", key + ".outside_fraction", c.outside, "(0 to 1)"});
+  }
+  report.figures("Residual against the inputs (as MATLAB's resid: cross-correlation, lag > 0 when the residual follows)", rows);
+  report.data("xcorr", names, columns);
+  report.plot("residual_input_correlation",
+              format("%s: cross-correlation of the residual with the velocity and the displacement, 95 %% bounds +-%.3g",
+                     name.c_str(), f.acf_bound),
+              format("set xlabel '%s'\nset ylabel 'cross-correlation [-]'\nset yrange [-1:1]\n", in_ms ? "lag [ms]" : "lag [samples]") +
+                  plot + "'xcorr.dat' using 1:2 with lines dt 2 lc rgb '#d62728' title '95 % bound', "
+                         "'xcorr.dat' using 1:3 with lines dt 2 lc rgb '#d62728' notitle\n");
+}
+
+}  // namespace
+
+std::vector<TimeMarker> run_markers(const std::vector<double>& time, const std::vector<std::size_t>& run_starts,
+                                    const std::vector<std::string>& run_names) {
+  std::vector<TimeMarker> out;
+  if (run_starts.size() < 2) return out;
+  for (std::size_t r = 0; r < run_starts.size(); ++r)
+    out.push_back({time[run_starts[r]], run_starts.size() <= 8 && r < run_names.size() ? run_names[r] : std::string()});
+  return out;
+}
+
 std::string run_boundaries(const std::vector<double>& time, const std::vector<std::size_t>& run_starts,
                            const std::vector<std::string>& run_names) {
   std::string out;
-  if (run_starts.size() < 2) return out;
-  for (std::size_t r = 0; r < run_starts.size(); ++r) {
-    const double at = time[run_starts[r]];
+  const std::vector<TimeMarker> markers = run_markers(time, run_starts, run_names);
+  for (std::size_t r = 0; r < markers.size(); ++r) {
+    const double at = markers[r].at;
     if (r > 0) out += format("set arrow from %.9g, graph 0 to %.9g, graph 1 nohead dt 3 lc rgb '#888888'\n", at, at);
-    if (run_starts.size() <= 8 && r < run_names.size())
-      out += format("set label '%s' at %.9g, graph 0.97 left front font ',8' noenhanced\n", run_names[r].c_str(), at);
+    if (!markers[r].label.empty())
+      out += format("set label '%s' at %.9g, graph 0.97 left front font ',8' noenhanced\n", markers[r].label.c_str(), at);
   }
   return out;
 }
@@ -204,23 +307,31 @@ ForceFitFigures add_force_fit(HtmlReport& report, const ForceFitTraces& t) {
       "force", {"time_s", "displacement_mm", "velocity_mm_s", "measured_N", "predicted_N", "residual_N", "baseline_N", "set_aside_N"},
       {&t.time, &x_mm, &v_mm, &t.measured, &t.predicted, &residual, &baseline, &aside});
   const std::string q = "'" + dat + "'";
-  // The baseline first, so that the measured and the final prediction are drawn over it.
+  // The baseline first and the measured last, so that the data is drawn over both models.
   const auto overlay = [&](int x, const char* x_label, const char* style) {
     std::string out = format("set xlabel '%s'\nset ylabel 'force [N]'\nplot ", x_label);
     if (!t.baseline.empty())
       out += format("%s using %d:7 with %s lc rgb '#9ecae1' title '%s', ", q.c_str(), x, style, t.baseline_label.c_str());
-    out += format("%s using %d:4 with %s lc rgb '#555555' title 'measured', %s using %d:5 with %s lc rgb '#d62728' title '%s'",
-                  q.c_str(), x, style, q.c_str(), x, style, t.predicted_label.c_str());
+    out += format("%s using %d:5 with %s lc rgb '#d62728' title '%s', %s using %d:4 with %s lc rgb '#555555' title 'measured'",
+                  q.c_str(), x, style, t.predicted_label.c_str(), q.c_str(), x, style);
     if (!t.keep.empty())
       out += format(", %s using %d:8 with points pt 6 ps 0.5 lc rgb '#ff7f0e' title 'set aside by screening'", q.c_str(), x);
     return out + "\n";
   };
   const bool several = t.run_starts.size() > 1;
   const char* time_label = several ? "time, each run after the one before [s]" : "time [s]";
-  report.plot("force_time", format("%s: measured and predicted force against time, fit %.2f %%", t.name.c_str(), f.fit_percent),
-              run_boundaries(t.time, t.run_starts, t.run_names) + overlay(1, time_label, "lines lw 1"));
-  report.plot("force_displacement", t.name + ": force against displacement", overlay(2, "displacement [mm]", "points pt 7 ps 0.2"));
-  report.plot("force_velocity", t.name + ": force against velocity", overlay(3, "velocity [mm/s]", "points pt 7 ps 0.2"));
+  const std::vector<TimeMarker> markers = run_markers(t.time, t.run_starts, t.run_names);
+  TimeChart force_chart{"force_time", format("%s: measured and predicted force against time, fit %.2f %%", t.name.c_str(), f.fit_percent),
+                        time_label, "force [N]", &t.time, {}, markers};
+  if (!t.baseline.empty()) force_chart.series.push_back({t.baseline_label, &t.baseline, "#9ecae1"});
+  force_chart.series.push_back({t.predicted_label, &t.predicted, "#d62728"});
+  force_chart.series.push_back({"measured", &t.measured, "#555555"});  // on top: the data, not the model
+  if (!t.keep.empty()) force_chart.series.push_back({"set aside by screening", &aside, "#ff7f0e", 2.0});
+  report.time_chart(force_chart);
+  report.plot("force_displacement", t.name + ": force against displacement", overlay(2, "displacement [mm]", "points pt 7 ps 0.2"),
+              HtmlReport::Drawing::raster);
+  report.plot("force_velocity", t.name + ": force against velocity", overlay(3, "velocity [mm/s]", "points pt 7 ps 0.2"),
+              HtmlReport::Drawing::raster);
 
   report.heading("Residual");
   report.figures("Residual whiteness (as MATLAB's resid)",
@@ -228,9 +339,8 @@ ForceFitFigures add_force_fit(HtmlReport& report, const ForceFitTraces& t) {
                   {"lag step", "fit.acf_lag_step_s", f.lag_step_s, "s"},
                   {"95 % bound, 1.96/sqrt(N)", "fit.acf_bound", f.acf_bound, ""},
                   {"share of lags outside the bound", "fit.acf_outside_fraction", f.acf_outside, "(0 to 1)"}});
-  report.plot("residual_time", t.name + ": residual, measured - predicted, against time",
-              run_boundaries(t.time, t.run_starts, t.run_names) + "set xlabel '" + time_label + "'\nset ylabel 'residual [N]'\nplot " + q +
-                  " using 1:6 with lines lw 1 lc rgb '#1f77b4' title 'measured - predicted'\n");
+  report.time_chart({"residual_time", t.name + ": residual, measured - predicted, against time", time_label, "residual [N]",
+                     &t.time, {{"measured - predicted", &residual, "#1f77b4"}}, markers});
   std::size_t pooled_samples = 0;
   const std::vector<double> r = pooled_autocorrelation(t, f.lags, pooled_samples);
   const bool in_ms = f.lag_step_s > 0.0;
@@ -238,9 +348,11 @@ ForceFitFigures add_force_fit(HtmlReport& report, const ForceFitTraces& t) {
                        in_ms ? "lag [ms]" : "lag [samples, each run at its own rate]",
                            format("%s: autocorrelation of the residual, 95 %% bounds +-%.3g (%.0f %% of lags outside)",
                                   t.name.c_str(), f.acf_bound, 100.0 * f.acf_outside));
+  add_input_correlation_plot(report, t.name, f);
   report.plot("residual_velocity", t.name + ": residual against velocity (structure left in the model)",
               "set xlabel 'velocity [mm/s]'\nset ylabel 'residual [N]'\nplot " + q +
-                  " using 3:6 with points pt 7 ps 0.2 lc rgb '#1f77b4' title 'measured - predicted'\n");
+                  " using 3:6 with points pt 7 ps 0.2 lc rgb '#1f77b4' title 'measured - predicted'\n",
+              HtmlReport::Drawing::raster);
   return f;
 }
 

@@ -38,6 +38,15 @@ struct RunFitFigures {
   double acf_outside = 0.0;  // fraction of lags 1..lags with |r| above its own 95 % bound
 };
 
+// How much of an input the residual still carries (MATLAB resid's cross-correlation test).
+struct InputCorrelation {
+  std::string input;         // "velocity", "displacement"
+  double max_abs_r = 0.0;    // the largest |r(k)| over k = -lags..lags
+  double at_lag_s = 0.0;     // its lag (> 0: the residual follows the input); in samples when the runs' rates differ
+  double outside = 0.0;      // fraction of the lags with |r| above the 95 % bound
+  std::vector<double> r;     // r(k) for k = -lags..lags (the report's plot)
+};
+
 struct ForceFitFigures {
   double fit_percent = 0.0;  // nrmse_fit_percent over the kept samples
   double rms_N = 0.0;        // of measured - predicted over the kept samples
@@ -47,6 +56,7 @@ struct ForceFitFigures {
   double lag_step_s = 0.0;
   double acf_bound = 0.0;    // 95 % bound, 1.96/sqrt(N)
   double acf_outside = 0.0;  // fraction of lags 1..lags with |r| above it
+  std::vector<InputCorrelation> inputs;  // the residual against the velocity and the displacement
   // With several runs: each run's figures; the autocorrelation above is then the runs' own,
   // averaged by their kept samples, at lags in samples (lag_step_s is 0 when their rates differ).
   std::vector<RunFitFigures> runs;
@@ -54,13 +64,18 @@ struct ForceFitFigures {
 [[nodiscard]] ForceFitFigures force_fit_figures(const ForceFitTraces& t, std::size_t lags = 100);
 
 // The figures as the tools' JSON "fit" object: fit_percent, rms_N, max_N, baseline_fit_percent,
-// acf_lags, acf_lag_step_s, acf_bound, acf_outside_fraction. The report's cells name them "fit.*".
+// acf_lags, acf_lag_step_s, acf_bound, acf_outside_fraction, input_xcorr (one object per input:
+// input, max_abs_r, at_lag_s, outside_fraction). The report's cells name them "fit.*".
 [[nodiscard]] Json force_fit_json(const ForceFitFigures& f);
 
 // gnuplot commands marking where each run after the first begins on a time axis (a dotted
 // line each, named while there are eight runs or fewer); none for one run.
 [[nodiscard]] std::string run_boundaries(const std::vector<double>& time, const std::vector<std::size_t>& run_starts,
                                          const std::vector<std::string>& run_names);
+
+// The same boundaries for a time chart: where each run begins, named while there are eight or fewer.
+[[nodiscard]] std::vector<TimeMarker> run_markers(const std::vector<double>& time, const std::vector<std::size_t>& run_starts,
+                                                  const std::vector<std::string>& run_names);
 
 // The per-run figures as text lines (none for one run), for the tools' summaries.
 [[nodiscard]] std::string per_run_text(const ForceFitFigures& f);

@@ -14,6 +14,13 @@
 
 namespace mrd::tools {
 
+namespace web {
+extern const char kUplotJs[];
+extern const char kUplotCss[];
+extern const char kUplotLicence[];
+extern const char kTimeChartJs[];
+}  // namespace web
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -26,7 +33,7 @@ constexpr const char* kStyle =
     "table{border-collapse:collapse;margin:.5em 0}td,th{border:1px solid #ccc;padding:2px 8px;text-align:left}"
     "td.num{text-align:right;font-family:monospace}caption{text-align:left;font-weight:bold;padding:4px 0}"
     "figure{margin:1em 0}figcaption{font-size:.9em;color:#555}svg{max-width:100%;height:auto}"
-    "code{font-size:.9em;word-break:break-all}";
+    "code{font-size:.9em;word-break:break-all}img.plot{max-width:100%;height:auto}.mrd-chart-plot{min-height:360px}";
 
 std::string quote_shell(const std::string& arg) {
   if (!arg.empty() && arg.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_./=:,+@%") ==
@@ -45,6 +52,19 @@ std::string svg_element(const std::string& path) {
   const auto end = text.rfind("</svg>");
   if (start == std::string::npos || end == std::string::npos) return {};
   return text.substr(start, end + 6 - start);
+}
+
+// A file's bytes, base64 (for an inlined PNG); "" when it cannot be read.
+std::string base64_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return in.bad() || bytes.empty() ? std::string() : base64(bytes.data(), bytes.size());
+}
+
+// JSON inside <script>: "</" would end the element early.
+std::string script_safe(std::string json) {
+  for (std::size_t at = json.find("</"); at != std::string::npos; at = json.find("</", at + 3)) json.replace(at, 2, "<\\/");
+  return json;
 }
 
 // A number with its JSON key: the full value in data-value, six digits shown.
@@ -118,6 +138,31 @@ void HtmlReport::parameters(const std::string& caption, const std::vector<Parame
   pieces_.push_back(out + "</table>\n");
 }
 
+void HtmlReport::correlation_matrix(const std::string& caption, const std::vector<std::string>& names,
+                                    const std::vector<std::vector<double>>& correlation) {
+  std::string out = "<table class=\"correlation\"><caption>" + html_escape(caption) + "</caption>\n<tr><th></th>";
+  for (std::size_t j = 0; j < names.size(); ++j) out += "<th title=\"" + html_escape(names[j]) + "\">" + std::to_string(j + 1) + "</th>";
+  out += "</tr>\n";
+  std::vector<std::vector<std::string>> close;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    out += "<tr><th>" + std::to_string(i + 1) + " " + html_escape(names[i]) + "</th>";
+    for (std::size_t j = 0; j < names.size(); ++j) {
+      const double r = i < correlation.size() && j < correlation[i].size() ? correlation[i][j] : NAN;
+      if (!std::isfinite(r)) {
+        out += "<td class=\"num\">&ndash;</td>";
+        continue;
+      }
+      // White at 0, full red at |r| = 1.
+      const int light = static_cast<int>(std::lround(100.0 - 45.0 * std::min(1.0, std::abs(r))));
+      out += format("<td class=\"num\" style=\"background:hsl(0,80%%,%d%%)\">%.2f</td>", light, r);
+      if (j > i && std::abs(r) > 0.95) close.push_back({names[i], names[j], format("%.4f", r)});
+    }
+    out += "</tr>\n";
+  }
+  pieces_.push_back(out + "</table>\n");
+  table("Pairs correlated beyond 0.95 (the run hardly separates them)", {"parameter", "parameter", "r"}, close);
+}
+
 void HtmlReport::table(const std::string& caption, const std::vector<std::string>& header,
                        const std::vector<std::vector<std::string>>& rows) {
   std::string out = "<table><caption>" + html_escape(caption) + "</caption>\n<tr>";
@@ -172,9 +217,21 @@ std::string HtmlReport::data(const std::string& name, const std::vector<std::str
   return file;
 }
 
-void HtmlReport::plot(const std::string& name, const std::string& caption, const std::string& body) {
-  plots_.emplace_back(pieces_.size(), Plot{name, caption, body});
+void HtmlReport::plot(const std::string& name, const std::string& caption, const std::string& body, Drawing drawing) {
+  plots_.emplace_back(pieces_.size(), Plot{name, caption, body, drawing});
   pieces_.emplace_back();
+}
+
+void HtmlReport::time_chart(const TimeChart& chart) {
+  const Json data = time_chart_data(chart);
+  const double per_point = data["samples_per_point"].get<double>();
+  const std::string thinning =
+      per_point > 1.0 ? format("; long run: each point pair is the min and max of %.3g samples", 2.0 * per_point) : "";
+  pieces_.push_back("<figure class=\"mrd-chart\" id=\"" + html_escape(chart.name) +
+                    "\">\n<div class=\"mrd-chart-plot\"></div>\n<script type=\"application/json\">" +
+                    script_safe(data.dump()) + "</script>\n<figcaption>" + html_escape(chart.caption) +
+                    " (drag to zoom, double-click for the whole run" + html_escape(thinning) + ")</figcaption></figure>\n");
+  has_charts_ = true;
 }
 
 std::string HtmlReport::write() {
@@ -183,9 +240,11 @@ std::string HtmlReport::write() {
   for (const auto& [at, p] : plots_) {
     const fs::path gp = fs::path(directory_) / (p.name + ".gp");
     std::ofstream out(gp);
+    const bool png = p.drawing == Drawing::raster;
     out << "# " << p.caption << "\n# redraw: gnuplot " << p.name << ".gp (in this directory)\n"
-        << "set terminal svg noenhanced size 860,440 font 'Helvetica,12' background '#ffffff'\n"
-        << "set output '" << p.name << ".svg'\nset grid\nset key below horizontal noenhanced\n"
+        << (png ? "set terminal pngcairo noenhanced size 860,440 font 'Helvetica,10' background '#ffffff'\n"
+                : "set terminal svg noenhanced size 860,440 font 'Helvetica,12' background '#ffffff'\n")
+        << "set output '" << p.name << (png ? ".png" : ".svg") << "'\nset grid\nset key below horizontal noenhanced\n"
         << p.body << (p.body.empty() || p.body.back() == '\n' ? "" : "\n") << "unset output\n";
     if (!out) return "cannot write " + gp.string();
     load += "reset\nload '" + p.name + ".gp'\n";
@@ -198,15 +257,27 @@ std::string HtmlReport::write() {
     why = run_gnuplot("cd '" + quoted + "'\n" + load);
   }
   for (const auto& [at, p] : plots_) {
-    std::string svg = svg_element((fs::path(directory_) / (p.name + ".svg")).string());
-    if (svg.empty()) svg = "<p>(plot not drawn: " + html_escape(why.empty() ? "no svg" : why) + ")</p>";
+    std::string svg;
+    if (p.drawing == Drawing::raster) {
+      const std::string png = base64_file((fs::path(directory_) / (p.name + ".png")).string());
+      if (!png.empty())
+        svg = "<img class=\"plot\" width=\"860\" height=\"440\" alt=\"" + html_escape(p.caption) + "\" src=\"data:image/png;base64," + png + "\">";
+    } else {
+      svg = svg_element((fs::path(directory_) / (p.name + ".svg")).string());
+    }
+    if (svg.empty()) svg = "<p>(plot not drawn: " + html_escape(why.empty() ? "no image" : why) + ")</p>";
     pieces_[at] = "<figure id=\"" + html_escape(p.name) + "\">\n" + svg + "\n<figcaption>" + html_escape(p.caption) +
                   " (script: " + html_escape(p.name) + ".gp)</figcaption></figure>\n";
   }
   std::ofstream out(html_path());
   out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" << html_escape(title_)
-      << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n<h1>" << html_escape(title_) << "</h1>\n";
+      << "</title>\n<style>" << kStyle << (has_charts_ ? web::kUplotCss : "") << "</style>\n</head>\n<body>\n<h1>"
+      << html_escape(title_) << "</h1>\n";
   for (const auto& piece : pieces_) out << piece;
+  // uPlot with its MIT licence, then the charts' own script, inlined.
+  if (has_charts_)
+    out << "<script>/*\n" << web::kUplotLicence << "*/\n" << web::kUplotJs << "</script>\n<script>" << web::kTimeChartJs
+        << "</script>\n";
   out << "</body>\n</html>\n";
   if (!out) return "cannot write " + html_path();
   return why;

@@ -3,9 +3,12 @@
 #include <string>
 #include <vector>
 
-// One self-contained report.html in a directory: headings, text, tables and plots, the plots
-// drawn by gnuplot's svg terminal and inlined. Each plot's data (.dat) and script (.gp) stay
-// beside the HTML: `cd DIR && gnuplot NAME.gp` redraws NAME.svg after restyling.
+#include "tools/report/time_chart.hpp"
+
+// One self-contained report.html in a directory: headings, text, tables, zoomable time charts
+// (uPlot, inlined once) and plots drawn by gnuplot and inlined (SVG, or PNG where a plot has more
+// points than a vector file should carry). Each plot's data (.dat) and script (.gp) stay beside
+// the HTML: `cd DIR && gnuplot NAME.gp` redraws it after restyling.
 namespace mrd::tools {
 
 // One figure of a table, with the JSON path it stands for (dot-separated; "" for none): the cell
@@ -43,6 +46,10 @@ class HtmlReport {
     std::string key, sd_key;
   };
   void parameters(const std::string& caption, const std::vector<Parameter>& rows);
+  // The parameters' correlation matrix (as MATLAB's present/getcov): each cell shaded by |r|, the
+  // pairs above 0.95 named below it (the run hardly tells them apart). NaN: not determined.
+  void correlation_matrix(const std::string& caption, const std::vector<std::string>& names,
+                          const std::vector<std::vector<double>>& correlation);
   // Cells are text (escaped here).
   void table(const std::string& caption, const std::vector<std::string>& header,
              const std::vector<std::vector<std::string>>& rows);
@@ -54,8 +61,12 @@ class HtmlReport {
   std::string data(const std::string& name, const std::vector<std::string>& column_names,
                    const std::vector<const std::vector<double>*>& columns, std::size_t max_rows = 20000);
   // A plot: `body` is gnuplot after the terminal and output (labels, `plot '<dat>' using ...`),
-  // with data file names relative to the directory.
-  void plot(const std::string& name, const std::string& caption, const std::string& body);
+  // with data file names relative to the directory. Scatter plots of long runs are drawn as PNG.
+  enum class Drawing { vector, raster };
+  void plot(const std::string& name, const std::string& caption, const std::string& body,
+            Drawing drawing = Drawing::vector);
+  // An interactive chart against time (drag to zoom; every chart of the report zooms together).
+  void time_chart(const TimeChart& chart);
 
   // Writes the .dat (already written), .gp, .svg and report.html. Returns "" or why not.
   [[nodiscard]] std::string write();
@@ -66,11 +77,13 @@ class HtmlReport {
  private:
   struct Plot {
     std::string name, caption, body;
+    Drawing drawing = Drawing::vector;
   };
   std::string title_, directory_, error_;
   // HTML pieces in order; a plot stands as an empty piece with its index in plot_at_.
   std::vector<std::string> pieces_;
   std::vector<std::pair<std::size_t, Plot>> plots_;
+  bool has_charts_ = false;
 };
 
 // Text for HTML: & < > " escaped.

@@ -3,8 +3,8 @@
 #include <string>
 #include <string_view>
 
-// SHA-256 (FIPS 180-4) of the input files a report names, so a reader can tell that the file
-// on their disk is the one the report was made from.
+// SHA-256 (FIPS 180-4, from OpenSSL's libcrypto) of the input files a report names, so a reader can
+// tell that the file on their disk is the one the report was made from.
 namespace mrd::tools {
 
 // Lower-case hex digest of `bytes`.

@@ -65,7 +65,8 @@ std::vector<ParameterEstimate> model_uncertainty(const model::DamperModel& fitte
   std::vector<ParameterEstimate> out;
   for (std::size_t j = 0; j < count; ++j) {
     const std::string_view name = kParameters[j].name;
-    out.push_back({kParameters[j].name, kParameters[j].unit, x[j], u.standard_deviation[j], name.ends_with("_shape")});
+    out.push_back({kParameters[j].name, kParameters[j].unit, x[j], u.standard_deviation[j], name.ends_with("_shape"),
+                   u.correlation[j]});
   }
   return out;
 }

@@ -17,6 +17,7 @@ struct ParameterEstimate {
   double value = 0.0;
   double standard_deviation = 0.0;  // NaN where the run cannot determine it
   bool shape = false;  // a shape coordinate about 0 (its sd is judged against 1, not the value)
+  std::vector<double> correlation;  // with each estimate of the list, in order; NaN: not determined
 };
 
 // Whether the run determines the parameter: a finite standard deviation no larger than the

@@ -199,7 +199,7 @@ std::string residual_json(const ResidualResult& r, const ForceFitFigures* fit) {
   Json parameters = Json::array();
   for (const ParameterEstimate& p : r.parameters)
     parameters.push_back({{"name", p.name}, {"value", p.value}, {"sd", p.standard_deviation}, {"unit", p.unit},
-                          {"determined", determined(p)}});
+                          {"determined", determined(p)}, {"correlation", p.correlation}});
   Json ambiguous = Json::array(), ambiguity_tests = Json::array();
   for (const AmbiguousGroup& group : r.ambiguous) {
     ambiguous.push_back(group.members);
@@ -396,6 +396,14 @@ std::string write_residual_report(const std::vector<record::RecordedRun>& runs, 
   }
   report.parameters("Final model: standard deviations from sigma^2 (J^T J)^-1 at the fit (central differences over "
                     "the fitting series)", rows);
+  std::vector<std::string> names;
+  std::vector<std::vector<double>> correlation;
+  for (const ParameterEstimate& p : r.parameters) {
+    names.push_back(p.name);
+    correlation.push_back(p.correlation);
+  }
+  report.correlation_matrix("Correlation of the final model's parameter estimates (the JSON's parameters[].correlation)",
+                            names, correlation);
   std::vector<std::vector<std::string>> flagged;
   for (const ParameterEstimate& p : r.parameters)
     if (!determined(p))

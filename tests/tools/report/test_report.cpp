@@ -31,6 +31,9 @@ TEST(ReportSha256, ReadsAFileWholeAndNamesAnUnreadableOneEmpty) {
   std::ofstream(path) << "abc";
   EXPECT_EQ(sha256_file(path.string()), sha256_hex("abc"));
   EXPECT_EQ(sha256_file((path.string() + ".missing")), "");
+  // FIPS 180-2's third example, a million 'a': read in several pieces.
+  std::ofstream(path) << std::string(1000000, 'a');
+  EXPECT_EQ(sha256_file(path.string()), "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
 }
 
 TEST(ReportFit, NrmseFitIsMatlabsCompareFigure) {
@@ -44,6 +47,41 @@ TEST(ReportFit, NrmseFitIsMatlabsCompareFigure) {
   EXPECT_DOUBLE_EQ(nrmse_fit_percent({1.0, 2.0, 3.0, 4.0}, {1.0, 2.0, 3.0, 40.0}, {true, true, true, false}), 100.0);
   EXPECT_TRUE(std::isnan(nrmse_fit_percent({1.0, 1.0}, {1.0, 1.0})));
   EXPECT_TRUE(std::isnan(nrmse_fit_percent(y, {1.0})));
+}
+
+// A residual that carries the input 3 samples late, e_i = 0.5 u_{i-3} + n_i with u and n unit
+// white noise: r(3) = 0.5 / sqrt(0.25 + 1), every other lag within the noise of an estimate.
+TEST(ReportFit, CrossCorrelationFindsTheInputALateResidualCarries) {
+  std::mt19937 rng(5);
+  std::normal_distribution<double> unit(0.0, 1.0);
+  const std::size_t n = 40000;
+  std::vector<double> u(n), e(n);
+  for (double& x : u) x = unit(rng);
+  for (std::size_t i = 0; i < n; ++i) e[i] = (i >= 3 ? 0.5 * u[i - 3] : 0.0) + unit(rng);
+  const std::vector<double> r = cross_correlation(u, e, 10);
+  ASSERT_EQ(r.size(), 21u);
+  EXPECT_NEAR(r[10 + 3], 0.5 / std::sqrt(1.25), 0.02);
+  for (std::size_t k = 0; k < r.size(); ++k)
+    if (k != 13) {
+      EXPECT_LT(std::abs(r[k]), 4.0 / std::sqrt(static_cast<double>(n))) << "lag " << static_cast<int>(k) - 10;
+    }
+  EXPECT_TRUE(cross_correlation(u, std::vector<double>(n, 1.0), 10).empty());  // a constant residual: nothing to say
+  // Through the report's figures: the velocity's peak at +3 ms on a 1 kHz run.
+  ForceFitTraces t;
+  for (std::size_t i = 0; i < n; ++i) {
+    t.time.push_back(1e-3 * static_cast<double>(i));
+    t.velocity.push_back(u[i]);
+    t.displacement.push_back(unit(rng));
+    t.predicted.push_back(0.0);
+    t.measured.push_back(e[i]);
+  }
+  const ForceFitFigures f = force_fit_figures(t, 10);
+  ASSERT_EQ(f.inputs.size(), 2u);
+  EXPECT_EQ(f.inputs[0].input, "velocity");
+  EXPECT_NEAR(f.inputs[0].at_lag_s, 3e-3, 1e-9);
+  EXPECT_NEAR(f.inputs[0].max_abs_r, 0.447, 0.02);
+  EXPECT_LT(f.inputs[1].max_abs_r, 4.0 / std::sqrt(static_cast<double>(n)));  // the displacement is unrelated
+  EXPECT_EQ(force_fit_json(f)["input_xcorr"][0]["at_lag_s"].get<double>(), f.inputs[0].at_lag_s);
 }
 
 TEST(ReportFit, AutocorrelationOfAnAlternatingSequenceAlternates) {
@@ -182,7 +220,7 @@ TEST(ReportFit, SeveralRunsHaveTheirOwnFiguresAndSteps) {
   EXPECT_TRUE(mrd::tools::force_fit_figures(t, 10).runs.empty());
 }
 
-TEST(ReportHtml, InlinesOneSvgPerPlotAndKeepsTheScripts) {
+TEST(ReportHtml, InlinesOneImagePerPlotAndKeepsTheScripts) {
   const auto dir = std::filesystem::temp_directory_path() / "mrd_report_html";
   std::filesystem::remove_all(dir);
   HtmlReport report("a <test> & \"quotes\"", dir.string());
@@ -191,12 +229,16 @@ TEST(ReportHtml, InlinesOneSvgPerPlotAndKeepsTheScripts) {
   const std::string dat = report.data("series", {"t", "f"}, {&t, &f});
   report.plot("one", "first", "plot '" + dat + "' using 1:2 with lines title 'f'");
   report.plot("two", "second", "plot '" + dat + "' using 2:1 with points title 'g'");
+  report.plot("three", "third", "plot '" + dat + "' using 2:1 with points title 'h'", HtmlReport::Drawing::raster);
   ASSERT_EQ(report.write(), "");
   const std::string html = report_slurp(dir / "report.html");
   std::size_t svgs = 0;
   for (auto at = html.find("<svg"); at != std::string::npos; at = html.find("<svg", at + 1)) ++svgs;
   EXPECT_EQ(svgs, 2u);
   EXPECT_EQ(html.find("<?xml"), std::string::npos);  // inlined without the prologue
+  EXPECT_NE(html.find("<img class=\"plot\" width=\"860\" height=\"440\" alt=\"third\" src=\"data:image/png;base64,iVBORw0KGgo"),
+            std::string::npos);
+  EXPECT_EQ(html.find("uPlot"), std::string::npos);  // no time chart, no uPlot
   EXPECT_NE(html.find("a &lt;test&gt; &amp; &quot;quotes&quot;"), std::string::npos);
   EXPECT_NE(html.find("data-key=\"fit.fit_percent\" data-value=\"97.5\""), std::string::npos);
   EXPECT_NE(html.find("data-key=\"x\" data-value=\"nan\""), std::string::npos);
