@@ -38,6 +38,14 @@ void ValidationReport::require_positive(std::string_view field, double value, do
   }
 }
 
+void ValidationReport::expect_typical(std::string_view field, double value, double lo, double hi,
+                                      std::string_view what, std::string_view quantity) {
+  if (std::isfinite(value) && (value < lo || value > hi)) {
+    warning(field, (quantity.empty() ? std::string() : std::string(quantity) + " = ") + format_value(value) + " is outside what " + std::string(what) + " show (" + format_value(lo) + " to " +
+                       format_value(hi) + "): a fit run to an edge, or a unit slip? (docs/MODEL.md, \"Typical ranges\")");
+  }
+}
+
 void ValidationReport::require_non_negative(std::string_view field, double value) {
   if (!std::isfinite(value) || value < 0.0) {
     error(field, "must be a finite value >= 0, got " + format_value(value));

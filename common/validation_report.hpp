@@ -34,6 +34,10 @@ class ValidationReport {
   void require_positive(std::string_view field, double value, double max);
   void require_non_negative(std::string_view field, double value);
   void require_in_range(std::string_view field, double value, double lo, double hi, bool hi_open);
+  // A warning when `value` lies outside [lo, hi], what real devices show; `what` names them, and
+  // `quantity` the value when it is not the field itself ("k/a").
+  void expect_typical(std::string_view field, double value, double lo, double hi, std::string_view what,
+                      std::string_view quantity = {});
 
   // Adopts another report's issues under `prefix` ("tcp" + "port" -> "tcp.port").
   void merge(const ValidationReport& other, std::string_view prefix);

@@ -60,6 +60,8 @@ HalSet::HalSet(const config::ControllerConfig& config, const hal::Clock& clock) 
     modbus_ = std::make_unique<hal::modbus::ModbusBackend>(config.modbus, clock);
   }
   if (b.uses(config::DeviceBackend::kCan)) can_ = std::make_unique<hal::can::SocketCanBackend>(config.can, clock);
+  can_lvdt_ = b.lvdt == config::DeviceBackend::kCan;
+  can_feedback_ = b.driver == config::DeviceBackend::kCan;
   if (b.lines == config::LinesBackend::kGpio) gpio_ = std::make_unique<hal::gpio::GpiodLines>(config.gpio);
 
   lvdt_ = choose<hal::DisplacementSource>(b.lvdt, mock_ ? &mock_->lvdt : nullptr, modbus_.get(),
@@ -113,6 +115,9 @@ std::vector<std::string> HalSet::link_problems() const {
   std::vector<std::string> out;
   if (modbus_) {
     if (const auto problem = modbus_->link_problem()) out.push_back("modbus: " + *problem);
+  }
+  if (can_) {
+    if (const auto problem = can_->link_problem(can_lvdt_, can_feedback_)) out.push_back("can: " + *problem);
   }
   return out;
 }

@@ -54,6 +54,8 @@ class HalSet {
   hal::DemandSource* demand_ = nullptr;  // force mode only
   hal::LoadCellSource* load_cell_ = nullptr;  // force mode with backends.load_cell only
   std::vector<hal::IoThread*> threads_;
+  bool can_lvdt_ = false;      // which frames the CAN link should carry
+  bool can_feedback_ = false;
 };
 
 }  // namespace mrd::firmware

@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "model/saturating_shape.hpp"
+#include "model/typical_ranges.hpp"
 
 namespace mrd::model {
 
@@ -19,6 +20,10 @@ ValidationReport validate(const DamperGeometry& g) {
   report.require_in_range("seal_friction", g.seal_friction, 0.0, 1e7, false);  // [N]
   if (report.ok() && g.gap >= 0.5 * g.piston_diameter) {
     report.error("gap", "must be much smaller than the piston radius (Eq. 12 assumes a thin gap)");
+  }
+  if (report.ok()) {
+    report.expect_typical("sign_velocity_scale", g.sign_velocity_scale, kTypicalSignVelocity.lo, kTypicalSignVelocity.hi,
+                          "dampers' yield transitions [m/s]");
   }
   return report;
 }

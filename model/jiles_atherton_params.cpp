@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "model/typical_ranges.hpp"
+
 namespace mrd::model {
 
 ValidationReport validate(const JilesAthertonParams& p) {
@@ -16,6 +18,14 @@ ValidationReport validate(const JilesAthertonParams& p) {
     report.warning("alpha", "alpha*Ms/(3a) = " + format_value(p.mean_field_gain()) +
                                 " >= 1: the anhysteretic curve folds back and Eq. 10 can run away "
                                 "at some loop amplitudes (docs/MODEL.md)");
+  } else if (report.ok()) {
+    report.expect_typical("alpha", p.mean_field_gain(), kTypicalMeanFieldGain.lo, kTypicalMeanFieldGain.hi,
+                          "soft and hard steels", "alpha*Ms/(3a)");
+  }
+  if (report.ok()) {
+    report.expect_typical("k", p.k / p.a, kTypicalPinningOverShape.lo, kTypicalPinningOverShape.hi,
+                          "soft irons to hard steels", "k/a");
+    report.expect_typical("c", p.c, kTypicalReversibility.lo, kTypicalReversibility.hi, "soft irons to hard steels");
   }
   return report;
 }

@@ -11,6 +11,7 @@
 
 #include "model/compile_time_fit.hpp"
 #include "model/saturating_shape.hpp"
+#include "model/typical_ranges.hpp"
 
 namespace mrd::model {
 
@@ -32,6 +33,11 @@ ValidationReport validate(const MrFluid& fluid) {
   if (report.ok() && fluid.particle_diameter > 1e-3) {
     report.error("particle_diameter", "must be given in metres (MR particles are 0.1-100 um)");
   }
+  if (!report.ok()) return report;
+  report.expect_typical("viscosity", fluid.viscosity, kTypicalViscosity.lo, kTypicalViscosity.hi, "MR fluids [Pa s]");
+  report.expect_typical("field_exponent", fluid.field_exponent, kTypicalFieldExponent.lo, kTypicalFieldExponent.hi,
+                        "MR fluids' yield power laws");
+  report.expect_typical("flow_index", fluid.flow_index, kTypicalFlowIndex.lo, kTypicalFlowIndex.hi, "MR fluids");
   return report;
 }
 

@@ -110,15 +110,18 @@ int main(int argc, char** argv) {
     progress.reset();  // ends the status line before the summary
 
     std::fputs(residual_summary(runs, result).c_str(), stdout);
+    ForceFitTraces traces = residual_traces(runs, series, result);
     if (spencer) {
-      const ForceError s = spencer_dyke_reference(runs.front(), series);
+      traces.reference = spencer_dyke_prediction(runs.front(), series);
+      traces.reference_label = "Spencer 1997 (published parameters)";
+      const ForceError s = force_error(series.force, traces.reference);
       const ForceError ours = force_error(series.force, result.predicted_after);
       std::printf("reference, Spencer 1997 (published parameters): RMS %.4g N, max %.4g N, NRMSE %.4g; "
                   "ours before %.4g, after %.4g\n",
                   s.rms, s.max, s.nrmse, result.before.all / ours.measured_range, ours.nrmse);
     }
     int status = 0;
-    const ForceFitFigures fit = force_fit_figures(residual_traces(runs, series, result));
+    const ForceFitFigures fit = force_fit_figures(traces);
     std::fputs(per_run_text(fit).c_str(), stdout);
     if (!json_path.empty() && !mrd::record::write_text_file(json_path, residual_json(result, &fit))) {
       std::fprintf(stderr, "mrd-residual: cannot write %s\n", json_path.c_str());
@@ -148,7 +151,7 @@ int main(int argc, char** argv) {
       if (!run_options.config_path().empty()) inputs.push_back(run_options.config_path());
       const Provenance provenance =
           provenance_of("mrd-residual", argc, argv, inputs, std::to_string(options.seed));
-      if (const auto why = write_residual_report(runs, series, result, provenance, report_dir); !why.empty()) {
+      if (const auto why = write_residual_report(runs, series, result, traces, provenance, report_dir); !why.empty()) {
         std::fprintf(stderr, "mrd-residual: report: %s\n", why.c_str());
         status = 3;
       }

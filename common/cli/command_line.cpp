@@ -41,6 +41,21 @@ std::optional<std::string> not_a_number(const CLI::ConversionError& e) {
   return text.substr(prefix.size(), eq - prefix.size()) + ": '" + text.substr(eq + 3) + "' is not a number";
 }
 
+// CLI11 reads "-1" into an unsigned count or seed as 2^64 - 1; every unsigned option of the app
+// and its subcommands refuses a sign instead. The validator has no description, so --help keeps
+// its text.
+void refuse_negative_unsigned(CLI::App& app) {
+  for (CLI::Option* option : app.get_options()) {
+    if (!option->get_type_name().starts_with("UINT")) continue;
+    option->check(CLI::Validator(
+        [](std::string& text) {
+          return !text.empty() && text.front() == '-' ? text + " is negative: a count or a seed is 0 or more" : std::string();
+        },
+        ""));
+  }
+  for (CLI::App* sub : app.get_subcommands({})) refuse_negative_unsigned(*sub);
+}
+
 }  // namespace
 
 CLI::Validator finite_in(double lo, double hi) {
@@ -94,6 +109,7 @@ bool check_outputs(std::string_view program, std::initializer_list<const std::st
 }
 
 std::optional<int> parse(CLI::App& app, int argc, const char* const* argv) {
+  refuse_negative_unsigned(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --help-all, --version

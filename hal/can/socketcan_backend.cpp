@@ -8,8 +8,10 @@
 
 #include <array>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <string>
+#include <vector>
 
 namespace mrd::hal::can {
 
@@ -156,13 +158,42 @@ IoStatus SocketCanBackend::write_setpoint(double amps) {
   frame.len = static_cast<std::uint8_t>(kFrameLength);
   std::memcpy(frame.data, encoded.frame.data.data(), kFrameLength);
   if (send(fd_, &frame, sizeof frame, MSG_DONTWAIT) != static_cast<ssize_t>(sizeof frame)) {
+    last_send_errno_.store(errno, std::memory_order_relaxed);
     counters_.bump(CanEvent::kTxErrors);
     return IoStatus::kIoError;
   }
+  last_send_errno_.store(0, std::memory_order_relaxed);
   // The receiver expects +1 per frame it sees, so only a sent frame advances the counter.
   tx_counter_ = static_cast<std::uint8_t>((tx_counter_ + 1) & 0x0F);
   counters_.bump(CanEvent::kFramesSent);
   return IoStatus::kOk;
+}
+
+std::optional<std::string> SocketCanBackend::link_problem(bool lvdt, bool feedback) const {
+  const CanCounters c = counters();
+  std::vector<std::string> parts;
+  const auto count = [](std::uint64_t n, const char* one, const char* many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+  };
+  char id[16];
+  if (lvdt && c[CanEvent::kLvdtFrames] == 0) {
+    std::snprintf(id, sizeof id, "0x%X", config_.lvdt_id);
+    parts.push_back(std::string("no LVDT frame (id ") + id + ") received");
+  }
+  if (feedback && c[CanEvent::kFeedbackFrames] == 0) {
+    std::snprintf(id, sizeof id, "0x%X", config_.feedback_id);
+    parts.push_back(std::string("no current feedback frame (id ") + id + ") received");
+  }
+  if (!tx_allowed())
+    parts.push_back("sends held back after bus-off (" + count(c[CanEvent::kBusOff], "time", "times") + ", restarted " +
+                    std::to_string(c[CanEvent::kRestarted]) + ")");
+  if (const int error = last_send_errno_.load(std::memory_order_relaxed); error != 0)
+    parts.push_back(count(c[CanEvent::kTxErrors], "failed send", "failed sends") + " (last: " + std::strerror(error) + ")");
+  if (parts.empty()) return std::nullopt;
+  if (c[CanEvent::kErrorFrames] > 0) parts.push_back(count(c[CanEvent::kErrorFrames], "error frame", "error frames"));
+  std::string text = config_.interface + ":";
+  for (std::size_t i = 0; i < parts.size(); ++i) text += (i ? ", " : " ") + parts[i];
+  return text;
 }
 
 void SocketCanBackend::run() {

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 
 #include "hal/can/bus_off_policy.hpp"
@@ -86,6 +87,11 @@ class SocketCanBackend final : public DisplacementSource,
   [[nodiscard]] std::optional<bool> feedback_driver_fault() const;
 
   [[nodiscard]] CanCounters counters() const { return counters_.snapshot(); }
+  // What keeps the link from carrying the loop's data now, as candump and `ip -details link`
+  // would show it: an expected frame that never came, a bus-off hold, sends still failing
+  // ("can0: no LVDT frame (id 0x110) received, 3 failed sends (last: Network is down)"); nullopt
+  // when nothing does. `lvdt` and `feedback` say which frames this link should carry.
+  [[nodiscard]] std::optional<std::string> link_problem(bool lvdt, bool feedback) const;
   // Its I/O thread, for the caller's scheduling set-up.
   [[nodiscard]] IoThread& io_thread() { return thread_; }
   [[nodiscard]] bool tx_allowed() const;
@@ -125,6 +131,7 @@ class SocketCanBackend final : public DisplacementSource,
   LatestMailbox<CurrentReading> feedback_;
   std::atomic<int> feedback_fault_{-1};  // -1 unknown, 0 ok, 1 fault
   std::atomic<bool> enable_{false};
+  std::atomic<int> last_send_errno_{0};  // 0 once a send succeeds again
   std::atomic<Timestamp::rep> tx_allowed_from_{Timestamp::min().count()};
   EventCounters<CanEvent> counters_;
   IoThread thread_;  // last: stopped first on destruction

@@ -133,6 +133,14 @@ ForceFitFigures force_fit_figures(const ForceFitTraces& t, std::size_t lags) {
   f.baseline_fit_percent = t.baseline.empty() ? std::numeric_limits<double>::quiet_NaN()
                                               : nrmse_fit_percent(t.measured, t.baseline, t.keep);
   f.rms_N = rms_of(kept_residual(t), f.max_N);
+  f.reference_fit_percent = f.reference_rms_N = std::numeric_limits<double>::quiet_NaN();
+  if (t.reference.size() == t.measured.size()) {
+    f.reference_fit_percent = nrmse_fit_percent(t.measured, t.reference, t.keep);
+    ForceFitTraces reference = t;
+    reference.predicted = t.reference;
+    double max = 0.0;
+    f.reference_rms_N = rms_of(kept_residual(reference), max);
+  }
   std::size_t samples = 0;
   const std::vector<double> r = pooled_autocorrelation(t, lags, samples);
   f.lags = r.empty() ? 0 : r.size() - 1;
@@ -169,6 +177,10 @@ Json force_fit_json(const ForceFitFigures& f) {
               {"max_N", f.max_N},               {"baseline_fit_percent", f.baseline_fit_percent},
               {"acf_lags", f.lags},             {"acf_lag_step_s", f.lag_step_s},
               {"acf_bound", f.acf_bound},       {"acf_outside_fraction", f.acf_outside}};
+  if (std::isfinite(f.reference_rms_N)) {
+    out["reference_fit_percent"] = f.reference_fit_percent;
+    out["reference_rms_N"] = f.reference_rms_N;
+  }
   Json inputs = Json::array();
   for (const InputCorrelation& c : f.inputs)
     inputs.push_back({{"input", c.input}, {"max_abs_r", c.max_abs_r}, {"at_lag_s", c.at_lag_s}, {"outside_fraction", c.outside}});
@@ -283,6 +295,10 @@ ForceFitFigures add_force_fit(HtmlReport& report, const ForceFitTraces& t) {
       {"max |measured - predicted|", "fit.max_N", f.max_N, "N"},
   };
   if (!t.baseline.empty()) rows.push_back({"fit of the " + t.baseline_label, "fit.baseline_fit_percent", f.baseline_fit_percent, "%"});
+  if (!t.reference.empty()) {
+    rows.push_back({"fit of " + t.reference_label, "fit.reference_fit_percent", f.reference_fit_percent, "%"});
+    rows.push_back({"RMS of measured - " + t.reference_label, "fit.reference_rms_N", f.reference_rms_N, "N"});
+  }
   report.figures("Fit (as MATLAB's compare: NRMSE fit)", rows);
   if (!f.runs.empty()) {
     std::vector<std::vector<std::string>> per_run;
@@ -324,6 +340,7 @@ ForceFitFigures add_force_fit(HtmlReport& report, const ForceFitTraces& t) {
   TimeChart force_chart{"force_time", format("%s: measured and predicted force against time, fit %.2f %%", t.name.c_str(), f.fit_percent),
                         time_label, "force [N]", &t.time, {}, markers};
   if (!t.baseline.empty()) force_chart.series.push_back({t.baseline_label, &t.baseline, "#9ecae1"});
+  if (!t.reference.empty()) force_chart.series.push_back({t.reference_label, &t.reference, "#2ca02c"});
   force_chart.series.push_back({t.predicted_label, &t.predicted, "#d62728"});
   force_chart.series.push_back({"measured", &t.measured, "#555555"});  // on top: the data, not the model
   if (!t.keep.empty()) force_chart.series.push_back({"set aside by screening", &aside, "#ff7f0e", 2.0});

@@ -20,6 +20,8 @@ struct ForceFitTraces {
   std::string predicted_label = "predicted";
   std::vector<double> baseline;     // optional second prediction [N] (e.g. the base model)
   std::string baseline_label;
+  std::vector<double> reference;    // optional: a published model's prediction [N] (Spencer 1997 on Dyke's run)
+  std::string reference_label;
   std::vector<bool> keep;           // optional: false where screening set a sample aside
   // Several runs analysed together: each one's first sample and name (empty: one run). `time`
   // then runs on from one run to the next, each span the run's own seconds.
@@ -52,6 +54,8 @@ struct ForceFitFigures {
   double rms_N = 0.0;        // of measured - predicted over the kept samples
   double max_N = 0.0;
   double baseline_fit_percent = 0.0;  // NaN without a baseline
+  double reference_fit_percent = 0.0; // of the published reference model; NaN without one
+  double reference_rms_N = 0.0;
   std::size_t lags = 0;      // autocorrelation lags 1..lags
   double lag_step_s = 0.0;
   double acf_bound = 0.0;    // 95 % bound, 1.96/sqrt(N)
@@ -65,7 +69,8 @@ struct ForceFitFigures {
 
 // The figures as the tools' JSON "fit" object: fit_percent, rms_N, max_N, baseline_fit_percent,
 // acf_lags, acf_lag_step_s, acf_bound, acf_outside_fraction, input_xcorr (one object per input:
-// input, max_abs_r, at_lag_s, outside_fraction). The report's cells name them "fit.*".
+// input, max_abs_r, at_lag_s, outside_fraction), and with a reference model reference_fit_percent
+// and reference_rms_N. The report's cells name them "fit.*".
 [[nodiscard]] Json force_fit_json(const ForceFitFigures& f);
 
 // gnuplot commands marking where each run after the first begins on a time axis (a dotted

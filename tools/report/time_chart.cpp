@@ -77,7 +77,9 @@ ThinnedChart thin_to_envelope(const TimeChart& chart, std::size_t max_points) {
 }
 
 Json time_chart_data(const TimeChart& chart, std::size_t max_points) {
-  const ThinnedChart thin = thin_to_envelope(chart, max_points);
+  constexpr std::size_t kValueBudget = 120000;
+  const std::size_t count = std::max<std::size_t>(1, chart.series.size());
+  const ThinnedChart thin = thin_to_envelope(chart, std::min(max_points, std::max<std::size_t>(2000, kValueBudget / count)));
   const double x0 = thin.x.empty() ? 0.0 : thin.x.front();
   std::vector<float> x(thin.x.size());
   for (std::size_t i = 0; i < x.size(); ++i) x[i] = static_cast<float>(thin.x[i] - x0);

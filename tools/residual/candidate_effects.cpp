@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "model/typical_ranges.hpp"
 #include "tools/residual/residual_structure.hpp"
 #include "tools/text_format.hpp"
 
@@ -91,13 +92,15 @@ std::vector<BaseCoordinate> base_coordinate_table(const model::DamperModel& star
                    [](model::DamperModel& m, double v) { set_field_gain(m, v); }});
   }
   if (magnetics == Magnetics::kMaterial) {
-    // Soft irons to hard steels: k / a from 0.05 to 20, c over its whole meaning, and the mean
-    // field short of the anhysteretic's fold (alpha Ms / 3a < 1, docs/MODEL.md).
-    out.push_back({"log10 J-A k/a", {std::log10(0.05), std::log10(20.0)}, k_over_a,
+    // Soft irons to hard steels (model/typical_ranges.hpp): k / a, c over its whole meaning, and the
+    // mean field short of the anhysteretic's fold (alpha Ms / 3a < 1, docs/MODEL.md).
+    out.push_back({"log10 J-A k/a",
+                   {std::log10(model::kTypicalPinningOverShape.lo), std::log10(model::kTypicalPinningOverShape.hi)}, k_over_a,
                    [](model::DamperModel& m, double v) { m.jiles_atherton.k = m.jiles_atherton.a * std::pow(10.0, v); }});
-    out.push_back({"J-A c", {0.01, 0.95}, [](const model::DamperModel& m) { return m.jiles_atherton.c; },
+    out.push_back({"J-A c", {model::kTypicalReversibility.lo, model::kTypicalReversibility.hi},
+                   [](const model::DamperModel& m) { return m.jiles_atherton.c; },
                    [](model::DamperModel& m, double v) { m.jiles_atherton.c = v; }});
-    out.push_back({"J-A alpha Ms/3a", {0.0, 0.85},
+    out.push_back({"J-A alpha Ms/3a", {model::kTypicalMeanFieldGain.lo, model::kTypicalMeanFieldGain.hi},
                    [](const model::DamperModel& m) { return m.jiles_atherton.mean_field_gain(); },
                    [](model::DamperModel& m, double v) {
                      m.jiles_atherton.alpha = v * 3.0 * m.jiles_atherton.a / m.jiles_atherton.Ms;
@@ -106,7 +109,8 @@ std::vector<BaseCoordinate> base_coordinate_table(const model::DamperModel& star
   }
   if (scales.current_varies) {
     // Power laws of MR fluids' yield stress in B run from about 0.3 to 1.2 (Eq. 13: 0.5811).
-    out.push_back({"yield exponent of B", {0.25, 1.25}, [](const model::DamperModel& m) { return m.fluid.field_exponent; },
+    out.push_back({"yield exponent of B", {model::kTypicalFieldExponent.lo, model::kTypicalFieldExponent.hi},
+                   [](const model::DamperModel& m) { return m.fluid.field_exponent; },
                    [](model::DamperModel& m, double v) { m.fluid.field_exponent = v; }});
     // The yield stress's ceiling, from 0.05 T (it bends early: a force record fixes B only up to
     // the scale that a and Ms share) to the top, 30 T, which is none (Eq. 13's plain power law).
@@ -126,14 +130,15 @@ std::vector<BaseCoordinate> base_coordinate_table(const model::DamperModel& star
   // The sign velocity: from 0.1 % of the run's speed to 15 % of it and at most 50 mm/s, so that
   // the yield term cannot take the viscous term's place (a v_s near the speed makes s(v) linear).
   const double v_lo = std::log10(std::max(1e-3 * scales.speed, 1e-6));
-  const double v_hi = std::log10(std::max(std::min(0.15 * scales.speed, 0.05), 2e-6));
+  const double v_hi = std::log10(std::max(std::min(0.15 * scales.speed, model::kTypicalSignVelocity.hi), 2e-6));
   out.push_back({"log10 sign velocity [m/s]", {v_lo, v_hi},
                  [](const model::DamperModel& m) { return std::log10(m.geometry.sign_velocity_scale); },
                  [](model::DamperModel& m, double v) { m.geometry.sign_velocity_scale = std::pow(10.0, v); }});
   out.push_back({"sign shape (-1 atan, 0 tanh, 1 knee)", {-1.0, 1.0},
                  [](const model::DamperModel& m) { return m.geometry.sign_shape; },
                  [](model::DamperModel& m, double v) { m.geometry.sign_shape = v; }, true, true});
-  out.push_back({"flow index n", {0.5, 1.5}, [](const model::DamperModel& m) { return m.fluid.flow_index; },
+  out.push_back({"flow index n", {model::kTypicalFlowIndex.lo, model::kTypicalFlowIndex.hi},
+                 [](const model::DamperModel& m) { return m.fluid.flow_index; },
                  [](model::DamperModel& m, double v) { m.fluid.flow_index = v; }});
   return out;
 }

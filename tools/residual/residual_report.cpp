@@ -367,7 +367,8 @@ ForceFitTraces residual_traces(const std::vector<record::RecordedRun>& runs, con
 }
 
 std::string write_residual_report(const std::vector<record::RecordedRun>& runs, const FitSeries& s,
-                                  const ResidualResult& r, const Provenance& provenance, const std::string& directory) {
+                                  const ResidualResult& r, const ForceFitTraces& traces, const Provenance& provenance,
+                                  const std::string& directory) {
   const std::string name = runs.size() == 1 ? runs.front().name : std::to_string(runs.size()) + " runs";
   HtmlReport report("mrd-residual: " + name, directory);
   std::string effects = "none";
@@ -385,7 +386,7 @@ std::string write_residual_report(const std::vector<record::RecordedRun>& runs, 
                   {"RMS error, final model", "rms_after_N", r.after.all, "N"},
                   {"max error, final model", "max_after_N", r.after.max, "N"},
                   {"fit, final model", "fit_after_percent", r.fit_after_percent, "%"}});
-  add_force_fit(report, residual_traces(runs, s, r));
+  add_force_fit(report, traces);
 
   report.heading("Parameters");
   std::vector<HtmlReport::Parameter> rows;

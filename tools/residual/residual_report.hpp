@@ -41,8 +41,10 @@ std::string plot_residual(const FitSeries& series, const ResidualResult& r, cons
 // --report DIR: report.html with the fit (measured against the base and the final model over
 // time, displacement and velocity), the residual's structure, the parameters with their
 // standard deviations, every candidate with its validation figures, the screening's spans and
-// the provenance; the plots' .dat and .gp beside it. Returns "" or why not.
+// the provenance; the plots' .dat and .gp beside it. `traces` are residual_traces' (with a
+// reference model's prediction when one was asked for). Returns "" or why not.
 std::string write_residual_report(const std::vector<record::RecordedRun>& runs, const FitSeries& series,
-                                  const ResidualResult& r, const Provenance& provenance, const std::string& directory);
+                                  const ResidualResult& r, const ForceFitTraces& traces, const Provenance& provenance,
+                                  const std::string& directory);
 
 }  // namespace mrd::tools

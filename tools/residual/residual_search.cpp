@@ -36,13 +36,16 @@ ResidualStructure structure_of(const FitSeries& full, const std::vector<double>&
 }
 
 // What keeps the final model from being written as a config: a base coordinate on its range's
-// edge, or a parameter outside the model's own bounds.
+// edge, a parameter outside the model's own bounds, or one the fit took outside what real dampers
+// show (model/typical_ranges.hpp; a value the starting config already had is the user's).
 std::vector<std::string> unphysical_parameters(const model::DamperModel& m, const model::DamperModel& start,
                                                const SeriesScales& scales) {
   std::vector<std::string> out = base_coordinates_at_edge(m, start, scales, Magnetics::kMaterial, true);
   const ValidationReport report = model::validate(m);
+  const ValidationReport given = model::validate(start);
   for (const ValidationIssue& issue : report.issues()) {
-    if (issue.severity == ValidationIssue::Severity::kError) out.push_back(issue.field + ": " + issue.message);
+    const bool fitted_outside = issue.severity == ValidationIssue::Severity::kWarning && !given.mentions(issue.field);
+    if (issue.severity == ValidationIssue::Severity::kError || fitted_outside) out.push_back(issue.field + ": " + issue.message);
   }
   return out;
 }

@@ -118,11 +118,17 @@ ResidualStructure analyse_residual(const FitSeries& s, const std::vector<double>
   out.displacement_correlation = correlation(r, s.displacement);
   out.velocity_correlation = correlation(r, s.velocity);
 
-  const std::size_t end = s.run_starts.size() > 1 ? s.run_starts[1] : n;
-  const SpectralPeak peak = spectral_peak(r, 0, end, s.run_periods[0]);
-  out.peak_frequency = peak.frequency;
-  out.peak_power_share = peak.share;
-  out.motion_frequency = spectral_peak(s.displacement, 0, end, s.run_periods[0]).frequency;
+  // Each run's spectrum at its own sample period (a frequency means nothing across runs at other
+  // rates); the run whose residual is most periodic speaks for the series.
+  for (std::size_t run = 0; run < std::max<std::size_t>(1, s.run_starts.size()); ++run) {
+    const std::size_t from = s.run_starts.empty() ? 0 : s.run_starts[run];
+    const std::size_t to = run + 1 < s.run_starts.size() ? s.run_starts[run + 1] : n;
+    const SpectralPeak peak = spectral_peak(r, from, to, s.run_periods[run]);
+    if (run > 0 && !(peak.share > out.peak_power_share)) continue;
+    out.peak_frequency = peak.frequency;
+    out.peak_power_share = peak.share;
+    out.motion_frequency = spectral_peak(s.displacement, from, to, s.run_periods[run]).frequency;
+  }
   return out;
 }
 

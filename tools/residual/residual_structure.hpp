@@ -19,9 +19,10 @@ struct ResidualStructure {
   double drift_ratio = 0.0;          // RMS of the last tenth over that of the first
   double displacement_correlation = 0.0;  // with x
   double velocity_correlation = 0.0;      // with v
+  // Of the run whose residual spectrum is most concentrated, each run at its own sample period:
   double peak_frequency = 0.0;       // strongest line of the spectrum, DC excluded [Hz]
   double peak_power_share = 0.0;     // its power (+-2 bins) over the total (DC excluded)
-  double motion_frequency = 0.0;     // strongest line of the displacement [Hz]
+  double motion_frequency = 0.0;     // strongest line of that run's displacement [Hz]
 };
 
 ResidualStructure analyse_residual(const FitSeries& series, const std::vector<double>& residual);

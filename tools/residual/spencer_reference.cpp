@@ -7,7 +7,7 @@
 
 namespace mrd::tools {
 
-ForceError spencer_dyke_reference(const record::RecordedRun& run, const FitSeries& series) {
+std::vector<double> spencer_dyke_prediction(const record::RecordedRun& run, const FitSeries& series) {
   if (run.coil_signal != record::CoilSignal::kCommandVoltage)
     throw record::InputError(run.name + ": Spencer's model takes the driver's command voltage; the run logged a current");
   model::SpencerBoucWen spencer(model::SpencerBoucWenParams::dyke_prototype(), 1.0 / run.sample_rate);
@@ -15,7 +15,7 @@ ForceError spencer_dyke_reference(const record::RecordedRun& run, const FitSerie
   std::vector<double> force(run.size());
   for (std::size_t i = 0; i < run.size(); ++i)
     force[i] = spencer.step(run.displacement[i], series.velocity[i], run.coil[i]);
-  return force_error(run.force, force);
+  return force;
 }
 
 }  // namespace mrd::tools

@@ -33,7 +33,7 @@ class ForgedBusBase : public ::testing::Test {
   }
   void TearDown() override {
     backend_.stop();
-    close(bus_);
+    if (bus_ >= 0) close(bus_);
   }
 
   void send_frame(canid_t id, std::span<const std::uint8_t> data) {
@@ -102,6 +102,22 @@ TEST_F(ForgedBus, BadChecksumWrongDlcAndRepeatedCounterAreNeverUsed) {
   ASSERT_TRUE(counted(CanEvent::kBadChecksum, 2));
   EXPECT_FALSE(backend_.measured().has_value());
   EXPECT_EQ(backend_.counters()[CanEvent::kFeedbackFrames], 0u);
+}
+
+// The link's problem line names the interface, each expected frame that never came, and failed
+// sends with the system's reason; it clears once the frames come and nothing fails.
+TEST_F(ForgedBus, TheLinkProblemNamesMissingFramesAndFailedSendsWithTheirReason) {
+  const auto problem = backend_.link_problem(true, true);
+  ASSERT_TRUE(problem);
+  EXPECT_EQ(*problem, "can0: no LVDT frame (id 0x110) received, no current feedback frame (id 0x211) received");
+  EXPECT_EQ(backend_.link_problem(false, false), std::nullopt);  // a link that carries neither
+  send_lvdt(0.001, 0);
+  ASSERT_TRUE(counted(CanEvent::kLvdtFrames, 1));
+  EXPECT_EQ(backend_.link_problem(true, false), std::nullopt);
+  close(bus_);  // the peer gone: every send fails
+  bus_ = -1;
+  EXPECT_EQ(backend_.write_setpoint(1.0), mrd::hal::IoStatus::kIoError);
+  EXPECT_EQ(backend_.link_problem(true, false), "can0: 1 failed send (last: Connection refused)");
 }
 
 TEST_F(ForgedBus, AFloodOfUnexpectedIdsIsCountedAndTheLvdtStillGetsThrough) {

@@ -84,6 +84,27 @@ TEST(ReportFit, CrossCorrelationFindsTheInputALateResidualCarries) {
   EXPECT_EQ(force_fit_json(f)["input_xcorr"][0]["at_lag_s"].get<double>(), f.inputs[0].at_lag_s);
 }
 
+// A published reference model at half the measured force: fit 50 %, RMS half the force's, both in
+// the figures and the JSON; without one, neither key.
+TEST(ReportFit, AReferenceModelGetsItsOwnFitAndRms) {
+  ForceFitTraces t;
+  const std::size_t n = 1000;
+  for (std::size_t i = 0; i < n; ++i) {
+    t.time.push_back(1e-3 * static_cast<double>(i));
+    t.measured.push_back(std::sin(2.0 * M_PI * static_cast<double>(i) / 100.0));
+    t.predicted.push_back(t.measured.back());
+    t.reference.push_back(0.5 * t.measured.back());
+  }
+  t.displacement = t.velocity = t.measured;
+  const ForceFitFigures f = force_fit_figures(t, 10);
+  EXPECT_NEAR(f.reference_fit_percent, 50.0, 1e-9);
+  EXPECT_NEAR(f.reference_rms_N, 0.5 / std::sqrt(2.0), 1e-9);
+  const Json json = force_fit_json(f);
+  EXPECT_EQ(json["reference_rms_N"].get<double>(), f.reference_rms_N);
+  t.reference.clear();
+  EXPECT_FALSE(force_fit_json(force_fit_figures(t, 10)).contains("reference_fit_percent"));
+}
+
 TEST(ReportFit, AutocorrelationOfAnAlternatingSequenceAlternates) {
   // +-1 alternating, mean 0: r(k) = (N - k)/N (-1)^k.
   std::vector<double> e(10);

@@ -8,7 +8,10 @@
 #include <cmath>
 #include <numbers>
 
+#include <random>
+
 #include "record/csv.hpp"
+#include "tools/residual/residual_structure.hpp"
 #include "tools/signal/zero_phase_velocity.hpp"
 
 namespace {
@@ -44,6 +47,23 @@ TEST(FitSeries, HalfOfTheBlocksValidateAndEveryRunStartsAgain) {
   int changes = 0;
   for (std::size_t i = 1; i < 6000; ++i) changes += s.role[i] != s.role[i - 1];
   EXPECT_LT(changes, 23);
+}
+
+// Two runs, a 1 kHz one with a white residual and a 200 Hz one whose residual is a 20 Hz line:
+// each run's spectrum is read at its own period, so the line is found at 20 Hz (the first run's
+// spectrum alone has none; both at 1 kHz would put it at 100 Hz).
+TEST(FitSeries, TheResidualSpectrumOfEachRunIsReadAtItsOwnRate) {
+  const FitSeries s = make_fit_series({sine_run(1000, 6, true), sine_run(200, 6, true)}, {});
+  std::mt19937 rng(3);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  std::vector<double> residual(s.size());
+  for (std::size_t i = 0; i < 6000; ++i) residual[i] = noise(rng);
+  for (std::size_t i = 6000; i < s.size(); ++i)
+    residual[i] = 10.0 * std::sin(2.0 * std::numbers::pi * 20.0 * 5e-3 * static_cast<double>(i - 6000)) + noise(rng);
+  const ResidualStructure r = analyse_residual(s, residual);
+  EXPECT_NEAR(r.peak_frequency, 20.0, 0.5);
+  EXPECT_GT(r.peak_power_share, 0.8);
+  EXPECT_NEAR(r.motion_frequency, 1.0, 0.2);  // that run's own 1 Hz motion
 }
 
 // The plots' time axis: a 6 s run at 200 Hz after a 6 s run at 1 kHz spans 6 s, not 1.2 s of
