@@ -8,11 +8,12 @@ namespace mrd::record {
 namespace {
 
 // The controller's own telemetry (runtime/csv_telemetry_writer.cpp) names columns that are no
-// run quantity (cycle, sample, state, ...) and three currents: recognised by its first columns,
-// it is read without --columns.
+// run quantity (cycle, sample, state, ...) and three currents: recognised by the names, in any
+// order, it is read without --columns.
 bool is_controller_telemetry(const std::vector<std::string_view>& names) {
-  return names.size() >= 12 && names[0] == "cycle" && names[1] == "time_s" && names[2] == "displacement_mm" &&
-         names[3] == "sample" && names[4] == "measured_current_A";
+  const auto has = [&](std::string_view name) { return std::find(names.begin(), names.end(), name) != names.end(); };
+  return has("cycle") && has("time_s") && has("displacement_mm") && has("sample") && has("measured_current_A") &&
+         has("scheduled_current_A");
 }
 
 std::string joined(const std::vector<std::string>& names) {
@@ -101,7 +102,7 @@ void RunAssembler::map_telemetry(const std::vector<std::string_view>& names) {
       use(std::string(n), i, *column_unit(as).unit);
   }
   note("the controller's telemetry (recognised by its header): time_s, displacement_mm, velocity_mm_s and "
-       "measured_current_A as the coil current; its force_kN is the observer's own estimate, not a "
+       "measured_current_A as the coil current; its force column is the observer's own estimate, not a "
        "measurement, so the run has no measured force");
 }
 

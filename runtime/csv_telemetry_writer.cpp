@@ -20,7 +20,7 @@ namespace mrd::runtime {
 namespace {
 #define MRD_TELEMETRY_COLUMNS                                                                    \
   "cycle,time_s,displacement_mm,sample,measured_current_A,scheduled_current_A,"                  \
-  "law_current_A,setpoint_A,target_B_T,B_T,velocity_mm_s,force_kN,state,trigger,overruns,"       \
+  "law_current_A,setpoint_A,target_B_T,B_T,velocity_mm_s,force_N,state,trigger,overruns,"         \
   "enable,latched,recoveries"
 constexpr const char* kHeader = MRD_TELEMETRY_COLUMNS "\n";
 // Force mode: the demand the law used, Eq. 12's yield force at its target, the demand's check,
@@ -51,11 +51,11 @@ int CsvTelemetryWriter::format(const TelemetryRecord& r, hal::Timestamp start, c
   const auto sample = to_string(static_cast<control::SampleCheck>(r.sample));
   const auto state = to_string(static_cast<control::SupervisorState>(r.state));
   const auto trigger = to_string(static_cast<control::Trigger>(r.trigger));
-  const int length = std::snprintf(buf, size, "%llu,%.6f,%.4f,%.*s,%.5g,%.4g,%.5g,%.5g,%.5g,%.5g,%.5g,%.5g,%.*s,%.*s,%u,%d,%d,%llu\n",
+  const int length = std::snprintf(buf, size, "%llu,%.6f,%.4f,%.*s,%.5g,%.4g,%.5g,%.5g,%.5g,%.5g,%.5g,%.6g,%.*s,%.*s,%u,%d,%d,%llu\n",
                        static_cast<unsigned long long>(r.cycle), t, r.displacement * 1e3,
                        static_cast<int>(sample.size()), sample.data(), r.measured_current,
                        r.scheduled_current, r.law_current, r.setpoint, r.target_B, r.B,
-                       r.velocity * 1e3, r.force * 1e-3, static_cast<int>(state.size()),
+                       r.velocity * 1e3, r.force, static_cast<int>(state.size()),
                        state.data(), static_cast<int>(trigger.size()), trigger.data(), r.overruns,
                        r.enable ? 1 : 0, r.latched ? 1 : 0, static_cast<unsigned long long>(r.recoveries));
   return force_columns ? append_force_columns(r, buf, size, length) : length;
@@ -130,10 +130,8 @@ hal::StartResult CsvTelemetryWriter::start(const std::string& path) {
 }
 
 hal::StartResult CsvTelemetryWriter::start_thread() {
-  const char* columns = force_columns_ ? force_header() : header();
   batch_.reserve(kBatchBytes + 512);
-  add_line(columns, std::strlen(columns), false);
-  write_batch(write_timeout_);
+  header_pending_ = true;
   const auto pause = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
       std::chrono::duration<double>(flush_period_s_));
   thread_.start("mrd-telemetry", [this, pause] {
@@ -197,6 +195,7 @@ void CsvTelemetryWriter::drain_once(std::chrono::milliseconds wait) {
       const int len = format_time_origin(std::chrono::duration<double>(r.time).count(),
                                          line, sizeof line);
       if (len > 0) add_line(line, std::min(static_cast<std::size_t>(len), sizeof line - 1), false);
+      add_header();
     }
     const int len = format(r, *start_, line, sizeof line, force_columns_);
     if (len <= 0 || !add_line(line, std::min(static_cast<std::size_t>(len), sizeof line - 1), true)) ++capped;
@@ -206,10 +205,21 @@ void CsvTelemetryWriter::drain_once(std::chrono::milliseconds wait) {
   if (capped > 0) capped_.fetch_add(capped, std::memory_order_relaxed);
 }
 
+void CsvTelemetryWriter::add_header() {
+  if (!header_pending_) return;
+  const char* columns = force_columns_ ? force_header() : header();
+  add_line(columns, std::strlen(columns), false);
+  header_pending_ = false;
+}
+
 void CsvTelemetryWriter::stop() {
   thread_.stop();
   if (fd_ < 0) return;
   drain_once(write_timeout_);  // the loop has stopped: whatever is left is the tail of the run
+  if (header_pending_) {  // no record came: the file still says what it would have held
+    add_header();
+    write_batch(write_timeout_);
+  }
   if (carried_ && lines_.front().record) lost_.fetch_add(1, std::memory_order_relaxed);  // never completed
   batch_.clear();
   lines_.clear();

@@ -34,7 +34,9 @@ class CsvTelemetryWriter {
   CsvTelemetryWriter(const CsvTelemetryWriter&) = delete;
   CsvTelemetryWriter& operator=(const CsvTelemetryWriter&) = delete;
 
-  // Opens `path` (truncated), writes the header and starts the thread.
+  // Opens `path` (truncated) and starts the thread. The file opens with the time origin (a '#'
+  // comment line), then the column line: written with the first record, or at stop() when none
+  // came, so that pandas.read_csv(f, comment='#') reads the file as it is.
   [[nodiscard]] hal::StartResult start(const std::string& path);
   // As above on the config's file: with per_run a new numbered file beside the earlier runs'
   // (never one that exists), and at most max_bytes written.
@@ -70,6 +72,7 @@ class CsvTelemetryWriter {
   hal::StartResult start_thread();
   bool add_line(const char* line, std::size_t length, bool record);  // false: over the cap, not added
   void drain_once(std::chrono::milliseconds wait);
+  void add_header();  // the column line, once
   void write_batch(std::chrono::milliseconds wait);
   void fail(int error);
 
@@ -88,6 +91,7 @@ class CsvTelemetryWriter {
   std::vector<Line> lines_;  // writer thread only, like batch_
   bool carried_ = false;     // batch_ starts with the rest of a line the file took part of
   bool stalled_ = false;     // the last write failed or timed out: do not wait again until one completes
+  bool header_pending_ = false;  // the column line is still to come (after the origin)
   std::optional<hal::Timestamp> start_;  // the first record's time: the CSV's t = 0
   std::string path_;
   std::uint64_t max_bytes_ = 0;  // 0: no cap

@@ -13,13 +13,20 @@ hal::StartResult RunLog::open(const std::string& path) {
     return hal::StartResult::failure("cannot write the plant log " + path + ": " + std::strerror(errno));
   }
   std::setvbuf(file_, nullptr, _IOFBF, 1 << 20);
-  std::fputs(writer_.header().c_str(), file_);
+  header_pending_ = true;
   return hal::StartResult::success();
+}
+
+void RunLog::write_header() {
+  if (!header_pending_) return;
+  std::fputs(writer_.header().c_str(), file_);
+  header_pending_ = false;
 }
 
 void RunLog::write(const RigSample& s) {
   if (file_ == nullptr) return;
   const auto& r = s.reading;
+  write_header();
   char line[record::RunCsvWriter::kMaxRowChars];
   const std::size_t n = writer_.format_row(
       {.time = s.time, .displacement = r.lvdt_displacement, .coil = r.coil_current, .force = r.measured_force,
@@ -34,9 +41,11 @@ void RunLog::write_time_origin(double monotonic_s) {
   char line[96];
   const int n = format_time_origin(monotonic_s, line, sizeof line);
   if (n > 0) std::fwrite(line, 1, static_cast<std::size_t>(n), file_);
+  write_header();
 }
 
 void RunLog::close() {
+  if (file_ != nullptr) write_header();  // a run with no row still gets its column line
   if (file_ != nullptr) std::fclose(file_);
   file_ = nullptr;
 }

@@ -23,7 +23,8 @@ class RunLog {
 
   [[nodiscard]] hal::StartResult open(const std::string& path);
   void write(const RigSample& s);
-  // The log's time_s 0 on CLOCK_MONOTONIC (common/time_origin.hpp), once, before the first row.
+  // The log's time_s 0 on CLOCK_MONOTONIC (common/time_origin.hpp), once, before the first row:
+  // a comment line before the column line, so that pandas.read_csv(f, comment='#') reads the file.
   void write_time_origin(double monotonic_s);
   void close();
   // Any thread: the stepping thread writes, SIGUSR1's printout on the main thread reads.
@@ -32,7 +33,10 @@ class RunLog {
   static constexpr record::RunCsvLayout kLayout{.B = true, .temperature = true};
 
  private:
+  void write_header();  // the column line, once: after the origin, or at the first row or the close
+
   std::FILE* file_ = nullptr;
+  bool header_pending_ = false;
   SingleWriterCounter rows_;
   record::RunCsvWriter writer_{kLayout};
 };

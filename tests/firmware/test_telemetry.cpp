@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "runtime/csv_telemetry_writer.hpp"
@@ -46,16 +47,32 @@ TEST(TelemetryLoop, EveryCycleIsWrittenOrCountedAsDropped) {
 
   std::ifstream in(path);
   std::string line;
+  // The time origin first, a comment before the column line (pandas.read_csv(f, comment='#')):
+  // the rig's clock starts at 0.
+  std::getline(in, line);
+  EXPECT_EQ(line, "# time_s 0 is CLOCK_MONOTONIC 0.000000000 s");
   std::getline(in, line);
   EXPECT_EQ(line + "\n", CsvTelemetryWriter::header());
-  std::getline(in, line);  // the time origin: the rig's clock starts at 0
-  EXPECT_EQ(line, "# time_s 0 is CLOCK_MONOTONIC 0.000000000 s");
   std::getline(in, line);
   EXPECT_EQ(line.rfind("0,0.000000,0.0000,fresh,", 0), 0u) << line;
   EXPECT_NE(line.find(",INIT,none,0,0"), std::string::npos) << line;
   int rows = 1;
   while (std::getline(in, line)) ++rows;
   EXPECT_EQ(rows, 64);
+  std::filesystem::remove(path);
+}
+
+// A run that ends before its first record still leaves a file that says what it would have held.
+TEST(TelemetryLoop, ARunWithNoRecordLeavesTheColumnLine) {
+  const auto path = std::filesystem::temp_directory_path() / "mrd_telemetry_empty.csv";
+  TelemetryQueue q(16);
+  CsvTelemetryWriter writer(q, 3600.0);
+  ASSERT_TRUE(writer.start(path.string()).ok);
+  writer.stop();
+  std::ifstream in(path);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(text, CsvTelemetryWriter::header());
+  EXPECT_EQ(writer.failures(), 0u);
   std::filesystem::remove(path);
 }
 

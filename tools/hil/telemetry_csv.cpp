@@ -1,5 +1,6 @@
 #include "tools/hil/telemetry_csv.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -40,23 +41,15 @@ std::vector<std::string_view> header_columns(const char* header) {
   return record::split_csv_line(line);
 }
 
-}  // namespace
-
-namespace {
-
 // The columns the report's figures use (time, displacement, the observer's force): a nan there
 // spoils the row. Elsewhere the writer writes nan for a value not computed (no current sensor).
-bool figure_column(std::size_t i) { return i == 1 || i == 2 || i == 11; }
-bool number_column(std::size_t i) { return (i >= 1 && i <= 11 && i != 3) || i == 18 || i == 19 || i == 23; }
-
-// The first cell that sets the row aside as non_finite: an empty one, or nan / inf where the
-// writer never writes one (a figure's column, a count, a flag, a name).
-std::optional<std::size_t> non_finite_cell(const std::vector<std::string_view>& f) {
-  for (std::size_t i = 0; i < f.size(); ++i) {
-    if (!record::is_non_finite(f[i])) continue;
-    if (f[i].empty() || figure_column(i) || !number_column(i)) return i;
-  }
-  return std::nullopt;
+bool figure_column(std::string_view name) {
+  return name == "time_s" || name == "displacement_mm" || name == "force_N" || name == "force_kN";
+}
+// The columns that hold a real number (the rest are counts, flags and names).
+bool number_column(std::string_view name) {
+  return name.ends_with("_s") || name.ends_with("_mm") || name.ends_with("_A") || name.ends_with("_T") ||
+         name.ends_with("_N") || name.ends_with("_kN") || name == "force_scale";
 }
 
 class TelemetryParser {
@@ -68,18 +61,28 @@ class TelemetryParser {
     static const std::vector<std::string_view> kForce = header_columns(runtime::CsvTelemetryWriter::force_header());
     const auto first = next();
     const std::size_t header_line = lines_.line_number();
-    const auto header = first ? record::split_csv_line(*first) : std::vector<std::string_view>{};
-    log_.force_mode = header == kForce;
-    if (header != kTable4 && !log_.force_mode) {
-      throw fail("", "not an mrd-controller telemetry file: the header must be " +
-                         std::string(runtime::CsvTelemetryWriter::header()).substr(0, 60) + "...");
+    header_ = first ? record::split_csv_line(*first) : std::vector<std::string_view>{};
+    header_text_.assign(header_.begin(), header_.end());
+    header_.assign(header_text_.begin(), header_text_.end());
+    // Columns by name, in any order; the force in N, or in kN as older files wrote it.
+    const auto has = [&](std::string_view name) { return column_of(name).has_value(); };
+    const bool all_table4 = std::all_of(kTable4.begin(), kTable4.end(), [&](std::string_view name) {
+      return has(name) || (name == "force_N" && has("force_kN"));
+    });
+    if (!all_table4) {
+      std::string missing;
+      for (const std::string_view name : kTable4)
+        if (!has(name) && !(name == "force_N" && has("force_kN"))) missing += (missing.empty() ? "" : ", ") + std::string(name);
+      throw fail("", "not an mrd-controller telemetry file: no column " + missing + " (the header must name " +
+                         std::string(runtime::CsvTelemetryWriter::header()).substr(0, 60) + "...)");
     }
-    columns_ = log_.force_mode ? &kForce : &kTable4;
+    log_.force_mode = std::all_of(kForce.begin() + static_cast<std::ptrdiff_t>(kTable4.size()), kForce.end(), has);
+    header_line_ = header_line;
     while (const auto line = next()) read_row(*line);
     if (log_.rows.empty()) {
       const std::string counts = record::set_aside_counts(log_.set_aside_rows, "line");
       throw record::InputError(record::input_error_message(
-          name_, header_line, "", "no telemetry row left" + (counts.empty() ? "" : " (set aside: " + counts + ")")));
+          name_, header_line_, "", "no telemetry row left" + (counts.empty() ? "" : " (set aside: " + counts + ")")));
     }
     std::vector<double> times;
     for (const auto& r : log_.rows) times.push_back(r.time);
@@ -91,13 +94,27 @@ class TelemetryParser {
  private:
   std::optional<std::string_view> next() { return record::next_data_line(lines_, log_.time_origin); }
 
+  [[nodiscard]] std::optional<std::size_t> column_of(std::string_view name) const {
+    const auto at = std::find(header_.begin(), header_.end(), name);
+    return at == header_.end() ? std::nullopt : std::optional<std::size_t>(static_cast<std::size_t>(at - header_.begin()));
+  }
+  // The first cell that sets the row aside as non_finite: an empty one, or nan / inf where the
+  // writer never writes one (a figure's column, a count, a flag, a name).
+  [[nodiscard]] std::optional<std::size_t> non_finite_cell(const std::vector<std::string_view>& f) const {
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      if (!record::is_non_finite(f[i])) continue;
+      if (f[i].empty() || figure_column(header_[i]) || !number_column(header_[i])) return i;
+    }
+    return std::nullopt;
+  }
+
   [[nodiscard]] record::InputError fail(std::string_view column, const std::string& message) const {
     return record::InputError(record::input_error_message(name_, lines_.line_number(), column, message));
   }
 
   void read_row(std::string_view line) {
     const auto f = record::split_csv_line(line);
-    const auto& columns = *columns_;
+    const auto& columns = header_;
     if (f.size() != columns.size()) {
       throw fail("", "expected " + std::to_string(columns.size()) + " fields, got " + std::to_string(f.size()));
     }
@@ -106,24 +123,24 @@ class TelemetryParser {
     r.line = lines_.line_number();
     // The cycle counts the loop's periods: one that does not advance is no later record.
     if (!log_.rows.empty() && r.time > log_.rows.back().time && r.cycle <= log_.rows.back().cycle)
-      return set_aside("time_conflict", columns[0]);
+      return set_aside("time_conflict", "cycle");
     const bool repeats = screen_.repeats_last_time(r.time) && line == last_line_;
     switch (screen_.screen(r.time, repeats, r.line)) {
       case record::RowScreen::Verdict::kKeep: return keep(std::move(r), line);
       case record::RowScreen::Verdict::kDuplicate: return set_aside("duplicate", "");
       case record::RowScreen::Verdict::kTimeConflict:
         pending_ = Pending{r, std::string(line)};
-        return set_aside("time_conflict", columns[1]);
+        return set_aside("time_conflict", "time_s");
       case record::RowScreen::Verdict::kKeepAfterStray: {
         const Pending pending = *pending_;
         const TelemetryRow stray = log_.rows.back();
         log_.rows.pop_back();
         std::erase_if(log_.set_aside_rows, [&](const auto& a) { return a.line == pending.row.line; });
-        log_.set_aside_rows.push_back({"time_conflict", stray.line, log_.rows.size(), std::string(columns[1])});
+        log_.set_aside_rows.push_back({"time_conflict", stray.line, log_.rows.size(), "time_s"});
         keep(pending.row, pending.line);
         return keep(std::move(r), line);
       }
-      case record::RowScreen::Verdict::kClockJumpedBack: throw fail(columns[1], screen_.clock_jumped_back("line"));
+      case record::RowScreen::Verdict::kClockJumpedBack: throw fail("time_s", screen_.clock_jumped_back("line"));
     }
   }
 
@@ -137,62 +154,71 @@ class TelemetryParser {
   }
 
   TelemetryRow to_row(const std::vector<std::string_view>& f) const {
-    const auto& columns = *columns_;
+    const auto cell = [&](std::string_view name) -> std::pair<std::string_view, std::string_view> {
+      const std::size_t i = *column_of(name);
+      return {header_[i], f[i]};
+    };
     // nan / inf only where non_finite_cell let them through: a value the writer did not compute.
-    const auto number = [&](std::size_t i) {
-      if (record::is_non_finite(f[i])) return std::numeric_limits<double>::quiet_NaN();
-      const auto v = record::parse_finite(f[i]);
-      if (!v) throw fail(columns[i], "'" + std::string(f[i]) + "' is not a number");
+    const auto number = [&](std::string_view name) {
+      const auto [column, text] = cell(name);
+      if (record::is_non_finite(text)) return std::numeric_limits<double>::quiet_NaN();
+      const auto v = record::parse_finite(text);
+      if (!v) throw fail(column, "'" + std::string(text) + "' is not a number");
       return *v;
     };
     // Counts and flags as the writer prints them: whole numbers, and 0 or 1.
-    const auto count = [&](std::size_t i) {
+    const auto count = [&](std::string_view name) {
+      const auto [column, text] = cell(name);
       std::uint64_t v = 0;
-      const auto [end, error] = std::from_chars(f[i].data(), f[i].data() + f[i].size(), v);
-      if (error != std::errc{} || end != f[i].data() + f[i].size()) {
-        throw fail(columns[i], "'" + std::string(f[i]) + "' is not a count");
+      const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), v);
+      if (error != std::errc{} || end != text.data() + text.size()) {
+        throw fail(column, "'" + std::string(text) + "' is not a count");
       }
       return v;
     };
-    const auto flag = [&](std::size_t i) {
-      if (f[i] != "0" && f[i] != "1") throw fail(columns[i], "'" + std::string(f[i]) + "' is not 0 or 1");
-      return f[i] == "1";
+    const auto count32 = [&](std::string_view name) {
+      const std::uint64_t v = count(name);
+      if (v > std::numeric_limits<std::uint32_t>::max()) throw fail(name, "more than 2^32 - 1");
+      return static_cast<std::uint32_t>(v);
+    };
+    const auto flag = [&](std::string_view name) {
+      const auto [column, text] = cell(name);
+      if (text != "0" && text != "1") throw fail(column, "'" + std::string(text) + "' is not 0 or 1");
+      return text == "1";
+    };
+    const auto check_name = [&](std::string_view name, const char* what) {
+      const auto [column, text] = cell(name);
+      control::SampleCheck check{};
+      if (!enum_named(text, kSampleChecks, check)) throw fail(column, std::string("unknown ") + what);
+      return std::string(text);
     };
     TelemetryRow r;
-    r.cycle = count(0);
-    r.time = number(1);
-    r.displacement = number(2) * 1e-3;
-    control::SampleCheck sample{};
-    if (!enum_named(f[3], kSampleChecks, sample)) throw fail(columns[3], "unknown sample check");
-    r.sample = std::string(f[3]);
-    r.measured_current = number(4);
-    r.scheduled_current = number(5);
-    r.law_current = number(6);
-    r.setpoint = number(7);
-    r.target_B = number(8);
-    r.B = number(9);
-    r.velocity = number(10) * 1e-3;
-    r.force = number(11) * 1e3;
-    if (!enum_named(f[12], SupervisorState::kCount, r.state)) throw fail(columns[12], "unknown state");
-    if (!enum_named(f[13], Trigger::kCount, r.trigger)) throw fail(columns[13], "unknown trigger");
-    const std::uint64_t overruns = count(14);
-    if (overruns > std::numeric_limits<std::uint32_t>::max()) throw fail(columns[14], "more than 2^32 - 1");
-    r.overruns = static_cast<std::uint32_t>(overruns);
-    r.enable = flag(15);
-    r.latched = flag(16);
-    r.recoveries = count(17);
+    r.cycle = count("cycle");
+    r.time = number("time_s");
+    r.displacement = number("displacement_mm") * 1e-3;
+    r.sample = check_name("sample", "sample check");
+    r.measured_current = number("measured_current_A");
+    r.scheduled_current = number("scheduled_current_A");
+    r.law_current = number("law_current_A");
+    r.setpoint = number("setpoint_A");
+    r.target_B = number("target_B_T");
+    r.B = number("B_T");
+    r.velocity = number("velocity_mm_s") * 1e-3;
+    r.force = column_of("force_N") ? number("force_N") : number("force_kN") * 1e3;
+    if (!enum_named(cell("state").second, SupervisorState::kCount, r.state)) throw fail("state", "unknown state");
+    if (!enum_named(cell("trigger").second, Trigger::kCount, r.trigger)) throw fail("trigger", "unknown trigger");
+    r.overruns = count32("overruns");
+    r.enable = flag("enable");
+    r.latched = flag("latched");
+    r.recoveries = count("recoveries");
     if (log_.force_mode) {
-      r.demand = number(18);
-      r.yield_force = number(19);
-      control::SampleCheck check{};
-      if (!enum_named(f[20], kSampleChecks, check)) throw fail(columns[20], "unknown demand check");
-      r.demand_check = std::string(f[20]);
-      r.clipped = flag(21);
-      r.reached = flag(22);
-      r.force_scale = number(23);
-      const std::uint64_t frozen = count(24);
-      if (frozen > std::numeric_limits<std::uint32_t>::max()) throw fail(columns[24], "more than 2^32 - 1");
-      r.load_cell_frozen = static_cast<std::uint32_t>(frozen);
+      r.demand = number("demand_N");
+      r.yield_force = number("yield_force_N");
+      r.demand_check = check_name("demand", "demand check");
+      r.clipped = flag("clipped");
+      r.reached = flag("reached");
+      r.force_scale = number("force_scale");
+      r.load_cell_frozen = count32("load_cell_frozen");
     }
     return r;
   }
@@ -200,7 +226,9 @@ class TelemetryParser {
   record::LineReader lines_;
   const std::string& name_;
   TelemetryLog log_;
-  const std::vector<std::string_view>* columns_ = nullptr;
+  std::vector<std::string> header_text_;    // the column names, owned
+  std::vector<std::string_view> header_;    // views of them, by position
+  std::size_t header_line_ = 0;
   record::RowScreen screen_;
   std::string last_line_;  // the row kept last, as written: a duplicate is the same text
   // The row set aside last for its time: kept after all when the row before it was a stray.

@@ -20,11 +20,11 @@ namespace {
 using mrd::tools::parse_telemetry_csv;
 
 // One row as the controller writes it: cycle, time, displacement, force and state; the rest 0.
-std::string row(std::uint64_t cycle, double t, double x_mm = 1.0, double force_kN = 0.5,
+std::string row(std::uint64_t cycle, double t, double x_mm = 1.0, double force_N = 0.5,
                 const char* state = "RUN") {
   char line[200];
   std::snprintf(line, sizeof line, "%llu,%.6f,%.4f,fresh,nan,0,0,0,0,0,0,%.5g,%s,none,0,1,0,0\n",
-                static_cast<unsigned long long>(cycle), t, x_mm, force_kN, state);
+                static_cast<unsigned long long>(cycle), t, x_mm, force_N, state);
   return line;
 }
 
@@ -62,7 +62,7 @@ TEST(TelemetryFaults, ConflictsAndEmptyOrNanCellsAreSetAsideWithTheirLineAndColu
   ASSERT_EQ(log.rows.size(), 7u);  // cycles 0-5 and 9; measured_current's nan is the writer's own
   EXPECT_TRUE(std::isnan(log.rows[0].measured_current));
   const std::vector<std::tuple<std::string, std::size_t, std::string>> expected = {
-      {"time_conflict", 6, "time_s"}, {"time_conflict", 7, "time_s"}, {"non_finite", 10, "force_kN"},
+      {"time_conflict", 6, "time_s"}, {"time_conflict", 7, "time_s"}, {"non_finite", 10, "force_N"},
       {"non_finite", 11, "displacement_mm"}, {"non_finite", 12, "overruns"}, {"time_conflict", 14, "cycle"}};
   ASSERT_EQ(log.set_aside_rows.size(), expected.size());
   for (std::size_t i = 0; i < expected.size(); ++i) {

@@ -90,6 +90,28 @@ TEST(TelemetryLog, AFileWithoutTheOriginLineHasNone) {
   EXPECT_DOUBLE_EQ(log.rows[0].displacement, 1e-3);
 }
 
+// Columns are found by name: another order reads the same, and an older file (its
+// observer force in kN) reads in N.
+TEST(TelemetryLog, ColumnsAreFoundByNameInAnyOrderAndAnOldForceInKilonewtons) {
+  const std::string header = CsvTelemetryWriter::header();
+  const std::string row = "7,0.500000,2.5000,fresh,0.4,0,0,0,0,0,12,1500,RUN,none,0,1,0,0\n";
+  const auto log = mrd::tools::parse_telemetry_csv(header + row, "now.csv");
+  ASSERT_EQ(log.rows.size(), 1u);
+  EXPECT_DOUBLE_EQ(log.rows[0].force, 1500.0);
+  // The same row with the first two columns swapped and the force as kN.
+  std::string old_header = header;
+  old_header.replace(old_header.find("force_N"), 7, "force_kN");
+  old_header.replace(0, std::string("cycle,time_s").size(), "time_s,cycle");
+  const auto old = mrd::tools::parse_telemetry_csv(old_header + "0.500000,7,2.5000,fresh,0.4,0,0,0,0,0,12,1.5,RUN,none,0,1,0,0\n",
+                                                   "old.csv");
+  ASSERT_EQ(old.rows.size(), 1u);
+  EXPECT_EQ(old.rows[0].cycle, 7u);
+  EXPECT_DOUBLE_EQ(old.rows[0].time, 0.5);
+  EXPECT_DOUBLE_EQ(old.rows[0].force, 1500.0);
+  EXPECT_DOUBLE_EQ(old.rows[0].velocity, 0.012);
+  EXPECT_DOUBLE_EQ(old.rows[0].measured_current, 0.4);
+}
+
 TEST(TelemetryLog, AForeignHeaderOrARaggedRowNamesTheFileAndLine) {
   try {
     (void)mrd::tools::parse_telemetry_csv("time_s,force_N\n0,1\n", "x.csv");
