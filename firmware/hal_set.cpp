@@ -61,7 +61,7 @@ HalSet::HalSet(const config::ControllerConfig& config, const hal::Clock& clock) 
   }
   if (b.uses(config::DeviceBackend::kCan)) can_ = std::make_unique<hal::can::SocketCanBackend>(config.can, clock);
   can_lvdt_ = b.lvdt == config::DeviceBackend::kCan;
-  can_feedback_ = b.driver == config::DeviceBackend::kCan;
+  can_feedback_ = b.driver == config::DeviceBackend::kCan && config.can.use_feedback;
   if (b.lines == config::LinesBackend::kGpio) gpio_ = std::make_unique<hal::gpio::GpiodLines>(config.gpio);
 
   lvdt_ = choose<hal::DisplacementSource>(b.lvdt, mock_ ? &mock_->lvdt : nullptr, modbus_.get(),

@@ -72,7 +72,7 @@ class CsvTelemetryWriter {
   hal::StartResult start_thread();
   bool add_line(const char* line, std::size_t length, bool record);  // false: over the cap, not added
   void drain_once(std::chrono::milliseconds wait);
-  void add_header();  // the column line, once
+  void add_header();  // after the origin line: a reader that skips comments then sees the columns first
   void write_batch(std::chrono::milliseconds wait);
   void fail(int error);
 

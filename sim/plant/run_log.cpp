@@ -13,13 +13,14 @@ hal::StartResult RunLog::open(const std::string& path) {
     return hal::StartResult::failure("cannot write the plant log " + path + ": " + std::strerror(errno));
   }
   std::setvbuf(file_, nullptr, _IOFBF, 1 << 20);
+  header_ = writer_.header();  // here, not on the stepping thread's first cycle: it allocates
   header_pending_ = true;
   return hal::StartResult::success();
 }
 
 void RunLog::write_header() {
   if (!header_pending_) return;
-  std::fputs(writer_.header().c_str(), file_);
+  std::fputs(header_.c_str(), file_);
   header_pending_ = false;
 }
 

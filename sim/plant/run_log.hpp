@@ -33,10 +33,13 @@ class RunLog {
   static constexpr record::RunCsvLayout kLayout{.B = true, .temperature = true};
 
  private:
-  void write_header();  // the column line, once: after the origin, or at the first row or the close
+  // The column line, once: after the origin, which a reader wants first (pandas' comment='#'),
+  // or at the first row or the close when no origin comes.
+  void write_header();
 
   std::FILE* file_ = nullptr;
   bool header_pending_ = false;
+  std::string header_;
   SingleWriterCounter rows_;
   record::RunCsvWriter writer_{kLayout};
 };

@@ -84,3 +84,23 @@ TEST(HalSetDemand, Table4ModeHasNoDemandChannel) {
 }
 
 }  // namespace
+
+namespace {
+
+// The CAN link's problem line asks only for the frames this config has the bus carry: the
+// driver's feedback only with can.use_feedback, the LVDT only when it is on CAN.
+TEST(HalSetLinks, TheCanLinkLooksOnlyForTheFramesTheConfigExpects) {
+  const mrd::hal::MonotonicClock clock;
+  const auto problems = [&](const char* text) {
+    const auto loaded = mrd::config::load_config_text(text, "links.toml");
+    EXPECT_TRUE(loaded.ok()) << loaded.report();
+    return mrd::firmware::HalSet(loaded.config, clock).link_problems();  // not started: no frame yet
+  };
+  EXPECT_EQ(problems("[backends]\nlvdt = \"mock\"\ndriver = \"can\"\nlines = \"mock\"\n"),
+            std::vector<std::string>{"can: can0: no current feedback frame (id 0x211) received"});
+  EXPECT_TRUE(problems("[backends]\nlvdt = \"mock\"\ndriver = \"can\"\nlines = \"mock\"\n[can]\nuse_feedback = false\n").empty());
+  EXPECT_EQ(problems("[backends]\nlvdt = \"can\"\ndriver = \"mock\"\nlines = \"mock\"\n"),
+            std::vector<std::string>{"can: can0: no LVDT frame (id 0x110) received"});
+}
+
+}  // namespace

@@ -21,11 +21,11 @@ namespace {
 std::string plot_script(const std::string& data, const std::string& png) {
   return "set terminal pngcairo noenhanced size 1000,700 font ',11'\n"
          "set output '" + png + "'\n"
-         "set datafile separator ','\n"
+         "set datafile separator ','\nset datafile columnheaders\n"
          "set title 'mrd-controller against mrd-plant: force against displacement'\n"
          "set xlabel 'displacement [mm]'\nset ylabel 'force [kN]'\nset grid\nset key below horizontal\n"
-         "plot '" + data + "' using 1:2 with lines lw 2 lc rgb '#888888' title "
-         "'plant (true force)', '' using 1:3 with lines lc rgb '#1f77b4' title "
+         "plot '" + data + "' using 1:($2 / 1e3) with lines lw 2 lc rgb '#888888' title "
+         "'plant (true force)', '' using 1:($3 / 1e3) with lines lc rgb '#1f77b4' title "
          "'controller observer'\n";
 }
 
@@ -129,12 +129,12 @@ int main(int argc, char** argv) {
       const std::string png = plot + "/force_displacement.png";
       std::ofstream out(data);
       // A blank line ends a stretch: gnuplot draws no line across a gap or a row left out.
-      out << "# displacement_mm,true_force_kN,observer_force_kN\n";
+      // The column line as pandas.read_csv(f) reads it (blank lines skipped), forces in N.
+      out << "displacement_mm,true_force_N,observer_force_N\n";
       const double long_step = 1.5 / log.record_rate;
       for (std::size_t i = 0; i < j.rows; ++i) {
         if (i > 0 && j.time[i] - j.time[i - 1] > long_step) out << '\n';
-        out << j.displacement[i] * 1e3 << ',' << j.true_force[i] * 1e-3 << ','
-            << j.observer_force[i] * 1e-3 << '\n';
+        out << j.displacement[i] * 1e3 << ',' << j.true_force[i] << ',' << j.observer_force[i] << '\n';
       }
       out.close();
       if (!out) {

@@ -64,7 +64,12 @@ class TelemetryParser {
     header_ = first ? record::split_csv_line(*first) : std::vector<std::string_view>{};
     header_text_.assign(header_.begin(), header_.end());
     header_.assign(header_text_.begin(), header_text_.end());
-    // Columns by name, in any order; the force in N, or in kN as older files wrote it.
+    // Columns by name, in any order; the force in N, or in kN as older files wrote it. A name
+    // twice is refused: which one is the value?
+    for (std::size_t i = 0; i < header_.size(); ++i)
+      if (std::find(header_.begin(), header_.begin() + static_cast<std::ptrdiff_t>(i), header_[i]) !=
+          header_.begin() + static_cast<std::ptrdiff_t>(i))
+        throw fail(header_[i], "the column appears twice");
     const auto has = [&](std::string_view name) { return column_of(name).has_value(); };
     const bool all_table4 = std::all_of(kTable4.begin(), kTable4.end(), [&](std::string_view name) {
       return has(name) || (name == "force_N" && has("force_kN"));
@@ -77,6 +82,9 @@ class TelemetryParser {
                          std::string(runtime::CsvTelemetryWriter::header()).substr(0, 60) + "...)");
     }
     log_.force_mode = std::all_of(kForce.begin() + static_cast<std::ptrdiff_t>(kTable4.size()), kForce.end(), has);
+    // Only the columns read are screened: another tool's extra column cannot set rows aside.
+    for (const std::string_view name : log_.force_mode ? kForce : kTable4) used_.push_back(name);
+    used_.push_back("force_kN");
     header_line_ = header_line;
     while (const auto line = next()) read_row(*line);
     if (log_.rows.empty()) {
@@ -103,6 +111,7 @@ class TelemetryParser {
   [[nodiscard]] std::optional<std::size_t> non_finite_cell(const std::vector<std::string_view>& f) const {
     for (std::size_t i = 0; i < f.size(); ++i) {
       if (!record::is_non_finite(f[i])) continue;
+      if (std::find(used_.begin(), used_.end(), header_[i]) == used_.end()) continue;
       if (f[i].empty() || figure_column(header_[i]) || !number_column(header_[i])) return i;
     }
     return std::nullopt;
@@ -229,6 +238,7 @@ class TelemetryParser {
   std::vector<std::string> header_text_;    // the column names, owned
   std::vector<std::string_view> header_;    // views of them, by position
   std::size_t header_line_ = 0;
+  std::vector<std::string_view> used_;      // the columns read (the rest are ignored)
   record::RowScreen screen_;
   std::string last_line_;  // the row kept last, as written: a duplicate is the same text
   // The row set aside last for its time: kept after all when the row before it was a stray.

@@ -52,6 +52,8 @@ std::vector<double> autocorrelation(const std::vector<double>& e, std::size_t ma
 std::vector<double> cross_correlation(const std::vector<double>& u, const std::vector<double>& e, std::size_t max_lag) {
   const std::size_t n = e.size();
   if (n == 0 || u.size() != n) return {};
+  for (std::size_t i = 0; i < n; ++i)
+    if (!std::isfinite(u[i]) || !std::isfinite(e[i])) return {};  // no figure rather than a wrong one
   double mu = 0.0, me = 0.0;
   for (std::size_t i = 0; i < n; ++i) mu += u[i], me += e[i];
   mu /= static_cast<double>(n);
@@ -72,6 +74,31 @@ std::vector<double> cross_correlation(const std::vector<double>& u, const std::v
     r[lags - k] = behind / norm;
   }
   return r;
+}
+
+double bartlett_factor(const std::vector<double>& u, const std::vector<double>& e) {
+  const std::size_t n = e.size();
+  if (n < 2 || u.size() != n) return NAN;
+  double mu = 0.0, me = 0.0;
+  for (std::size_t i = 0; i < n; ++i) mu += u[i], me += e[i];
+  mu /= static_cast<double>(n);
+  me /= static_cast<double>(n);
+  double uu = 0.0, ee = 0.0;
+  for (std::size_t i = 0; i < n; ++i) uu += (u[i] - mu) * (u[i] - mu), ee += (e[i] - me) * (e[i] - me);
+  if (!(uu > 0.0) || !(ee > 0.0)) return NAN;
+  const double noise = 1.96 / std::sqrt(static_cast<double>(n));
+  double factor = 1.0;
+  for (std::size_t m = 1; m <= n / 4; ++m) {
+    double su = 0.0, se = 0.0;
+    for (std::size_t i = 0; i + m < n; ++i) {
+      su += (u[i] - mu) * (u[i + m] - mu);
+      se += (e[i] - me) * (e[i + m] - me);
+    }
+    const double re = se / ee;
+    if (std::abs(re) < noise) break;
+    factor += 2.0 * (su / uu) * re;
+  }
+  return factor;
 }
 
 double autocorrelation_bound_95(std::size_t samples) {

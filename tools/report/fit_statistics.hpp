@@ -23,9 +23,15 @@ namespace mrd::tools {
 // shows it: r(k) = sum u_i e_{i+k} / sqrt(sum u^2 sum e^2) for k = -max_lag..max_lag, at index
 // k + max_lag. A model that leaves nothing of u unexplained keeps |r(k)| within 1.96/sqrt(N) at
 // 95 % (e white); a peak at k > 0 is an effect of u that the residual shows k samples later.
-// Empty when the lengths differ or either is constant.
+// Empty when the lengths differ, a value is not finite, or either is constant.
 [[nodiscard]] std::vector<double> cross_correlation(const std::vector<double>& u, const std::vector<double>& e,
                                                     std::size_t max_lag);
+
+// Bartlett's factor S = 1 + 2 sum_m ru(m) re(m) on the variance S/N of a cross-correlation
+// estimate between two unrelated series u and e (what MATLAB's resid widens its band by): summed
+// until e's autocorrelation falls to its own noise (1.96/sqrt(N)), at most N/4 lags. 1 when e is
+// white; large for two smooth series. NaN when the lengths differ or either is constant.
+[[nodiscard]] double bartlett_factor(const std::vector<double>& u, const std::vector<double>& e);
 
 // Parameter standard deviations of a least-squares fit at its optimum x: the covariance
 // sigma^2 (J^T J)^-1 with sigma^2 = |r|^2 / (N - p) and J = dr/dx by central differences

@@ -78,10 +78,16 @@ std::vector<double> pooled_autocorrelation(const ForceFitTraces& t, std::size_t 
 }
 
 // The runs' cross-correlations of an input with the residual on the kept samples, averaged by
-// their kept samples as the autocorrelation is; lags -lags..lags at index k + lags.
-std::vector<double> pooled_cross_correlation(const ForceFitTraces& t, const std::vector<double>& input, std::size_t lags) {
+// their kept samples as the autocorrelation is; lags -lags..lags at index k + lags. `bound`: the
+// 95 % bound of an estimate when the two are unrelated. A residual is seldom white and an input
+// (a sine, a band-limited motion) never is, so 1.96/sqrt(N) would call almost every lag of
+// two unrelated smooth signals significant: Bartlett's variance (1 + 2 sum_m ru(m) re(m)) / N,
+// as MATLAB's resid widens its band (bartlett_factor).
+std::vector<double> pooled_cross_correlation(const ForceFitTraces& t, const std::vector<double>& input, std::size_t lags,
+                                             double& bound) {
   std::vector<double> pooled(2 * lags + 1, 0.0);
   std::size_t samples = 0;
+  double variance = 0.0;  // sum over runs of N_r S_r; the pooled variance is that over N^2
   for (const RunSpan span : run_spans(t)) {
     std::vector<double> u, e;
     for (std::size_t i = span.from; i < span.to; ++i)
@@ -93,16 +99,19 @@ std::vector<double> pooled_cross_correlation(const ForceFitTraces& t, const std:
     const std::vector<double> r = cross_correlation(u, e, lags);
     if (r.size() != pooled.size()) continue;
     for (std::size_t k = 0; k < r.size(); ++k) pooled[k] += static_cast<double>(e.size()) * r[k];
+    const double spread = bartlett_factor(u, e);
+    variance += static_cast<double>(e.size()) * (std::isfinite(spread) ? std::max(spread, 1e-3) : 1.0);
     samples += e.size();
   }
   if (samples == 0) return {};
   for (double& r : pooled) r /= static_cast<double>(samples);
+  bound = 1.96 * std::sqrt(variance) / static_cast<double>(samples);
   return pooled;
 }
 
 InputCorrelation input_correlation(const std::string& name, const std::vector<double>& r, double bound, double lag_step) {
-  InputCorrelation c{name, 0.0, 0.0, 0.0, r};
-  if (r.empty()) return {name, NAN, NAN, NAN, {}};
+  InputCorrelation c{name, 0.0, 0.0, bound, 0.0, r};
+  if (r.empty()) return {name, NAN, NAN, NAN, NAN, {}};
   const std::size_t lags = r.size() / 2;
   std::size_t outside = 0;
   for (std::size_t k = 0; k < r.size(); ++k) {
@@ -121,7 +130,9 @@ void add_input_correlations(const ForceFitTraces& t, ForceFitFigures& f) {
   const double step = f.lag_step_s > 0.0 ? f.lag_step_s : 1.0;
   for (const auto& [name, input] : {std::pair{"velocity", &t.velocity}, std::pair{"displacement", &t.displacement}}) {
     if (input->size() != t.measured.size()) continue;
-    f.inputs.push_back(input_correlation(name, pooled_cross_correlation(t, *input, f.lags), f.acf_bound, step));
+    double bound = NAN;
+    const std::vector<double> r = pooled_cross_correlation(t, *input, f.lags, bound);
+    f.inputs.push_back(input_correlation(name, r, bound, step));
   }
 }
 
@@ -183,7 +194,8 @@ Json force_fit_json(const ForceFitFigures& f) {
   }
   Json inputs = Json::array();
   for (const InputCorrelation& c : f.inputs)
-    inputs.push_back({{"input", c.input}, {"max_abs_r", c.max_abs_r}, {"at_lag_s", c.at_lag_s}, {"outside_fraction", c.outside}});
+    inputs.push_back({{"input", c.input}, {"max_abs_r", c.max_abs_r}, {"at_lag_s", c.at_lag_s}, {"bound", c.bound},
+                      {"outside_fraction", c.outside}});
   out["input_xcorr"] = inputs;
   if (f.runs.empty()) return out;
   Json runs = Json::array();
@@ -227,11 +239,13 @@ void add_input_correlation_plot(HtmlReport& report, const std::string& name, con
   if (f.inputs.empty() || f.inputs.front().r.empty()) return;
   const bool in_ms = f.lag_step_s > 0.0;
   const std::size_t lags = f.inputs.front().r.size() / 2;
-  std::vector<double> lag, upper(2 * lags + 1, f.acf_bound), lower(2 * lags + 1, -f.acf_bound);
+  std::vector<double> lag;
   for (std::size_t k = 0; k <= 2 * lags; ++k)
     lag.push_back((static_cast<double>(k) - static_cast<double>(lags)) * (in_ms ? 1e3 * f.lag_step_s : 1.0));
-  std::vector<std::string> names = {"lag", "upper_95", "lower_95"};
-  std::vector<const std::vector<double>*> columns = {&lag, &upper, &lower};
+  std::vector<std::string> names = {"lag"};
+  std::vector<const std::vector<double>*> columns = {&lag};
+  std::vector<std::vector<double>> bounds;  // each input's own, +-
+  bounds.reserve(4);
   std::vector<ReportFigure> rows;
   std::string plot = "plot ";
   const char* colours[] = {"#1f77b4", "#2ca02c"};
@@ -241,19 +255,30 @@ void add_input_correlation_plot(HtmlReport& report, const std::string& name, con
     names.push_back(c.input);
     columns.push_back(&c.r);
     plot += format("'xcorr.dat' using 1:%zu with lines lw 2 lc rgb '%s' title '%s', ", columns.size(), colours[i], c.input.c_str());
+    bounds.emplace_back(lag.size(), c.bound);
+    bounds.emplace_back(lag.size(), -c.bound);
+    names.push_back(c.input + "_upper_95");
+    columns.push_back(&bounds[bounds.size() - 2]);
+    names.push_back(c.input + "_lower_95");
+    columns.push_back(&bounds.back());
+    plot += format("'xcorr.dat' using 1:%zu with lines dt 2 lc rgb '%s' title '%s 95 %% bound', '' using 1:%zu with lines dt 2 "
+                   "lc rgb '%s' notitle, ",
+                   columns.size() - 1, colours[i], c.input.c_str(), columns.size(), colours[i]);
     const std::string key = "fit.input_xcorr." + std::to_string(i);
     rows.push_back({c.input + ": largest |r|", key + ".max_abs_r", c.max_abs_r, ""});
     rows.push_back({c.input + ": at lag", key + ".at_lag_s", c.at_lag_s, in_ms ? "s" : "samples"});
+    rows.push_back({c.input + ": 95 % bound (Bartlett, the two autocorrelations)", key + ".bound", c.bound, ""});
     rows.push_back({c.input + ": share of lags outside the bound", key + ".outside_fraction", c.outside, "(0 to 1)"});
   }
   report.figures("Residual against the inputs (as MATLAB's resid: cross-correlation, lag > 0 when the residual follows)", rows);
   report.data("xcorr", names, columns);
+  plot.resize(plot.size() - 2);  // the last ", "
   report.plot("residual_input_correlation",
-              format("%s: cross-correlation of the residual with the velocity and the displacement, 95 %% bounds +-%.3g",
-                     name.c_str(), f.acf_bound),
+              format("%s: cross-correlation of the residual with the velocity and the displacement, each between its "
+                     "95 %% bounds (dashed)",
+                     name.c_str()),
               format("set xlabel '%s'\nset ylabel 'cross-correlation [-]'\nset yrange [-1:1]\n", in_ms ? "lag [ms]" : "lag [samples]") +
-                  plot + "'xcorr.dat' using 1:2 with lines dt 2 lc rgb '#d62728' title '95 % bound', "
-                         "'xcorr.dat' using 1:3 with lines dt 2 lc rgb '#d62728' notitle\n");
+                  plot + "\n");
 }
 
 }  // namespace
@@ -262,8 +287,10 @@ std::vector<TimeMarker> run_markers(const std::vector<double>& time, const std::
                                     const std::vector<std::string>& run_names) {
   std::vector<TimeMarker> out;
   if (run_starts.size() < 2) return out;
-  for (std::size_t r = 0; r < run_starts.size(); ++r)
+  for (std::size_t r = 0; r < run_starts.size(); ++r) {
+    if (run_starts[r] >= time.size()) break;  // a run with no sample left has nothing to mark
     out.push_back({time[run_starts[r]], run_starts.size() <= 8 && r < run_names.size() ? run_names[r] : std::string()});
+  }
   return out;
 }
 
@@ -295,7 +322,7 @@ ForceFitFigures add_force_fit(HtmlReport& report, const ForceFitTraces& t) {
       {"max |measured - predicted|", "fit.max_N", f.max_N, "N"},
   };
   if (!t.baseline.empty()) rows.push_back({"fit of the " + t.baseline_label, "fit.baseline_fit_percent", f.baseline_fit_percent, "%"});
-  if (!t.reference.empty()) {
+  if (t.reference.size() == t.measured.size()) {
     rows.push_back({"fit of " + t.reference_label, "fit.reference_fit_percent", f.reference_fit_percent, "%"});
     rows.push_back({"RMS of measured - " + t.reference_label, "fit.reference_rms_N", f.reference_rms_N, "N"});
   }
@@ -340,10 +367,10 @@ ForceFitFigures add_force_fit(HtmlReport& report, const ForceFitTraces& t) {
   TimeChart force_chart{"force_time", format("%s: measured and predicted force against time, fit %.2f %%", t.name.c_str(), f.fit_percent),
                         time_label, "force [N]", &t.time, {}, markers};
   if (!t.baseline.empty()) force_chart.series.push_back({t.baseline_label, &t.baseline, "#9ecae1"});
-  if (!t.reference.empty()) force_chart.series.push_back({t.reference_label, &t.reference, "#2ca02c"});
+  if (t.reference.size() == n) force_chart.series.push_back({t.reference_label, &t.reference, "#2ca02c"});
   force_chart.series.push_back({t.predicted_label, &t.predicted, "#d62728"});
   force_chart.series.push_back({"measured", &t.measured, "#555555"});  // on top: the data, not the model
-  if (!t.keep.empty()) force_chart.series.push_back({"set aside by screening", &aside, "#ff7f0e", 2.0});
+  if (!t.keep.empty()) force_chart.series.push_back({"set aside by screening", &aside, "#ff7f0e", 2.0, true});
   report.time_chart(force_chart);
   report.plot("force_displacement", t.name + ": force against displacement", overlay(2, "displacement [mm]", "points pt 7 ps 0.2"),
               HtmlReport::Drawing::raster);

@@ -45,7 +45,8 @@ struct InputCorrelation {
   std::string input;         // "velocity", "displacement"
   double max_abs_r = 0.0;    // the largest |r(k)| over k = -lags..lags
   double at_lag_s = 0.0;     // its lag (> 0: the residual follows the input); in samples when the runs' rates differ
-  double outside = 0.0;      // fraction of the lags with |r| above the 95 % bound
+  double bound = 0.0;        // 95 % bound when input and residual are unrelated (Bartlett: both autocorrelations)
+  double outside = 0.0;      // fraction of the lags with |r| above it
   std::vector<double> r;     // r(k) for k = -lags..lags (the report's plot)
 };
 
@@ -69,7 +70,7 @@ struct ForceFitFigures {
 
 // The figures as the tools' JSON "fit" object: fit_percent, rms_N, max_N, baseline_fit_percent,
 // acf_lags, acf_lag_step_s, acf_bound, acf_outside_fraction, input_xcorr (one object per input:
-// input, max_abs_r, at_lag_s, outside_fraction), and with a reference model reference_fit_percent
+// input, max_abs_r, at_lag_s, bound, outside_fraction), and with a reference model reference_fit_percent
 // and reference_rms_N. The report's cells name them "fit.*".
 [[nodiscard]] Json force_fit_json(const ForceFitFigures& f);
 

@@ -61,10 +61,12 @@ std::string base64_file(const std::string& path) {
   return in.bad() || bytes.empty() ? std::string() : base64(bytes.data(), bytes.size());
 }
 
-// JSON inside <script>: "</" would end the element early.
-std::string script_safe(std::string json) {
-  for (std::size_t at = json.find("</"); at != std::string::npos; at = json.find("</", at + 3)) json.replace(at, 2, "<\\/");
-  return json;
+// JSON inside <script>: a '<' could end the element or open a comment the parser then hides the
+// page in ("</script", "<!--"); JSON's own escape keeps the text.
+std::string script_safe(const std::string& json) {
+  std::string out;
+  for (const char c : json) out += c == '<' ? std::string("\\u003c") : std::string(1, c);
+  return out;
 }
 
 // A number with its JSON key: the full value in data-value, six digits shown.
@@ -152,7 +154,7 @@ void HtmlReport::correlation_matrix(const std::string& caption, const std::vecto
         out += "<td class=\"num\">&ndash;</td>";
         continue;
       }
-      // White at 0, full red at |r| = 1.
+      // White at 0, a deeper red as |r| grows: the strong couplings catch the eye first.
       const int light = static_cast<int>(std::lround(100.0 - 45.0 * std::min(1.0, std::abs(r))));
       out += format("<td class=\"num\" style=\"background:hsl(0,80%%,%d%%)\">%.2f</td>", light, r);
       if (j > i && std::abs(r) > 0.95) close.push_back({names[i], names[j], format("%.4f", r)});
@@ -229,7 +231,7 @@ void HtmlReport::time_chart(const TimeChart& chart) {
       per_point > 1.0 ? format("; long run: each point pair is the min and max of %.3g samples", 2.0 * per_point) : "";
   pieces_.push_back("<figure class=\"mrd-chart\" id=\"" + html_escape(chart.name) +
                     "\">\n<div class=\"mrd-chart-plot\"></div>\n<script type=\"application/json\">" +
-                    script_safe(data.dump()) + "</script>\n<figcaption>" + html_escape(chart.caption) +
+                    script_safe(data.dump(-1, ' ', false, Json::error_handler_t::replace)) + "</script>\n<figcaption>" + html_escape(chart.caption) +
                     " (drag to zoom, double-click for the whole run" + html_escape(thinning) + ")</figcaption></figure>\n");
   has_charts_ = true;
 }

@@ -51,12 +51,15 @@ std::string base64(const void* bytes, std::size_t size) {
 
 ThinnedChart thin_to_envelope(const TimeChart& chart, std::size_t max_points) {
   ThinnedChart out;
+  if (chart.time == nullptr) return out;
   const std::vector<double>& t = *chart.time;
   const std::size_t n = t.size();
   out.series.resize(chart.series.size());
+  const auto usable = [&](const TimeSeries& s) { return s.values != nullptr && s.values->size() == n; };
   if (n <= std::max<std::size_t>(2, max_points)) {
     out.x = t;
-    for (std::size_t s = 0; s < chart.series.size(); ++s) out.series[s] = *chart.series[s].values;
+    for (std::size_t s = 0; s < chart.series.size(); ++s)
+      if (usable(chart.series[s])) out.series[s] = *chart.series[s].values;
     return out;
   }
   const std::size_t buckets = std::max<std::size_t>(1, max_points / 2);
@@ -66,8 +69,9 @@ ThinnedChart thin_to_envelope(const TimeChart& chart, std::size_t max_points) {
   for (std::size_t b = 0; b < buckets; ++b) {
     const std::size_t from = b * n / buckets, to = (b + 1) * n / buckets;
     out.x.push_back(t[from]);
-    out.x.push_back(t[from + (to - from) / 2]);
+    out.x.push_back(t[to - 1]);
     for (std::size_t s = 0; s < chart.series.size(); ++s) {
+      if (!usable(chart.series[s])) continue;
       const auto [first, second] = extremes_in_order(*chart.series[s].values, from, to);
       out.series[s].push_back(first);
       out.series[s].push_back(second);
@@ -85,7 +89,8 @@ Json time_chart_data(const TimeChart& chart, std::size_t max_points) {
   for (std::size_t i = 0; i < x.size(); ++i) x[i] = static_cast<float>(thin.x[i] - x0);
   Json series = Json::array();
   for (std::size_t s = 0; s < chart.series.size(); ++s) {
-    const std::vector<double>& v = thin.series[s];
+    std::vector<double> v = thin.series[s];
+    if (v.size() != thin.x.size()) v.assign(thin.x.size(), NAN);  // a series left out: no value anywhere
     double low = INFINITY, high = -INFINITY;
     for (const double y : v)
       if (std::isfinite(y)) low = std::min(low, y), high = std::max(high, y);
@@ -95,6 +100,7 @@ Json time_chart_data(const TimeChart& chart, std::size_t max_points) {
     for (std::size_t i = 0; i < v.size(); ++i)
       if (std::isfinite(v[i])) q[i] = static_cast<std::uint16_t>(std::lround((v[i] - low) / step));
     series.push_back({{"label", chart.series[s].label}, {"colour", chart.series[s].colour}, {"width", chart.series[s].width},
+                      {"points", chart.series[s].points},
                       {"offset", low}, {"scale", step}, {"q", little_endian_base64(q)}});
   }
   Json markers = Json::array();

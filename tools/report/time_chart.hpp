@@ -16,6 +16,7 @@ struct TimeSeries {
   const std::vector<double>* values = nullptr;  // one per time; NaN: no value (a gap in the line)
   std::string colour = "#1f77b4";
   double width = 1.0;
+  bool points = false;  // markers, no line: for sparse values (samples set aside) a line would hide
 };
 
 struct TimeMarker {
@@ -34,7 +35,8 @@ struct TimeChart {
 
 // What a chart holds after thinning: each sample (samples_per_point 1), or per bucket of
 // samples two points, the bucket's extremes in the order they occurred, at the bucket's first and
-// middle time.
+// last time (so the chart spans the run exactly). A series without one value per time is left
+// out (as an empty one).
 struct ThinnedChart {
   std::vector<double> x;
   std::vector<std::vector<double>> series;

@@ -112,6 +112,24 @@ TEST(TelemetryLog, ColumnsAreFoundByNameInAnyOrderAndAnOldForceInKilonewtons) {
   EXPECT_DOUBLE_EQ(old.rows[0].measured_current, 0.4);
 }
 
+// Another tool's extra column is ignored, empty cells and all; a column named twice is refused.
+TEST(TelemetryLog, AnExtraColumnIsIgnoredAndATwiceNamedOneRefused) {
+  std::string header = CsvTelemetryWriter::header();
+  header.insert(std::string("cycle").size(), ",note");
+  const auto log = mrd::tools::parse_telemetry_csv(header + "7,,0.500000,2.5000,fresh,0.4,0,0,0,0,0,12,1500,RUN,none,0,1,0,0\n",
+                                                   "extra.csv");
+  ASSERT_EQ(log.rows.size(), 1u);
+  EXPECT_TRUE(log.set_aside_rows.empty());
+  std::string twice = CsvTelemetryWriter::header();
+  twice.insert(twice.size() - 1, ",B_T");
+  try {
+    (void)mrd::tools::parse_telemetry_csv(twice + "7,0.500000,2.5000,fresh,0.4,0,0,0,0,0,12,1500,RUN,none,0,1,0,0,0\n", "twice.csv");
+    ADD_FAILURE() << "a column named twice was read";
+  } catch (const mrd::record::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("twice.csv:1: column 'B_T': the column appears twice"), std::string::npos) << e.what();
+  }
+}
+
 TEST(TelemetryLog, AForeignHeaderOrARaggedRowNamesTheFileAndLine) {
   try {
     (void)mrd::tools::parse_telemetry_csv("time_s,force_N\n0,1\n", "x.csv");

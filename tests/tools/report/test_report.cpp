@@ -81,6 +81,7 @@ TEST(ReportFit, CrossCorrelationFindsTheInputALateResidualCarries) {
   EXPECT_NEAR(f.inputs[0].at_lag_s, 3e-3, 1e-9);
   EXPECT_NEAR(f.inputs[0].max_abs_r, 0.447, 0.02);
   EXPECT_LT(f.inputs[1].max_abs_r, 4.0 / std::sqrt(static_cast<double>(n)));  // the displacement is unrelated
+  EXPECT_NEAR(f.inputs[0].bound, 1.96 / std::sqrt(static_cast<double>(n)), 0.2 / std::sqrt(static_cast<double>(n)));
   EXPECT_EQ(force_fit_json(f)["input_xcorr"][0]["at_lag_s"].get<double>(), f.inputs[0].at_lag_s);
 }
 
@@ -103,6 +104,37 @@ TEST(ReportFit, AReferenceModelGetsItsOwnFitAndRms) {
   EXPECT_EQ(json["reference_rms_N"].get<double>(), f.reference_rms_N);
   t.reference.clear();
   EXPECT_FALSE(force_fit_json(force_fit_figures(t, 10)).contains("reference_fit_percent"));
+}
+
+// A smooth input (a 0.5 Hz sine at 1 kHz) and an unrelated smooth residual (AR(1), 0.99): their
+// sample cross-correlation wanders far beyond 1.96/sqrt(N), so the bound is widened by both
+// autocorrelations (Bartlett) and only about the nominal share of lags falls outside it.
+TEST(ReportFit, TheCrossCorrelationBoundWidensForSmoothUnrelatedSignals) {
+  const std::size_t n = 20000;
+  double outside_naive = 0.0, outside_bartlett = 0.0;
+  for (unsigned seed = 1; seed <= 10; ++seed) {
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> unit(0.0, 1.0);
+    ForceFitTraces t;
+    double ar = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double time = 1e-3 * static_cast<double>(i);
+      ar = 0.99 * ar + unit(rng);
+      t.time.push_back(time);
+      t.velocity.push_back(std::sin(2.0 * M_PI * 0.5 * time + seed));
+      t.displacement.push_back(std::cos(2.0 * M_PI * 0.5 * time + seed));
+      t.predicted.push_back(0.0);
+      t.measured.push_back(ar);
+    }
+    const ForceFitFigures f = force_fit_figures(t, 50);
+    outside_bartlett += f.inputs[0].outside / 10.0;
+    std::size_t naive = 0;
+    for (const double r : f.inputs[0].r) naive += std::abs(r) > 1.96 / std::sqrt(static_cast<double>(n)) ? 1 : 0;
+    outside_naive += static_cast<double>(naive) / static_cast<double>(f.inputs[0].r.size()) / 10.0;
+    EXPECT_GT(f.inputs[0].bound, 3.0 * 1.96 / std::sqrt(static_cast<double>(n)));
+  }
+  EXPECT_GT(outside_naive, 0.5);      // the white-noise bound calls most lags significant
+  EXPECT_LT(outside_bartlett, 0.2);  // the widened one about the nominal 5 %, averaged over seeds
 }
 
 TEST(ReportFit, AutocorrelationOfAnAlternatingSequenceAlternates) {

@@ -89,6 +89,8 @@ TEST(TimeChart, TheEnvelopeKeepsEveryPeakWhereAndInTheOrderItOccurred) {
     }
   EXPECT_EQ(gaps, 2u * 2u);  // 500 missing samples cover two whole buckets of 200
   for (std::size_t i = 1; i < thin.x.size(); ++i) EXPECT_LT(thin.x[i - 1], thin.x[i]);
+  EXPECT_EQ(thin.x.front(), t.front());  // the chart spans the run exactly
+  EXPECT_EQ(thin.x.back(), t.back());
 }
 
 // The chart's JSON decodes, with a decoder of its own, to the thinned series within half a

@@ -66,7 +66,10 @@
     var target = holder.querySelector(".mrd-chart-plot");
     var series = [{ label: chart.x_label }], data = [xs(chart)];
     chart.series.forEach(function (s) {
-      series.push({ label: s.label, stroke: s.colour, width: s.width, spanGaps: false });
+      // Sparse values (samples set aside) as markers: a line between gaps would draw nothing.
+      series.push(s.points ? { label: s.label, stroke: s.colour, fill: s.colour, width: s.width, paths: function () { return null; },
+                               points: { show: true, size: 5, stroke: s.colour, fill: s.colour } }
+                           : { label: s.label, stroke: s.colour, width: s.width, spanGaps: false });
       data.push(ys(s));
     });
     var u = new uPlot({
