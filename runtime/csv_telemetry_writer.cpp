@@ -11,54 +11,55 @@
 #include <cstring>
 
 #include "common/time_origin.hpp"
-#include "control/sample_check.hpp"
-#include "control/supervisor.hpp"
 #include "runtime/bounded_write.hpp"
+#include "runtime/telemetry_columns.hpp"
 
 namespace mrd::runtime {
 
-namespace {
-#define MRD_TELEMETRY_COLUMNS                                                                    \
-  "cycle,time_s,displacement_mm,sample,measured_current_A,scheduled_current_A,"                  \
-  "law_current_A,setpoint_A,target_B_T,B_T,velocity_mm_s,force_N,state,trigger,overruns,"         \
-  "enable,latched,recoveries"
-constexpr const char* kHeader = MRD_TELEMETRY_COLUMNS "\n";
-// Force mode: the demand the law used, Eq. 12's yield force at its target, the demand's check,
-// the inverse's flags, the load-cell correction's scale and its frozen periods
-// (docs/FORCE-CONTROL.md).
-constexpr const char* kForceHeader =
-    MRD_TELEMETRY_COLUMNS ",demand_N,yield_force_N,demand,clipped,reached,force_scale,load_cell_frozen\n";
-#undef MRD_TELEMETRY_COLUMNS
-
-// The force columns after the line `format` wrote (its '\n' replaced).
-int append_force_columns(const TelemetryRecord& r, char* buf, std::size_t size, int length) {
-  if (length <= 0 || static_cast<std::size_t>(length) >= size) return length;
-  const auto check = to_string(static_cast<control::SampleCheck>(r.demand_check));
-  const int more = std::snprintf(buf + length - 1, size - static_cast<std::size_t>(length) + 1,
-                                 ",%.6g,%.6g,%.*s,%d,%d,%.6g,%u\n", r.demand, r.yield_force,
-                                 static_cast<int>(check.size()), check.data(), r.clipped ? 1 : 0,
-                                 r.reached ? 1 : 0, r.force_scale, static_cast<unsigned>(r.load_cell_frozen));
-  return more < 0 ? more : length - 1 + more;
+std::string CsvTelemetryWriter::column_line(std::span<const TelemetryColumn> columns, bool force_columns) {
+  std::string line;
+  for (const TelemetryColumn& c : columns) {
+    if (c.force_mode && !force_columns) break;
+    if (!line.empty()) line.push_back(',');
+    line.append(c.name);
+  }
+  return line + "\n";
 }
-}  // namespace
 
-const char* CsvTelemetryWriter::header() { return kHeader; }
-const char* CsvTelemetryWriter::force_header() { return kForceHeader; }
+// Built once, in start_thread, before the loop's first record.
+const char* CsvTelemetryWriter::header() {
+  static const std::string line = column_line(kTelemetryColumns, false);
+  return line.c_str();
+}
+
+const char* CsvTelemetryWriter::force_header() {
+  static const std::string line = column_line(kTelemetryColumns, true);
+  return line.c_str();
+}
 
 int CsvTelemetryWriter::format(const TelemetryRecord& r, hal::Timestamp start, char* buf,
                                std::size_t size, bool force_columns) {
+  return format(kTelemetryColumns, r, start, buf, size, force_columns);
+}
+
+int CsvTelemetryWriter::format(std::span<const TelemetryColumn> columns, const TelemetryRecord& r,
+                               hal::Timestamp start, char* buf, std::size_t size, bool force_columns) {
   const double t = std::chrono::duration<double>(r.time - start).count();
-  const auto sample = to_string(static_cast<control::SampleCheck>(r.sample));
-  const auto state = to_string(static_cast<control::SupervisorState>(r.state));
-  const auto trigger = to_string(static_cast<control::Trigger>(r.trigger));
-  const int length = std::snprintf(buf, size, "%llu,%.6f,%.4f,%.*s,%.5g,%.4g,%.5g,%.5g,%.5g,%.5g,%.5g,%.6g,%.*s,%.*s,%u,%d,%d,%llu\n",
-                       static_cast<unsigned long long>(r.cycle), t, r.displacement * 1e3,
-                       static_cast<int>(sample.size()), sample.data(), r.measured_current,
-                       r.scheduled_current, r.law_current, r.setpoint, r.target_B, r.B,
-                       r.velocity * 1e3, r.force, static_cast<int>(state.size()),
-                       state.data(), static_cast<int>(trigger.size()), trigger.data(), r.overruns,
-                       r.enable ? 1 : 0, r.latched ? 1 : 0, static_cast<unsigned long long>(r.recoveries));
-  return force_columns ? append_force_columns(r, buf, size, length) : length;
+  std::size_t length = 0;
+  for (const TelemetryColumn& c : columns) {
+    if (c.force_mode && !force_columns) break;  // force mode's columns come last
+    if (length > 0) {
+      if (length + 1 >= size) return -1;
+      buf[length++] = ',';
+    }
+    const int n = c.write(r, t, buf + length, size - length);
+    if (n < 0 || length + static_cast<std::size_t>(n) >= size) return -1;  // a line cut short is no line
+    length += static_cast<std::size_t>(n);
+  }
+  if (length + 1 >= size) return -1;
+  buf[length++] = '\n';
+  buf[length] = '\0';
+  return static_cast<int>(length);
 }
 
 std::string CsvTelemetryWriter::run_file(const std::string& path, unsigned n) {
@@ -131,6 +132,8 @@ hal::StartResult CsvTelemetryWriter::start(const std::string& path) {
 
 hal::StartResult CsvTelemetryWriter::start_thread() {
   batch_.reserve(kBatchBytes + 512);
+  (void)header();  // the column lines are built here, not with the first record
+  (void)force_header();
   header_pending_ = true;
   const auto pause = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
       std::chrono::duration<double>(flush_period_s_));

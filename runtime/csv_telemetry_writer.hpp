@@ -4,9 +4,11 @@
 #include <chrono>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "runtime/telemetry_columns.hpp"
 #include "runtime/telemetry_config.hpp"
 #include "runtime/telemetry_queue.hpp"
 #include "hal/clock.hpp"
@@ -59,11 +61,17 @@ class CsvTelemetryWriter {
   // The CSV's t = 0 on the loop's clock (CLOCK_MONOTONIC in the controller), once a record is
   // written; read it after stop(). Another process on the same host joins its log by it.
   [[nodiscard]] std::optional<hal::Timestamp> start_time() const { return start_; }
+  // The column lines (runtime/telemetry_columns.hpp), '\n' ended.
   static const char* header();
   static const char* force_header();  // header() with force mode's columns
-  // One CSV line (with '\n') into buf, time counted from `start`; returns the length.
+  // One CSV line (with '\n') into buf, time counted from `start`; returns the length, or -1 when
+  // it does not fit (no line cut short).
   static int format(const TelemetryRecord& r, hal::Timestamp start, char* buf, std::size_t size,
                     bool force_columns = false);
+  // The same from another table: what a test of the table itself writes with.
+  static int format(std::span<const TelemetryColumn> columns, const TelemetryRecord& r, hal::Timestamp start,
+                    char* buf, std::size_t size, bool force_columns);
+  static std::string column_line(std::span<const TelemetryColumn> columns, bool force_columns);
   // The file a run numbered `n` writes for `path`: "dir/run.csv" -> "dir/run-0007.csv".
   static std::string run_file(const std::string& path, unsigned n);
 

@@ -208,3 +208,51 @@ TEST(TelemetryForceColumns, ForceModeAppendsItsColumnsAndTable4LinesAreUnchanged
 }
 
 }  // namespace
+
+namespace {
+
+// Every field of a record lands in its named column, in the file's unit, written out by hand
+// here: the writer's column table must keep each value under its own name.
+TEST(TelemetryColumns, EachFieldIsWrittenUnderItsNameInTheFilesUnit) {
+  using mrd::control::SampleCheck;
+  using mrd::control::SupervisorState;
+  using mrd::control::Trigger;
+  mrd::runtime::TelemetryRecord r{
+      .cycle = 42,
+      .time = mrd::hal::Timestamp{std::chrono::milliseconds{1500}},
+      .displacement = 0.0123,
+      .measured_current = 0.51,
+      .scheduled_current = 0.8,
+      .law_current = 0.75,
+      .setpoint = 0.7,
+      .target_B = 0.9,
+      .B = 0.85,
+      .velocity = 0.0456,
+      .force = 12345.6,
+      .overruns = 3,
+      .sample = static_cast<std::uint8_t>(SampleCheck::kFresh),
+      .state = static_cast<std::uint8_t>(SupervisorState::kRun),
+      .trigger = static_cast<std::uint8_t>(Trigger::kNone),
+      .enable = true,
+      .latched = false,
+      .recoveries = 7,
+      .demand = 2000.0,
+      .yield_force = 9876.5,
+      .demand_check = static_cast<std::uint8_t>(SampleCheck::kStale),
+      .clipped = true,
+      .reached = false,
+      .force_scale = 0.875,
+      .load_cell_frozen = 12,
+  };
+  char line[512];
+  ASSERT_GT(mrd::runtime::CsvTelemetryWriter::format(r, {}, line, sizeof line, true), 0);
+  EXPECT_STREQ(line,
+               "42,1.500000,12.3000,fresh,0.51,0.8,0.75,0.7,0.9,0.85,45.6,12345.6,RUN,none,3,1,0,7,"
+               "2000,9876.5,stale,1,0,0.875,12\n");
+  EXPECT_STREQ(mrd::runtime::CsvTelemetryWriter::force_header(),
+               "cycle,time_s,displacement_mm,sample,measured_current_A,scheduled_current_A,law_current_A,setpoint_A,"
+               "target_B_T,B_T,velocity_mm_s,force_N,state,trigger,overruns,enable,latched,recoveries,"
+               "demand_N,yield_force_N,demand,clipped,reached,force_scale,load_cell_frozen\n");
+}
+
+}  // namespace

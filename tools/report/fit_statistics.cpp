@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace mrd::tools {
 
@@ -49,21 +50,43 @@ std::vector<double> autocorrelation(const std::vector<double>& e, std::size_t ma
   return r;
 }
 
-std::vector<double> cross_correlation(const std::vector<double>& u, const std::vector<double>& e, std::size_t max_lag) {
+namespace {
+
+// Two equally long series about their means: what both the cross-correlation and Bartlett's
+// factor start from. nullopt when the lengths differ, a value is not finite, or either is constant.
+struct CentredPair {
+  double mean_u = 0.0, mean_e = 0.0;
+  double energy_u = 0.0, energy_e = 0.0;  // sums of squares about the means
+};
+std::optional<CentredPair> centred_pair(const std::vector<double>& u, const std::vector<double>& e) {
   const std::size_t n = e.size();
-  if (n == 0 || u.size() != n) return {};
-  for (std::size_t i = 0; i < n; ++i)
-    if (!std::isfinite(u[i]) || !std::isfinite(e[i])) return {};  // no figure rather than a wrong one
-  double mu = 0.0, me = 0.0;
-  for (std::size_t i = 0; i < n; ++i) mu += u[i], me += e[i];
-  mu /= static_cast<double>(n);
-  me /= static_cast<double>(n);
-  double uu = 0.0, ee = 0.0;
-  for (std::size_t i = 0; i < n; ++i) uu += (u[i] - mu) * (u[i] - mu), ee += (e[i] - me) * (e[i] - me);
-  if (uu <= 0.0 || ee <= 0.0) return {};
+  if (n < 2 || u.size() != n) return std::nullopt;
+  CentredPair c;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!std::isfinite(u[i]) || !std::isfinite(e[i])) return std::nullopt;  // no figure rather than a wrong one
+    c.mean_u += u[i];
+    c.mean_e += e[i];
+  }
+  c.mean_u /= static_cast<double>(n);
+  c.mean_e /= static_cast<double>(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    c.energy_u += (u[i] - c.mean_u) * (u[i] - c.mean_u);
+    c.energy_e += (e[i] - c.mean_e) * (e[i] - c.mean_e);
+  }
+  if (!(c.energy_u > 0.0) || !(c.energy_e > 0.0)) return std::nullopt;
+  return c;
+}
+
+}  // namespace
+
+std::vector<double> cross_correlation(const std::vector<double>& u, const std::vector<double>& e, std::size_t max_lag) {
+  const auto c = centred_pair(u, e);
+  if (!c) return {};
+  const std::size_t n = e.size();
+  const double mu = c->mean_u, me = c->mean_e;
   const std::size_t lags = std::min(max_lag, n - 1);
   std::vector<double> r(2 * lags + 1, 0.0);
-  const double norm = std::sqrt(uu * ee);
+  const double norm = std::sqrt(c->energy_u * c->energy_e);
   for (std::size_t k = 0; k <= lags; ++k) {
     double ahead = 0.0, behind = 0.0;  // e after u by k; e before u by k
     for (std::size_t i = 0; i + k < n; ++i) {
@@ -77,15 +100,10 @@ std::vector<double> cross_correlation(const std::vector<double>& u, const std::v
 }
 
 double bartlett_factor(const std::vector<double>& u, const std::vector<double>& e) {
+  const auto c = centred_pair(u, e);
+  if (!c) return NAN;
   const std::size_t n = e.size();
-  if (n < 2 || u.size() != n) return NAN;
-  double mu = 0.0, me = 0.0;
-  for (std::size_t i = 0; i < n; ++i) mu += u[i], me += e[i];
-  mu /= static_cast<double>(n);
-  me /= static_cast<double>(n);
-  double uu = 0.0, ee = 0.0;
-  for (std::size_t i = 0; i < n; ++i) uu += (u[i] - mu) * (u[i] - mu), ee += (e[i] - me) * (e[i] - me);
-  if (!(uu > 0.0) || !(ee > 0.0)) return NAN;
+  const double mu = c->mean_u, me = c->mean_e, uu = c->energy_u, ee = c->energy_e;
   const double noise = 1.96 / std::sqrt(static_cast<double>(n));
   double factor = 1.0;
   for (std::size_t m = 1; m <= n / 4; ++m) {

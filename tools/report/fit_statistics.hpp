@@ -30,7 +30,8 @@ namespace mrd::tools {
 // Bartlett's factor S = 1 + 2 sum_m ru(m) re(m) on the variance S/N of a cross-correlation
 // estimate between two unrelated series u and e (what MATLAB's resid widens its band by): summed
 // until e's autocorrelation falls to its own noise (1.96/sqrt(N)), at most N/4 lags. 1 when e is
-// white; large for two smooth series. NaN when the lengths differ or either is constant.
+// white; large for two smooth series. NaN when the lengths differ, a value is not finite, or
+// either is constant.
 [[nodiscard]] double bartlett_factor(const std::vector<double>& u, const std::vector<double>& e);
 
 // Parameter standard deviations of a least-squares fit at its optimum x: the covariance

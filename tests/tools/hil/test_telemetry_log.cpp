@@ -212,4 +212,26 @@ TEST(TimeOrigin, TheRunReaderTakesTheOriginAndSkipsComments) {
   EXPECT_DOUBLE_EQ(run.force[1], 11.0);
 }
 
+// A column added to the table is written under its name, and the readers, which find columns by
+// name, read the file still (the new column theirs to use or to ignore).
+TEST(TelemetryLog, AColumnAddedToTheTableIsWrittenAndTheFileStillReads) {
+  std::vector<mrd::runtime::TelemetryColumn> columns(mrd::runtime::kTelemetryColumns.begin(),
+                                                     mrd::runtime::kTelemetryColumns.begin() + 18);  // table4's
+  columns.push_back({"coil_temperature_C", false, [](const mrd::runtime::TelemetryRecord& r, double, char* b, std::size_t n) {
+                       return std::snprintf(b, n, "%.1f", 20.0 + static_cast<double>(r.cycle));
+                     }});
+  mrd::runtime::TelemetryRecord r{.cycle = 5, .displacement = 0.002, .force = 300.0};
+  char line[512];
+  ASSERT_GT(CsvTelemetryWriter::format(columns, r, {}, line, sizeof line, false), 0);
+  const std::string header = CsvTelemetryWriter::column_line(columns, false);
+  EXPECT_EQ(header, std::string(CsvTelemetryWriter::header()).insert(std::string(CsvTelemetryWriter::header()).size() - 1,
+                                                                        ",coil_temperature_C"));
+  EXPECT_NE(std::string(line).find(",25.0\n"), std::string::npos) << line;
+  const auto log = mrd::tools::parse_telemetry_csv(header + line, "new.csv");
+  ASSERT_EQ(log.rows.size(), 1u);
+  EXPECT_EQ(log.rows[0].cycle, 5u);
+  EXPECT_DOUBLE_EQ(log.rows[0].displacement, 0.002);
+  EXPECT_DOUBLE_EQ(log.rows[0].force, 300.0);
+}
+
 }  // namespace
