@@ -61,8 +61,9 @@ class TelemetryParser {
     static const std::vector<std::string_view> kForce = header_columns(runtime::CsvTelemetryWriter::force_header());
     const auto first = next();
     const std::size_t header_line = lines_.line_number();
-    header_ = first ? record::split_csv_line(*first) : std::vector<std::string_view>{};
-    header_text_.assign(header_.begin(), header_.end());
+    // Owned: the line's buffer does not outlive the next read.
+    const auto cells = first ? record::split_csv_line(*first) : std::vector<std::string_view>{};
+    header_text_.assign(cells.begin(), cells.end());
     header_.assign(header_text_.begin(), header_text_.end());
     // Columns by name, in any order; the force in N, or in kN as older files wrote it. A name
     // twice is refused: which one is the value?

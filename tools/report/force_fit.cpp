@@ -24,13 +24,16 @@ std::vector<RunSpan> run_spans(const ForceFitTraces& t) {
   return out;
 }
 
-std::vector<double> kept_residual(const ForceFitTraces& t, RunSpan span) {
+// measured - `model` (the final prediction unless another is named) over the kept samples.
+std::vector<double> kept_residual(const ForceFitTraces& t, RunSpan span, const std::vector<double>& model) {
   std::vector<double> e;
   e.reserve(span.to - span.from);
   for (std::size_t i = span.from; i < span.to; ++i)
-    if (t.keep.empty() || t.keep[i]) e.push_back(t.measured[i] - t.predicted[i]);
+    if (t.keep.empty() || t.keep[i]) e.push_back(t.measured[i] - model[i]);
   return e;
 }
+
+std::vector<double> kept_residual(const ForceFitTraces& t, RunSpan span) { return kept_residual(t, span, t.predicted); }
 
 std::vector<double> kept_residual(const ForceFitTraces& t) { return kept_residual(t, {0, t.measured.size()}); }
 
@@ -147,10 +150,8 @@ ForceFitFigures force_fit_figures(const ForceFitTraces& t, std::size_t lags) {
   f.reference_fit_percent = f.reference_rms_N = std::numeric_limits<double>::quiet_NaN();
   if (t.reference.size() == t.measured.size()) {
     f.reference_fit_percent = nrmse_fit_percent(t.measured, t.reference, t.keep);
-    ForceFitTraces reference = t;
-    reference.predicted = t.reference;
     double max = 0.0;
-    f.reference_rms_N = rms_of(kept_residual(reference), max);
+    f.reference_rms_N = rms_of(kept_residual(t, {0, t.measured.size()}, t.reference), max);
   }
   std::size_t samples = 0;
   const std::vector<double> r = pooled_autocorrelation(t, lags, samples);
@@ -313,9 +314,10 @@ void add_autocorrelation_plot(HtmlReport& report, const std::vector<double>& res
                        lag_label, caption);
 }
 
-ForceFitFigures add_force_fit(HtmlReport& report, const ForceFitTraces& t) {
-  const ForceFitFigures f = force_fit_figures(t);
-  report.heading("Measured and predicted force");
+namespace {
+
+// The fit's table (final model, base model, reference) and, with several runs, the per-run one.
+void add_fit_tables(HtmlReport& report, const ForceFitTraces& t, const ForceFitFigures& f) {
   std::vector<ReportFigure> rows = {
       {"fit, 100 (1 - |y - yhat| / |y - mean(y)|)", "fit.fit_percent", f.fit_percent, "%"},
       {"RMS of measured - predicted", "fit.rms_N", f.rms_N, "N"},
@@ -336,6 +338,14 @@ ForceFitFigures add_force_fit(HtmlReport& report, const ForceFitTraces& t) {
                  {"run", "kept samples", "fit [%]", "RMS [N]", "max [N]", "sample step [ms]", "lags outside the 95 % bound [%]"},
                  per_run);
   }
+}
+
+}  // namespace
+
+ForceFitFigures add_force_fit(HtmlReport& report, const ForceFitTraces& t) {
+  const ForceFitFigures f = force_fit_figures(t);
+  report.heading("Measured and predicted force");
+  add_fit_tables(report, t, f);
 
   const std::size_t n = t.measured.size();
   std::vector<double> x_mm(n), v_mm(n), residual(n), aside(n, NAN);

@@ -366,28 +366,11 @@ ForceFitTraces residual_traces(const std::vector<record::RecordedRun>& runs, con
   return traces;
 }
 
-std::string write_residual_report(const std::vector<record::RecordedRun>& runs, const FitSeries& s,
-                                  const ResidualResult& r, const ForceFitTraces& traces, const Provenance& provenance,
-                                  const std::string& directory) {
-  const std::string name = runs.size() == 1 ? runs.front().name : std::to_string(runs.size()) + " runs";
-  HtmlReport report("mrd-residual: " + name, directory);
-  std::string effects = "none";
-  if (!r.accepted.empty()) {
-    effects.clear();
-    for (const auto& e : r.accepted) effects += (effects.empty() ? "" : ", ") + e;
-  }
-  report.paragraph(format("%zu samples; the J-A + Bingham base model fitted, then candidate effects tried on half of "
-                          "the run and validated on the other half. Accepted: %s. Unexplained: %s",
-                          r.samples, effects.c_str(), r.unexplained.c_str()));
-  report.figures("Before and after (as the JSON)",
-                 {{"RMS error, base model", "rms_before_N", r.before.all, "N"},
-                  {"max error, base model", "max_before_N", r.before.max, "N"},
-                  {"fit, base model", "fit_before_percent", r.fit_before_percent, "%"},
-                  {"RMS error, final model", "rms_after_N", r.after.all, "N"},
-                  {"max error, final model", "max_after_N", r.after.max, "N"},
-                  {"fit, final model", "fit_after_percent", r.fit_after_percent, "%"}});
-  add_force_fit(report, traces);
+namespace {
 
+// The final model's parameters with their deviations and correlations, those flagged, and the
+// accepted effects' own.
+void add_parameter_section(HtmlReport& report, const ResidualResult& r) {
   report.heading("Parameters");
   std::vector<HtmlReport::Parameter> rows;
   for (std::size_t i = 0; i < r.parameters.size(); ++i) {
@@ -417,6 +400,33 @@ std::string write_residual_report(const std::vector<record::RecordedRun>& runs, 
     for (const auto& [key, value] : model::find_effect(e)->report(r.final_model.effects))
       effect_rows.push_back({e, key, format("%.6g", value)});
   report.table("Accepted effects' parameters", {"effect", "parameter", "value"}, effect_rows);
+}
+
+}  // namespace
+
+std::string write_residual_report(const std::vector<record::RecordedRun>& runs, const FitSeries& s,
+                                  const ResidualResult& r, const ForceFitTraces& traces, const Provenance& provenance,
+                                  const std::string& directory) {
+  const std::string name = runs.size() == 1 ? runs.front().name : std::to_string(runs.size()) + " runs";
+  HtmlReport report("mrd-residual: " + name, directory);
+  std::string effects = "none";
+  if (!r.accepted.empty()) {
+    effects.clear();
+    for (const auto& e : r.accepted) effects += (effects.empty() ? "" : ", ") + e;
+  }
+  report.paragraph(format("%zu samples; the J-A + Bingham base model fitted, then candidate effects tried on half of "
+                          "the run and validated on the other half. Accepted: %s. Unexplained: %s",
+                          r.samples, effects.c_str(), r.unexplained.c_str()));
+  report.figures("Before and after (as the JSON)",
+                 {{"RMS error, base model", "rms_before_N", r.before.all, "N"},
+                  {"max error, base model", "max_before_N", r.before.max, "N"},
+                  {"fit, base model", "fit_before_percent", r.fit_before_percent, "%"},
+                  {"RMS error, final model", "rms_after_N", r.after.all, "N"},
+                  {"max error, final model", "max_after_N", r.after.max, "N"},
+                  {"fit, final model", "fit_after_percent", r.fit_after_percent, "%"}});
+  add_force_fit(report, traces);
+
+  add_parameter_section(report, r);
 
   report.heading("Effects and terms tried");
   std::vector<std::vector<std::string>> trials;
