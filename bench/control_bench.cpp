@@ -32,8 +32,7 @@ void run_control_law(benchmark::State& state, mrd::control::ControlMode mode, bo
   for (auto _ : state) {
     const double t = i * kPeriod;
     const auto now = std::chrono::duration_cast<mrd::hal::Timestamp>(std::chrono::duration<double>(t));
-    const mrd::hal::DemandSample demand{250e3 * kAmplitude * kOmega * std::cos(kOmega * t), now, ++i,
-                                        mrd::hal::kSampleValid};
+    const mrd::hal::Sample demand{250e3 * kAmplitude * kOmega * std::cos(kOmega * t), now, ++i, mrd::hal::kSampleValid};
     benchmark::DoNotOptimize(demands.check(demand, now));
     law.observe({.displacement = kAmplitude * std::sin(kOmega * t),
                  .timing = mrd::model::SampleTiming{true, kPeriod, 0.0},

@@ -4,7 +4,7 @@
 
 #include "control/sample_check.hpp"
 #include "hal/clock.hpp"
-#include "hal/demand_source.hpp"
+#include "hal/sample.hpp"
 
 namespace mrd::control {
 
@@ -25,7 +25,7 @@ class DemandChecker {
   explicit DemandChecker(const DemandLimits& limits)
       : checker_({.min = -limits.range, .max = limits.range, .max_age = limits.max_age}) {}
 
-  SampleCheck check(const std::optional<hal::DemandSample>& demand, hal::Timestamp now) {
+  SampleCheck check(const std::optional<hal::Sample>& demand, hal::Timestamp now) {  // value [N]
     return checker_.check(demand, now);
   }
   [[nodiscard]] double held_value() const { return checker_.held_value(); }  // [N], 0 before the first

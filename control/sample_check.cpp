@@ -21,8 +21,7 @@ std::string_view to_string(SampleCheck c) {
   return "unknown";
 }
 
-SampleCheck SampleChecker::check(const std::optional<hal::DisplacementSample>& sample,
-                                 hal::Timestamp now) {
+SampleCheck SampleChecker::check(const std::optional<hal::Sample>& sample, hal::Timestamp now) {
   if (!sample) return SampleCheck::kMissing;
   const bool repeated = last_sequence_ && *last_sequence_ == sample->sequence;
   last_sequence_ = sample->sequence;
@@ -46,8 +45,8 @@ SampleCheck SampleChecker::check(const std::optional<hal::DisplacementSample>& s
   return SampleCheck::kFresh;
 }
 
-bool SampleChecker::jumps(const hal::DisplacementSample& s) {
-  const std::optional<hal::DisplacementSample> before = previous_;
+bool SampleChecker::jumps(const hal::Sample& s) {
+  const std::optional<hal::Sample> before = previous_;
   previous_ = s;
   if (limits_.max_speed <= 0.0 || !before) return false;
   using Seconds = std::chrono::duration<double>;

@@ -5,7 +5,7 @@
 #include <string_view>
 
 #include "hal/clock.hpp"
-#include "hal/displacement_source.hpp"
+#include "hal/sample.hpp"
 #include "model/observer.hpp"
 
 namespace mrd::control {
@@ -50,7 +50,7 @@ class SampleChecker {
  public:
   explicit SampleChecker(const SampleLimits& limits) : limits_(limits) {}
 
-  SampleCheck check(const std::optional<hal::DisplacementSample>& sample, hal::Timestamp now);
+  SampleCheck check(const std::optional<hal::Sample>& sample, hal::Timestamp now);  // value [m]
 
   [[nodiscard]] double held_value() const { return held_; }  // [m], 0 before the first good one
   // The held value's timing at `now` for the velocity tracker: fresh when `check` (this
@@ -59,7 +59,7 @@ class SampleChecker {
   [[nodiscard]] bool has_value() const { return has_value_; }
 
  private:
-  [[nodiscard]] bool jumps(const hal::DisplacementSample& s);
+  [[nodiscard]] bool jumps(const hal::Sample& s);
 
   SampleLimits limits_;
   int repeats_ = 0;  // consecutive new samples with the value of the one before
@@ -68,7 +68,7 @@ class SampleChecker {
   hal::Timestamp held_at_{};     // the held sample's own timestamp
   hal::Timestamp held_interval_{};  // from the good sample before it; 0 for the first
   std::optional<std::uint32_t> last_sequence_;
-  std::optional<hal::DisplacementSample> previous_;  // the last received finite sample, for jumps
+  std::optional<hal::Sample> previous_;  // the last received finite sample, for jumps
 };
 
 }  // namespace mrd::control

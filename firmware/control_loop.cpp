@@ -67,7 +67,7 @@ bool ControlLoop::readback_lost(const std::optional<hal::CurrentReading>& measur
 
 control::LoadCellStatus ControlLoop::read_load_cell(double& newtons) {
   if (hal_.load_cell == nullptr) return control::LoadCellStatus::kNone;
-  const std::optional<hal::LoadCellSample> s = hal_.load_cell->latest_load_cell();
+  const std::optional<hal::Sample> s = hal_.load_cell->latest();
   if (!s || s->sequence == load_cell_sequence_) return control::LoadCellStatus::kNone;
   load_cell_sequence_ = s->sequence;
   if (!s->usable() || !std::isfinite(s->value)) return control::LoadCellStatus::kBad;
@@ -85,7 +85,7 @@ const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
   const control::SampleCheck check = checker_.check(hal_.lvdt.latest(), now);
   const bool force_mode = law_.mode() == control::ControlMode::kForce;
   const control::SampleCheck demand_check =
-      force_mode ? demand_checker_.check(hal_.demand->latest_demand(), now) : control::SampleCheck::kFresh;
+      force_mode ? demand_checker_.check(hal_.demand->latest(), now) : control::SampleCheck::kFresh;
   double load_cell_force = 0.0;
   const control::LoadCellStatus load_cell = read_load_cell(load_cell_force);
   const std::optional<bool> fault = hal_.lines.driver_fault();

@@ -3,21 +3,24 @@
 #include <span>
 
 #include "hal/current_driver.hpp"
-#include "hal/demand_source.hpp"
 #include "hal/digital_lines.hpp"
-#include "hal/displacement_source.hpp"
 #include "hal/io_thread.hpp"
-#include "hal/load_cell_source.hpp"
+#include "hal/sample_source.hpp"
 
 namespace mrd::firmware {
 
 // The devices one control loop talks to, whichever back ends provide them.
 struct HalDevices {
-  hal::DisplacementSource& lvdt;
+  hal::SampleSource& lvdt;  // the damper's displacement [m]
   hal::CurrentDriver& driver;
   hal::DigitalLines& lines;
-  hal::DemandSource* demand = nullptr;  // the force demand; force mode needs it, table4 reads none
-  hal::LoadCellSource* load_cell = nullptr;  // force mode's optional load cell
+  // The force the outer controller (skyhook, clipped-optimal, LQG) demands of the damper [N],
+  // with the sign of the motion it resists (docs/FORCE-CONTROL.md); force mode needs it, table4
+  // reads none.
+  hal::SampleSource* demand = nullptr;
+  // The damper force a load cell in series with the damper measures [N], with the demand's sign
+  // (docs/FORCE-CONTROL.md, "Load-cell feedback"); force mode's optional load cell.
+  hal::SampleSource* load_cell = nullptr;
   std::span<hal::IoThread* const> io_threads{};  // the bus back ends' threads, watched for progress
 };
 

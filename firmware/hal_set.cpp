@@ -64,16 +64,19 @@ HalSet::HalSet(const config::ControllerConfig& config, const hal::Clock& clock) 
   can_feedback_ = b.driver == config::DeviceBackend::kCan && config.can.use_feedback;
   if (b.lines == config::LinesBackend::kGpio) gpio_ = std::make_unique<hal::gpio::GpiodLines>(config.gpio);
 
-  lvdt_ = choose<hal::DisplacementSource>(b.lvdt, mock_ ? &mock_->lvdt : nullptr, modbus_.get(),
-                                          can_.get());
-  driver_ = choose<hal::CurrentDriver>(b.driver, mock_ ? &mock_->driver : nullptr, modbus_.get(),
-                                       can_.get());
+  hal::mock::MockHal* const mock = mock_.get();
+  hal::modbus::ModbusBackend* const modbus = modbus_.get();
+  hal::can::SocketCanBackend* const can = can_.get();
+  lvdt_ = choose<hal::SampleSource>(b.lvdt, mock ? &mock->lvdt : nullptr, modbus ? &modbus->lvdt() : nullptr,
+                                    can ? &can->lvdt() : nullptr);
+  driver_ = choose<hal::CurrentDriver>(b.driver, mock ? &mock->driver : nullptr, modbus, can);
   if (b.demand) {
-    demand_ = choose<hal::DemandSource>(*b.demand, mock_ ? &mock_->demand : nullptr, modbus_.get(), can_.get());
+    demand_ = choose<hal::SampleSource>(*b.demand, mock ? &mock->demand : nullptr,
+                                        modbus ? &modbus->demand() : nullptr, can ? &can->demand() : nullptr);
   }
   if (b.load_cell) {
-    load_cell_ =
-        choose<hal::LoadCellSource>(*b.load_cell, mock_ ? &mock_->load_cell : nullptr, modbus_.get(), can_.get());
+    load_cell_ = choose<hal::SampleSource>(*b.load_cell, mock ? &mock->load_cell : nullptr,
+                                           modbus ? &modbus->load_cell() : nullptr, can ? &can->load_cell() : nullptr);
   }
   if (modbus_) threads_.push_back(&modbus_->io_thread());
   if (can_) threads_.push_back(&can_->io_thread());

@@ -31,6 +31,9 @@ class HalSet {
 
   [[nodiscard]] HalDevices devices() { return {*lvdt_, *driver_, *lines_, demand_, load_cell_, threads_}; }
   [[nodiscard]] hal::mock::MockHal* mock() { return mock_.get(); }
+  // The bus back ends, null where the config uses none of their devices.
+  [[nodiscard]] hal::modbus::ModbusBackend* modbus() { return modbus_.get(); }
+  [[nodiscard]] hal::can::SocketCanBackend* can() { return can_.get(); }
   // The bus back ends' I/O threads (running after start()), for the real-time set-up.
   [[nodiscard]] const std::vector<hal::IoThread*>& io_threads() const { return threads_; }
   // One line per bus back end with its counters, for the statistics printout.
@@ -48,11 +51,11 @@ class HalSet {
   std::unique_ptr<hal::can::SocketCanBackend> can_;
   std::unique_ptr<hal::gpio::GpiodLines> gpio_;
   std::unique_ptr<hal::DigitalLines> can_enable_;
-  hal::DisplacementSource* lvdt_ = nullptr;
+  hal::SampleSource* lvdt_ = nullptr;
   hal::CurrentDriver* driver_ = nullptr;
   hal::DigitalLines* lines_ = nullptr;
-  hal::DemandSource* demand_ = nullptr;  // force mode only
-  hal::LoadCellSource* load_cell_ = nullptr;  // force mode with backends.load_cell only
+  hal::SampleSource* demand_ = nullptr;     // force mode only
+  hal::SampleSource* load_cell_ = nullptr;  // force mode with backends.load_cell only
   std::vector<hal::IoThread*> threads_;
   bool can_lvdt_ = false;      // which frames the CAN link should carry
   bool can_feedback_ = false;

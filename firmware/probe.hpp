@@ -10,7 +10,7 @@
 #include "firmware/hal_devices.hpp"
 #include "hal/clock.hpp"
 #include "hal/current_driver.hpp"
-#include "hal/displacement_source.hpp"
+#include "hal/sample.hpp"
 
 namespace mrd::firmware {
 
@@ -28,7 +28,7 @@ struct ProbeExpectations {
 // One poll of the devices.
 struct ProbeReading {
   hal::Timestamp time{};
-  std::optional<hal::DisplacementSample> lvdt;
+  std::optional<hal::Sample> lvdt;  // [m]
   std::optional<hal::CurrentReading> current;
   std::optional<bool> fault;  // nullopt: the fault line could not be read
 };

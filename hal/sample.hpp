@@ -14,8 +14,9 @@ enum SampleFlag : std::uint8_t {
   kSampleSensorFault = 1u << 3,  // the sensor itself reports the value unusable
 };
 
-// One value a back end received for the loop: the LVDT's displacement [m] or the outer
-// controller's force demand [N], SI inside, converted at the bus.
+// One value a back end received for the loop on one channel (hal/sample_source.hpp): the LVDT's
+// displacement [m], the outer controller's force demand [N] or the load cell's force [N], SI
+// inside, converted at the bus.
 struct Sample {
   double value = 0.0;         // SI
   Timestamp timestamp{};      // when the back end received it, on the loop's clock

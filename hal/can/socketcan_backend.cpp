@@ -126,12 +126,6 @@ void SocketCanBackend::stop() {
   fd_ = -1;
 }
 
-std::optional<DisplacementSample> SocketCanBackend::latest() { return samples_.pop_latest(); }
-
-std::optional<DemandSample> SocketCanBackend::latest_demand() { return demands_.pop_latest(); }
-
-std::optional<LoadCellSample> SocketCanBackend::latest_load_cell() { return load_cell_.pop_latest(); }
-
 std::optional<CurrentReading> SocketCanBackend::measured() { return feedback_.take(); }
 
 std::optional<bool> SocketCanBackend::feedback_driver_fault() const {
@@ -226,13 +220,18 @@ void SocketCanBackend::on_frame(const can_frame& frame) {
   if (extended != config_.extended_ids) {
     counters_.bump(CanEvent::kUnexpectedFrames);
   } else if (id == config_.lvdt_id) {
-    on_lvdt(data, id);
+    const auto d = decode_lvdt(id, data, config_.lvdt_id, &lvdt_.counter);
+    on_sample_frame(lvdt_, d.status, d.value.displacement, d.value.sensor_fault);
   } else if (config_.use_feedback && id == config_.feedback_id) {
     on_feedback(data, id);
   } else if (config_.use_demand && id == config_.demand_id) {
-    on_demand(data, id);
+    // DemandInvalid is the outer controller's own "sensor fault".
+    const auto d = decode_demand(id, data, config_.demand_id, &demand_.counter);
+    on_sample_frame(demand_, d.status, d.value.demand, d.value.invalid);
   } else if (config_.use_load_cell && id == config_.load_cell_id) {
-    on_load_cell(data, id);
+    // LoadCellInvalid is the amplifier's "sensor fault".
+    const auto d = decode_load_cell(id, data, config_.load_cell_id, &load_cell_.counter);
+    on_sample_frame(load_cell_, d.status, d.value.force, d.value.invalid);
   } else {
     counters_.bump(CanEvent::kUnexpectedFrames);
   }
@@ -253,36 +252,17 @@ bool SocketCanBackend::count_rejection(DecodeStatus status) {
   return true;
 }
 
-void SocketCanBackend::on_value_frame(DecodeStatus status, double value, bool fault, CanEvent good,
-                                      std::uint32_t& sequence, SpscRing<Sample, 64>& ring) {
+void SocketCanBackend::on_sample_frame(FrameChannel& channel, DecodeStatus status, double value, bool fault) {
   const bool rejected = count_rejection(status);
   // A repeated counter is a stale copy, not a new sample; other rejections are passed on as
   // corrupted samples so the loop sees the sender misbehave.
   if (status == DecodeStatus::kRepeatedCounter) return;
-  Sample s{value, clock_.now(), ++sequence, kSampleValid};
+  Sample s{value, clock_.now(), channel.samples.next_sequence(), kSampleValid};
   if (rejected) s = {0.0, s.timestamp, s.sequence, kSampleCorrupted};
   if (status == DecodeStatus::kOutOfSequence) s.flags |= kSampleSequenceGap;
   if (!rejected && fault) s.flags |= kSampleSensorFault;
-  if (!rejected) counters_.bump(good);
-  if (!ring.try_push(s)) counters_.bump(CanEvent::kSamplesDropped);
-}
-
-void SocketCanBackend::on_lvdt(std::span<const std::uint8_t> data, std::uint32_t id) {
-  const auto d = decode_lvdt(id, data, config_.lvdt_id, &lvdt_counter_);
-  on_value_frame(d.status, d.value.displacement, d.value.sensor_fault, CanEvent::kLvdtFrames, sequence_, samples_);
-}
-
-// DemandInvalid is the outer controller's own "sensor fault": a sample the loop must not use.
-void SocketCanBackend::on_demand(std::span<const std::uint8_t> data, std::uint32_t id) {
-  const auto d = decode_demand(id, data, config_.demand_id, &demand_counter_);
-  on_value_frame(d.status, d.value.demand, d.value.invalid, CanEvent::kDemandFrames, demand_sequence_, demands_);
-}
-
-// LoadCellInvalid is the amplifier's "sensor fault": a sample the loop must not use.
-void SocketCanBackend::on_load_cell(std::span<const std::uint8_t> data, std::uint32_t id) {
-  const auto d = decode_load_cell(id, data, config_.load_cell_id, &load_cell_counter_);
-  on_value_frame(d.status, d.value.force, d.value.invalid, CanEvent::kLoadCellFrames, load_cell_sequence_,
-                 load_cell_);
+  if (!rejected) counters_.bump(channel.good_frames);
+  if (!channel.samples.push(s)) counters_.bump(CanEvent::kSamplesDropped);
 }
 
 void SocketCanBackend::on_feedback(std::span<const std::uint8_t> data, std::uint32_t id) {

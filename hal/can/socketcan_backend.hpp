@@ -13,13 +13,11 @@
 #include "hal/can/socketcan_config.hpp"
 #include "hal/clock.hpp"
 #include "hal/current_driver.hpp"
-#include "hal/demand_source.hpp"
-#include "hal/displacement_source.hpp"
 #include "hal/event_counters.hpp"
 #include "hal/io_thread.hpp"
-#include "hal/load_cell_source.hpp"
 #include "hal/latest_mailbox.hpp"
-#include "hal/spsc_ring.hpp"
+#include "hal/sample_channel.hpp"
+#include "hal/sample_source.hpp"
 #include "hal/status.hpp"
 
 namespace mrd::hal::can {
@@ -47,15 +45,13 @@ enum class CanEvent : std::uint8_t {
 [[nodiscard]] std::string_view to_string(CanEvent e);
 using CanCounters = EventCounters<CanEvent>::Snapshot;
 
-// LVDT, current driver and (with use_demand) force mode's demand on raw SocketCAN, frames as
-// in hal/can/mrd.dbc. A receive thread
+// LVDT, current driver and (with use_demand, use_load_cell) force mode's demand and load cell
+// on raw SocketCAN, frames as in hal/can/mrd.dbc; each sample channel is a SampleSource of its
+// own (lvdt(), demand(), load_cell()). A receive thread
 // blocks in recv() with SO_RCVTIMEO, decodes our ids and the error frames, and hands samples
-// to the loop through the SPSC ring. Transmission happens on the caller's thread: one
+// to the loop through each channel's SPSC ring. Transmission happens on the caller's thread: one
 // non-blocking send() per setpoint, no thread hop. Bus-off handling: see BusOffPolicy.
-class SocketCanBackend final : public DisplacementSource,
-                               public CurrentDriver,
-                               public DemandSource,
-                               public LoadCellSource {
+class SocketCanBackend final : public CurrentDriver {
  public:
   SocketCanBackend(SocketCanConfig config, const Clock& clock);
   ~SocketCanBackend() override;
@@ -71,11 +67,12 @@ class SocketCanBackend final : public DisplacementSource,
   [[nodiscard]] StartResult start_on(int fd);
   void stop();
 
-  [[nodiscard]] std::optional<DisplacementSample> latest() override;
-  // Force_Demand frames as samples in N, judged as the LVDT's are (see on_value_frame).
-  [[nodiscard]] std::optional<DemandSample> latest_demand() override;
-  // Load_Cell frames (with use_load_cell) as samples in N, judged as the demand's are.
-  [[nodiscard]] std::optional<LoadCellSample> latest_load_cell() override;
+  // LVDT_Displacement frames as samples in m (see on_sample_frame).
+  [[nodiscard]] SampleSource& lvdt() { return lvdt_.samples; }
+  // Force_Demand frames (with use_demand) as samples in N, judged as the LVDT's are.
+  [[nodiscard]] SampleSource& demand() { return demand_.samples; }
+  // Load_Cell frames (with use_load_cell) as samples in N, judged as the LVDT's are.
+  [[nodiscard]] SampleSource& load_cell() { return load_cell_.samples; }
   // Sends one Coil_CurrentCommand frame now. kNotConnected before start(), kTxInhibited during
   // bus-off and its hold-off, kInvalidArgument when it does not fit, kIoError if send() fails.
   IoStatus write_setpoint(double amps) override;
@@ -97,15 +94,20 @@ class SocketCanBackend final : public DisplacementSource,
   [[nodiscard]] bool tx_allowed() const;
 
  private:
+  // A sample channel on the bus: the samples for the loop, and its frames' rolling counter and
+  // good-frame count.
+  struct FrameChannel {
+    SampleChannel samples;
+    CanEvent good_frames;
+    RollingCounterCheck counter;  // receive thread only
+  };
+
   void run();
   void on_frame(const can_frame& frame);
-  void on_lvdt(std::span<const std::uint8_t> data, std::uint32_t id);
   void on_feedback(std::span<const std::uint8_t> data, std::uint32_t id);
-  void on_demand(std::span<const std::uint8_t> data, std::uint32_t id);
-  void on_load_cell(std::span<const std::uint8_t> data, std::uint32_t id);
-  // The one reaction of the sample channels (LVDT, demand) to a decoded frame.
-  void on_value_frame(DecodeStatus status, double value, bool fault, CanEvent good,
-                      std::uint32_t& sequence, SpscRing<Sample, 64>& ring);
+  // The one reaction of a sample channel to a decoded frame; `fault` is the sender's own bit
+  // saying its value is unusable.
+  void on_sample_frame(FrameChannel& channel, DecodeStatus status, double value, bool fault);
   bool count_rejection(DecodeStatus status);  // true when the frame is unusable
 
   SocketCanConfig config_;
@@ -114,20 +116,14 @@ class SocketCanBackend final : public DisplacementSource,
 
   // Receive thread only.
   BusOffPolicy bus_off_;
-  RollingCounterCheck lvdt_counter_;
   RollingCounterCheck feedback_counter_;
-  RollingCounterCheck demand_counter_;
-  RollingCounterCheck load_cell_counter_;
-  std::uint32_t sequence_ = 0;
-  std::uint32_t demand_sequence_ = 0;
-  std::uint32_t load_cell_sequence_ = 0;
 
   // Loop thread only.
   std::uint8_t tx_counter_ = 0;
 
-  SpscRing<DisplacementSample, 64> samples_;
-  SpscRing<DemandSample, 64> demands_;
-  SpscRing<LoadCellSample, 64> load_cell_;
+  FrameChannel lvdt_{.good_frames = CanEvent::kLvdtFrames};
+  FrameChannel demand_{.good_frames = CanEvent::kDemandFrames};
+  FrameChannel load_cell_{.good_frames = CanEvent::kLoadCellFrames};
   LatestMailbox<CurrentReading> feedback_;
   std::atomic<int> feedback_fault_{-1};  // -1 unknown, 0 ok, 1 fault
   std::atomic<bool> enable_{false};

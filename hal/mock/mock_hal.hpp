@@ -3,10 +3,8 @@
 #include "hal/clock.hpp"
 #include "hal/mock/fault_script.hpp"
 #include "hal/mock/mock_current_driver.hpp"
-#include "hal/mock/mock_demand_source.hpp"
 #include "hal/mock/mock_digital_lines.hpp"
-#include "hal/mock/mock_displacement_source.hpp"
-#include "hal/mock/mock_load_cell_source.hpp"
+#include "hal/mock/mock_sample_source.hpp"
 
 namespace mrd::hal::mock {
 
@@ -20,11 +18,11 @@ struct MockHal {
 
   ManualClock clock;
   FaultScript script;
-  MockDisplacementSource lvdt{clock, script};
+  MockSampleSource lvdt{clock, script, kLvdtFaults};  // displacement [m]
   MockCurrentDriver driver{clock, script};
   MockDigitalLines lines{clock, script};
-  MockDemandSource demand{clock, script};  // force mode
-  MockLoadCellSource load_cell{clock};     // force mode's optional load cell
+  MockSampleSource demand{clock, script, kDemandFaults};  // force mode's demand [N]
+  MockSampleSource load_cell{clock, script, {}};  // force mode's optional load cell [N]: no script faults
 };
 
 }  // namespace mrd::hal::mock

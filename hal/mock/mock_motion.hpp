@@ -31,11 +31,11 @@ class MockMotion {
     const double t = std::chrono::duration<double>(now - *start_).count();
     const double noise = noise_.stddev() > 0.0 ? noise_(rng_) : 0.0;
     const double w = 2.0 * std::numbers::pi * frequency_;
-    hal.lvdt.set_truth(amplitude_ * std::sin(w * t) + noise);
-    hal.demand.set_demand(demand_damping_ * amplitude_ * w * std::cos(w * t));
+    hal.lvdt.set_value(amplitude_ * std::sin(w * t) + noise);
+    hal.demand.set_value(demand_damping_ * amplitude_ * w * std::cos(w * t));
     // The mock load cell reads the demand: a rig that delivers exactly what is asked (a number
     // for the wiring, as the demand is).
-    hal.load_cell.set_force(demand_damping_ * amplitude_ * w * std::cos(w * t));
+    hal.load_cell.set_value(demand_damping_ * amplitude_ * w * std::cos(w * t));
   }
 
  private:

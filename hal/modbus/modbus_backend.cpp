@@ -107,12 +107,6 @@ std::optional<std::string> ModbusBackend::link_problem() const {
   return text;
 }
 
-std::optional<DisplacementSample> ModbusBackend::latest() { return samples_.pop_latest(); }
-
-std::optional<DemandSample> ModbusBackend::latest_demand() { return demands_.pop_latest(); }
-
-std::optional<LoadCellSample> ModbusBackend::latest_load_cell() { return load_cell_.pop_latest(); }
-
 IoStatus ModbusBackend::write_setpoint(double amps) {
   const EncodeResult encoded = encode_register(amps, config_.registers.setpoint);
   if (encoded.status != CodecStatus::kOk) return IoStatus::kInvalidArgument;
@@ -211,30 +205,34 @@ ModbusBackend::Outcome ModbusBackend::read_words(int address, RegisterKind kind,
   return Outcome::kOk;
 }
 
+void ModbusBackend::push(SampleChannel& channel, const Sample& sample) {
+  if (!channel.push(sample)) counters_.bump(ModbusEvent::kSamplesDropped);
+}
+
 void ModbusBackend::push_sample(std::span<const std::uint16_t> words, const RegisterFormat& format,
-                                std::uint32_t sequence, SpscRing<Sample, 64>& ring) {
+                                std::uint32_t sequence, SampleChannel& channel) {
   const DecodeResult decoded = decode_register(words, format);
   Sample sample{decoded.value, clock_.now(), sequence, kSampleValid};
   if (decoded.status != CodecStatus::kOk) {
     sample.flags = kSampleCorrupted;
     counters_.bump(ModbusEvent::kDecodeErrors);
   }
-  if (!ring.try_push(sample)) counters_.bump(ModbusEvent::kSamplesDropped);
+  push(channel, sample);
 }
 
 ModbusBackend::Outcome ModbusBackend::read_sample(int address, RegisterKind kind, const RegisterFormat& format,
-                                                  std::uint32_t& sequence, SpscRing<Sample, 64>& ring) {
+                                                  SampleChannel& channel) {
   std::array<std::uint16_t, 2> words{};
   const std::size_t n = word_count(format.type);
   if (const Outcome o = read_words(address, kind, n, words.data()); o != Outcome::kOk) return o;
-  push_sample({words.data(), n}, format, ++sequence, ring);
+  push_sample({words.data(), n}, format, channel.next_sequence(), channel);
   return Outcome::kOk;
 }
 
 ModbusBackend::Outcome ModbusBackend::read_demand() {
   const RegisterMap& map = config_.registers;
   if (!map.has_demand_counter()) {
-    return read_sample(map.demand_address, map.demand_kind, map.demand, demand_sequence_, demands_);
+    return read_sample(map.demand_address, map.demand_kind, map.demand, demand_);
   }
   // words: the value's one or two, then the counter's.
   std::array<std::uint16_t, 3> words{};
@@ -262,7 +260,7 @@ ModbusBackend::Outcome ModbusBackend::read_demand() {
   const bool first = !demand_counter_;
   if (demand_counter_ == counter) return Outcome::kOk;  // nothing new since the last poll
   demand_counter_ = counter;
-  if (!first) push_sample({words.data(), n}, map.demand, counter, demands_);
+  if (!first) push_sample({words.data(), n}, map.demand, counter, demand_);
   return Outcome::kOk;
 }
 
@@ -272,10 +270,7 @@ ModbusBackend::Outcome ModbusBackend::poll_once() {
   const Outcome written = write_pending_setpoint();
   if (written == Outcome::kLinkFailed) return written;
 
-  if (const Outcome o = read_sample(map.lvdt_address, map.lvdt_kind, map.lvdt, sequence_, samples_);
-      o != Outcome::kOk) {
-    return o;
-  }
+  if (const Outcome o = read_sample(map.lvdt_address, map.lvdt_kind, map.lvdt, lvdt_); o != Outcome::kOk) return o;
   if (map.has_demand) {
     if (const Outcome o = read_demand(); o != Outcome::kOk) return o;
   }
@@ -286,13 +281,11 @@ ModbusBackend::Outcome ModbusBackend::poll_once() {
   // leaves the LVDT, demand and readback read (a refusal there would starve the readback and
   // trip SAFE); the correction gets a corrupted sample and freezes, which is not a fault.
   if (map.has_load_cell) {
-    const Outcome o =
-        read_sample(map.load_cell_address, map.load_cell_kind, map.load_cell, load_cell_sequence_, load_cell_);
+    const Outcome o = read_sample(map.load_cell_address, map.load_cell_kind, map.load_cell, load_cell_);
     if (o == Outcome::kLinkFailed) return o;
     if (o == Outcome::kDeviceRefused) {
-      const Sample refused{std::numeric_limits<double>::quiet_NaN(), clock_.now(), ++load_cell_sequence_,
-                           kSampleCorrupted};
-      if (!load_cell_.try_push(refused)) counters_.bump(ModbusEvent::kSamplesDropped);
+      push(load_cell_, {std::numeric_limits<double>::quiet_NaN(), clock_.now(), load_cell_.next_sequence(),
+                        kSampleCorrupted});
     }
   }
   return written;

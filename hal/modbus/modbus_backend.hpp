@@ -9,14 +9,12 @@
 
 #include "hal/clock.hpp"
 #include "hal/current_driver.hpp"
-#include "hal/demand_source.hpp"
-#include "hal/displacement_source.hpp"
 #include "hal/event_counters.hpp"
 #include "hal/io_thread.hpp"
-#include "hal/load_cell_source.hpp"
 #include "hal/latest_mailbox.hpp"
 #include "hal/modbus/modbus_config.hpp"
-#include "hal/spsc_ring.hpp"
+#include "hal/sample_channel.hpp"
+#include "hal/sample_source.hpp"
 #include "hal/status.hpp"
 
 struct _modbus;  // libmodbus's modbus_t, kept out of our headers
@@ -42,8 +40,9 @@ enum class ModbusEvent : std::uint8_t {
 [[nodiscard]] std::string_view to_string(ModbusEvent e);
 using ModbusCounters = EventCounters<ModbusEvent>::Snapshot;
 
-// LVDT, current driver and (with registers.has_demand) force mode's demand behind one Modbus
-// device (RTU or TCP). All libmodbus I/O runs in one
+// LVDT, current driver and (with registers.has_demand, has_load_cell) force mode's demand and
+// load cell behind one Modbus device (RTU or TCP); each sample channel is a SampleSource of
+// its own (lvdt(), demand(), load_cell()). All libmodbus I/O runs in one
 // thread that owns the only modbus_t: libmodbus blocks, and an RTU read alone takes ~1.6 ms at
 // 115200 baud, longer than a 1 kHz period. The loop's calls only touch lock-free buffers.
 //
@@ -51,10 +50,7 @@ using ModbusCounters = EventCounters<ModbusEvent>::Snapshot;
 // after a back-off that doubles from reconnect_min to reconnect_max and resets after the next
 // good transaction. A Modbus exception response is a device answer, not a link failure: it is
 // counted and the link kept. stop() returns within one response timeout.
-class ModbusBackend final : public DisplacementSource,
-                            public CurrentDriver,
-                            public DemandSource,
-                            public LoadCellSource {
+class ModbusBackend final : public CurrentDriver {
  public:
   ModbusBackend(ModbusConfig config, const Clock& clock);
   ~ModbusBackend() override;
@@ -66,13 +62,15 @@ class ModbusBackend final : public DisplacementSource,
   [[nodiscard]] StartResult start();
   void stop();
 
-  [[nodiscard]] std::optional<DisplacementSample> latest() override;
-  // The demand register's value in N. Without a counter register one sample per poll (a value
-  // the outer controller stopped updating reads as fresh); with registers.demand_counter_address
-  // one per poll that finds the counter changed, its sequence the counter's value.
-  [[nodiscard]] std::optional<DemandSample> latest_demand() override;
+  // The LVDT's registers in m, one sample per poll.
+  [[nodiscard]] SampleSource& lvdt() { return lvdt_; }
+  // The demand register's value in N (with registers.has_demand). Without a counter register
+  // one sample per poll (a value the outer controller stopped updating reads as fresh); with
+  // registers.demand_counter_address one per poll that finds the counter changed, its sequence
+  // the counter's value.
+  [[nodiscard]] SampleSource& demand() { return demand_; }
   // The load cell's registers (with registers.has_load_cell) in N, one sample per poll.
-  [[nodiscard]] std::optional<LoadCellSample> latest_load_cell() override;
+  [[nodiscard]] SampleSource& load_cell() { return load_cell_; }
   // Queues the newest setpoint for the I/O thread. kInvalidArgument when it cannot be encoded;
   // kNotConnected when queued but the link is down (it is written after reconnecting).
   IoStatus write_setpoint(double amps) override;
@@ -116,32 +114,30 @@ class ModbusBackend final : public DisplacementSource,
   Outcome write_pending_setpoint();
   Outcome read_words(int address, RegisterKind kind, std::size_t count, std::uint16_t* out);
   Outcome classify_failure(ModbusEvent counter);
-  // Reads one value's registers and hands it to the loop as a sample (corrupted when it does
-  // not decode).
-  Outcome read_sample(int address, RegisterKind kind, const RegisterFormat& format,
-                      std::uint32_t& sequence, SpscRing<Sample, 64>& ring);
+  // Reads one value's registers and hands it to the loop on `channel` as its next sample
+  // (corrupted when it does not decode).
+  Outcome read_sample(int address, RegisterKind kind, const RegisterFormat& format, SampleChannel& channel);
   // The demand, with its counter when it has one: a sample only when the counter moved.
   Outcome read_demand();
+  // Queues `sample` on `channel`, counting it when the loop left the ring full.
+  void push(SampleChannel& channel, const Sample& sample);
   // Decodes `words` into a sample stamped now and queues it.
   void push_sample(std::span<const std::uint16_t> words, const RegisterFormat& format, std::uint32_t sequence,
-                   SpscRing<Sample, 64>& ring);
+                   SampleChannel& channel);
 
   ModbusConfig config_;
   const Clock& clock_;
   _modbus* ctx_ = nullptr;  // used only by thread_ while it runs
 
-  SpscRing<DisplacementSample, 64> samples_;
-  SpscRing<DemandSample, 64> demands_;
-  SpscRing<LoadCellSample, 64> load_cell_;
+  SampleChannel lvdt_;
+  SampleChannel demand_;
+  SampleChannel load_cell_;
   LatestMailbox<EncodeResult> setpoints_;
   LatestMailbox<CurrentReading> feedback_;
   std::optional<EncodeResult> pending_setpoint_;  // I/O thread only
-  std::uint32_t sequence_ = 0;                    // I/O thread only
-  std::uint32_t demand_sequence_ = 0;             // I/O thread only
   // The counter's value at the last demand taken; kept over a reconnect, so that a demand
   // frozen across an outage is not taken as new. I/O thread only.
   std::optional<std::uint16_t> demand_counter_;
-  std::uint32_t load_cell_sequence_ = 0;          // I/O thread only
 
   std::atomic<std::uint64_t> taken_{0};  // setpoints the I/O thread took from setpoints_
   std::atomic<bool> connected_{false};

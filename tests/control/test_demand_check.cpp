@@ -14,7 +14,7 @@ namespace {
 using namespace std::chrono_literals;
 using mrd::control::DemandChecker;
 using mrd::control::SampleCheck;
-using mrd::hal::DemandSample;
+using mrd::hal::Sample;
 using mrd::hal::Timestamp;
 
 constexpr Timestamp kDemandMaxAge = 5ms;
@@ -22,7 +22,7 @@ constexpr double kDemandRange = 10e3;
 
 DemandChecker demand_checker() { return DemandChecker({.range = kDemandRange, .max_age = kDemandMaxAge}); }
 
-DemandSample demand(double newtons, Timestamp at, std::uint32_t sequence,
+Sample demand(double newtons, Timestamp at, std::uint32_t sequence,
                     std::uint8_t flags = mrd::hal::kSampleValid) {
   return {newtons, at, sequence, flags};
 }
@@ -39,7 +39,7 @@ TEST(DemandCheck, AGoodDemandIsHeldThroughEveryKindOfBadOne) {
   ASSERT_EQ(c.check(demand(2500.0, 1s, 1), 1s), SampleCheck::kFresh);
   EXPECT_TRUE(c.has_value());
   const struct {
-    DemandSample sample;
+    Sample sample;
     Timestamp now;
     SampleCheck verdict;
   } bad[] = {

@@ -11,7 +11,7 @@ namespace {
 using namespace std::chrono_literals;
 using mrd::control::SampleCheck;
 using mrd::control::SampleChecker;
-using mrd::hal::DisplacementSample;
+using mrd::hal::Sample;
 using mrd::hal::Timestamp;
 
 constexpr Timestamp kMaxAge = 5ms;
@@ -19,7 +19,7 @@ constexpr Timestamp kNow = 1s;
 
 SampleChecker checker() { return SampleChecker({.max_age = kMaxAge}); }
 
-DisplacementSample stamped(Timestamp at, std::uint32_t sequence) {
+Sample stamped(Timestamp at, std::uint32_t sequence) {
   return {0.001, at, sequence, mrd::hal::kSampleValid};
 }
 

@@ -36,12 +36,12 @@ class LoopRig {
     hal_->clock.set(now);
     const double w = 2.0 * std::numbers::pi * 0.5;
     const double t = std::chrono::duration<double>(now).count();
-    hal_->lvdt.set_truth(0.030 * std::sin(w * t));
+    hal_->lvdt.set_value(0.030 * std::sin(w * t));
     // Force mode's demand: a dissipative c v on the same motion (read in force mode only).
-    hal_->demand.set_demand(demand_damping_ * 0.030 * w * std::cos(w * t));
+    hal_->demand.set_value(demand_damping_ * 0.030 * w * std::cos(w * t));
     // Force mode's load cell (read with a load-cell law only): load_cell_gain_ times the demand,
     // unless the test sets it itself.
-    if (load_cell_gain_) hal_->load_cell.set_force(*load_cell_gain_ * demand_damping_ * 0.030 * w * std::cos(w * t));
+    if (load_cell_gain_) hal_->load_cell.set_value(*load_cell_gain_ * demand_damping_ * 0.030 * w * std::cos(w * t));
     loop_->step(now);
     ++cycle_;
     return loop_->state();

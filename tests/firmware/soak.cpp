@@ -83,7 +83,7 @@ class SineRig {
     hal_.clock.set(now);
     const double t = std::chrono::duration<double>(now).count();
     last_ = plant_.step(profile_.displacement(t), profile_.velocity(t), hal_.driver.last_setpoint());
-    hal_.lvdt.set_truth(last_.lvdt_displacement);
+    hal_.lvdt.set_value(last_.lvdt_displacement);
   }
   [[nodiscard]] const sim::PlantReading& last() const { return last_; }
 

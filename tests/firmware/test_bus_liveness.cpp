@@ -65,7 +65,7 @@ struct BusRig {
   SupervisorState step(bool takes = true, bool beats = true) {
     const Timestamp now = cycle * kPeriod;
     hal.clock.set(now);
-    hal.lvdt.set_truth(0.030 * std::sin(std::numbers::pi * std::chrono::duration<double>(now).count()));
+    hal.lvdt.set_value(0.030 * std::sin(std::numbers::pi * std::chrono::duration<double>(now).count()));
     loop.step(now);
     if (takes) driver.take();
     if (beats) thread.beat();

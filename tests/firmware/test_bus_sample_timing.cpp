@@ -22,14 +22,13 @@ double ramp(Timestamp t) { return -0.02 + kSpeed * std::chrono::duration<double>
 // A bus thread that polls every 0.51 ms: the loop (1 ms) finds the newest poll, its age drifting
 // from 0 to 0.51 ms and back every 50 periods, the interval between them now and then 0.51 or
 // 1.53 ms instead of 1.02.
-class PolledLvdt final : public mrd::hal::DisplacementSource {
+class PolledLvdt final : public mrd::hal::SampleSource {
  public:
   explicit PolledLvdt(const mrd::hal::Clock& clock) : clock_(clock) {}
-  std::optional<mrd::hal::DisplacementSample> latest() override {
+  std::optional<mrd::hal::Sample> latest() override {
     const auto polls = clock_.now() / kPoll;
     const Timestamp at = polls * kPoll;
-    return mrd::hal::DisplacementSample{ramp(at), at, static_cast<std::uint32_t>(polls),
-                                        mrd::hal::kSampleValid};
+    return mrd::hal::Sample{ramp(at), at, static_cast<std::uint32_t>(polls), mrd::hal::kSampleValid};
   }
   static constexpr Timestamp kPoll = 510us;
 

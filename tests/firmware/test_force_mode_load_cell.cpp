@@ -44,7 +44,7 @@ class DriftedRig {
                                 .velocity = LoopRig::velocity_at(t),
                                 .coil_current = rig_.hal().driver.last_setpoint()})
                        .force;
-    rig_.hal().load_cell.set_force(plant_force_);
+    rig_.hal().load_cell.set_value(plant_force_);
     rig_.step();
   }
   LoopRig& rig() { return rig_; }

@@ -1,14 +1,12 @@
-// HalSet hands the loop the demand channel the config names: the CAN back end itself with
-// backends.demand = "can" or "modbus" (the same back end as the LVDT on that bus), none in
-// table4 mode.
+// HalSet hands the loop each sample channel from the back end the config names: the demand
+// from the CAN or Modbus back end that also reads the LVDT, none in table4 mode; the load cell
+// from a bus back end or the mock.
 #include <gtest/gtest.h>
 
 #include "config/config_loader.hpp"
 #include "firmware/hal_set.hpp"
 
 namespace {
-
-using mrd::hal::can::SocketCanBackend;
 
 TEST(HalSetDemand, TheCanDemandIsTheCanBackEndThatAlsoReadsTheLvdt) {
   const auto loaded = mrd::config::load_config_text(
@@ -17,11 +15,10 @@ TEST(HalSetDemand, TheCanDemandIsTheCanBackEndThatAlsoReadsTheLvdt) {
   const mrd::hal::MonotonicClock clock;
   mrd::firmware::HalSet hal(loaded.config, clock);  // not started: no CAN on the build machine
   const auto devices = hal.devices();
-  ASSERT_NE(devices.demand, nullptr);
-  auto* can = dynamic_cast<SocketCanBackend*>(devices.demand);
-  ASSERT_NE(can, nullptr);
-  EXPECT_EQ(can, dynamic_cast<SocketCanBackend*>(&devices.lvdt));
-  EXPECT_FALSE(devices.demand->latest_demand().has_value());
+  ASSERT_NE(hal.can(), nullptr);
+  EXPECT_EQ(devices.demand, &hal.can()->demand());
+  EXPECT_EQ(&devices.lvdt, &hal.can()->lvdt());
+  EXPECT_FALSE(devices.demand->latest().has_value());
 }
 
 TEST(HalSetDemand, TheModbusDemandIsTheModbusBackEndThatAlsoReadsTheLvdt) {
@@ -31,10 +28,9 @@ TEST(HalSetDemand, TheModbusDemandIsTheModbusBackEndThatAlsoReadsTheLvdt) {
   const mrd::hal::MonotonicClock clock;
   mrd::firmware::HalSet hal(loaded.config, clock);  // not started: nothing to connect to
   const auto devices = hal.devices();
-  ASSERT_NE(devices.demand, nullptr);
-  auto* modbus = dynamic_cast<mrd::hal::modbus::ModbusBackend*>(devices.demand);
-  ASSERT_NE(modbus, nullptr);
-  EXPECT_EQ(modbus, dynamic_cast<mrd::hal::modbus::ModbusBackend*>(&devices.lvdt));
+  ASSERT_NE(hal.modbus(), nullptr);
+  EXPECT_EQ(devices.demand, &hal.modbus()->demand());
+  EXPECT_EQ(&devices.lvdt, &hal.modbus()->lvdt());
 }
 
 TEST(HalSetDemand, TheLoadCellIsTheBusBackEndOrTheMockTheConfigNames) {
@@ -45,9 +41,9 @@ TEST(HalSetDemand, TheLoadCellIsTheBusBackEndOrTheMockTheConfigNames) {
   {
     mrd::firmware::HalSet hal(loaded.config, clock);  // not started
     const auto devices = hal.devices();
-    ASSERT_NE(devices.load_cell, nullptr);
-    EXPECT_EQ(dynamic_cast<SocketCanBackend*>(devices.load_cell), dynamic_cast<SocketCanBackend*>(&devices.lvdt));
-    EXPECT_FALSE(devices.load_cell->latest_load_cell().has_value());
+    ASSERT_NE(hal.can(), nullptr);
+    EXPECT_EQ(devices.load_cell, &hal.can()->load_cell());
+    EXPECT_FALSE(devices.load_cell->latest().has_value());
   }
   loaded = mrd::config::load_config_text(
       "[control]\nmode = \"force\"\n[backends]\nlvdt = \"modbus\"\ndemand = \"modbus\"\nload_cell = \"modbus\"\n",
@@ -55,18 +51,15 @@ TEST(HalSetDemand, TheLoadCellIsTheBusBackEndOrTheMockTheConfigNames) {
   ASSERT_TRUE(loaded.ok()) << loaded.report();
   {
     mrd::firmware::HalSet hal(loaded.config, clock);
-    const auto devices = hal.devices();
-    ASSERT_NE(devices.load_cell, nullptr);
-    EXPECT_EQ(dynamic_cast<mrd::hal::modbus::ModbusBackend*>(devices.load_cell),
-              dynamic_cast<mrd::hal::modbus::ModbusBackend*>(&devices.lvdt));
+    ASSERT_NE(hal.modbus(), nullptr);
+    EXPECT_EQ(hal.devices().load_cell, &hal.modbus()->load_cell());
   }
   loaded = mrd::config::load_config_text("[control]\nmode = \"force\"\n[backends]\nload_cell = \"mock\"\n", "mock.toml");
   ASSERT_TRUE(loaded.ok()) << loaded.report();
   {
     mrd::firmware::HalSet hal(loaded.config, clock);
-    const auto devices = hal.devices();
-    ASSERT_NE(devices.load_cell, nullptr);
-    EXPECT_NE(dynamic_cast<mrd::hal::mock::MockLoadCellSource*>(devices.load_cell), nullptr);
+    ASSERT_NE(hal.mock(), nullptr);
+    EXPECT_EQ(hal.devices().load_cell, &hal.mock()->load_cell);
   }
   // Without the key (none), force mode has no load cell.
   loaded = mrd::config::load_config_text("[control]\nmode = \"force\"\n", "none.toml");

@@ -26,7 +26,7 @@ std::string probe(MockHal& hal, double displacement = 0.012, const ProbeExpectat
   p.disable_driver();
   for (int i = 1; i <= 100; ++i) {
     hal.clock.set(milliseconds(10 * i));
-    hal.lvdt.set_truth(displacement);
+    hal.lvdt.set_value(displacement);
     p.poll(hal.clock.now());
   }
   EXPECT_EQ(hal.driver.writes(), 0u) << "the probe must never command the coil";
@@ -78,7 +78,7 @@ TEST(Probe, ReadingsPrintDecoded) {
   MockHal hal;
   Probe p({hal.lvdt, hal.driver, hal.lines}, {});
   hal.clock.set(milliseconds(10));
-  hal.lvdt.set_truth(-0.0125);
+  hal.lvdt.set_value(-0.0125);
   EXPECT_EQ(Probe::format(p.poll(hal.clock.now()), {}),
             "  t  0.010 s  lvdt  -12.5000 mm (seq 1)  current  0.0000 A  fault clear\n");
   EXPECT_NE(p.summary().find("lvdt: 1 samples in 1 polls, 1 usable, range -12.500..-12.500 mm"), std::string::npos)

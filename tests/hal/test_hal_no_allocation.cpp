@@ -9,7 +9,7 @@
 #include "hal/latest_mailbox.hpp"
 #include "hal/mock/mock_hal.hpp"
 #include "hal/modbus/register_codec.hpp"
-#include "hal/spsc_ring.hpp"
+#include "hal/sample_channel.hpp"
 #include "tests/support/allocation_counter.hpp"
 
 namespace {
@@ -34,8 +34,10 @@ TEST(HalRealTime, MockHalCycleDoesNotAllocateEvenUnderFaults) {
   start_counting_allocations();
   for (int i = 0; i < kCycles; ++i) {
     hal.clock.advance(1ms);
-    hal.lvdt.set_truth(0.01 * std::sin(i * 1e-3));
-    if (const auto s = hal.lvdt.latest()) sink += s->usable() ? s->value : 0.0;
+    hal.lvdt.set_value(0.01 * std::sin(i * 1e-3));
+    for (SampleSource* channel : {&hal.lvdt, &hal.demand, &hal.load_cell}) {
+      if (const auto s = channel->latest()) sink += s->usable() ? s->value : 0.0;
+    }
     (void)hal.driver.write_setpoint(1.0);
     if (const auto m = hal.driver.measured()) sink += m->value;
     sink += hal.lines.driver_fault().value_or(true) ? 1.0 : 0.0;
@@ -50,7 +52,7 @@ TEST(HalRealTime, MockHalCycleDoesNotAllocateEvenUnderFaults) {
 }
 
 TEST(HalRealTime, RingsMailboxesAndCodecsDoNotAllocate) {
-  SpscRing<DisplacementSample, 64> ring;
+  SampleChannel channel;
   LatestMailbox<modbus::EncodeResult> mailbox;
   const modbus::RegisterFormat format{modbus::RegisterType::kInt32, modbus::WordOrder::kLowFirst,
                                       modbus::ByteOrder::kSwapped, 1e-6, 0.0};
@@ -60,8 +62,8 @@ TEST(HalRealTime, RingsMailboxesAndCodecsDoNotAllocate) {
   double sink = 0.0;
   start_counting_allocations();
   for (int i = 0; i < kCycles; ++i) {
-    (void)ring.try_push({i * 1e-6, Timestamp{i}, static_cast<std::uint32_t>(i), kSampleValid});
-    if (const auto s = ring.pop_latest()) sink += s->value;
+    (void)channel.push({i * 1e-6, Timestamp{i}, channel.next_sequence(), kSampleValid});
+    if (const auto s = channel.latest()) sink += s->value;
     const auto encoded = modbus::encode_register(i * 1e-6, format);
     mailbox.publish(encoded);
     if (const auto e = mailbox.take()) sink += modbus::decode_register(e->view(), format).value;

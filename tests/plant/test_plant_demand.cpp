@@ -64,9 +64,9 @@ class ServedDemand {
   [[nodiscard]] mrd::hal::modbus::ModbusBackend& backend() { return *backend_; }
   [[nodiscard]] mrd::hal::Timestamp now() const { return clock_.now(); }
   // The next demand the back end gives (bounded wait); none when it gives none in time.
-  std::optional<mrd::hal::DemandSample> next_demand() {
-    std::optional<mrd::hal::DemandSample> d;
-    mrd::test::wait_for([&] { return (d = backend_->latest_demand()).has_value(); });
+  std::optional<mrd::hal::Sample> next_demand() {
+    std::optional<mrd::hal::Sample> d;
+    mrd::test::wait_for([&] { return (d = backend_->demand().latest()).has_value(); });
     return d;
   }
   // True when the back end read at least four more polls' worth and gave no demand.
@@ -74,7 +74,7 @@ class ServedDemand {
     const auto reads = backend_->counters()[mrd::hal::modbus::ModbusEvent::kReadsOk];
     const bool polled = mrd::test::wait_for(
         [&] { return backend_->counters()[mrd::hal::modbus::ModbusEvent::kReadsOk] >= reads + 8; });
-    return polled && !backend_->latest_demand().has_value();
+    return polled && !backend_->demand().latest().has_value();
   }
 
  private:

@@ -26,12 +26,12 @@ TEST(PlantLoadCell, TheModbusServerServesTheMeasuredForceTheControllersBackEndRe
   const mrd::hal::MonotonicClock clock;
   mrd::hal::modbus::ModbusBackend backend(layout, clock);
   ASSERT_TRUE(backend.start().ok);
-  std::optional<mrd::hal::LoadCellSample> f;
-  ASSERT_TRUE(mrd::test::wait_for([&] { return (f = backend.latest_load_cell()).has_value(); }));
+  std::optional<mrd::hal::Sample> f;
+  ASSERT_TRUE(mrd::test::wait_for([&] { return (f = backend.load_cell().latest()).has_value(); }));
   EXPECT_TRUE(f->usable());
   EXPECT_DOUBLE_EQ(f->value, -27182.8);
   server.publish_load_cell(1500.0);
-  ASSERT_TRUE(mrd::test::wait_for([&] { return (f = backend.latest_load_cell()) && f->value > 0.0; }));
+  ASSERT_TRUE(mrd::test::wait_for([&] { return (f = backend.load_cell().latest()) && f->value > 0.0; }));
   EXPECT_DOUBLE_EQ(f->value, 1500.0);
   backend.stop();
   server.stop();

@@ -64,7 +64,7 @@ class ForgedBus : public ForgedBusBase {
 TEST_F(ForgedBus, BadChecksumWrongDlcAndRepeatedCounterAreNeverUsed) {
   send_lvdt(0.001, 0);
   ASSERT_TRUE(counted(CanEvent::kLvdtFrames, 1));
-  auto s = backend_.latest();
+  auto s = backend_.lvdt().latest();
   ASSERT_TRUE(s && s->usable());
   EXPECT_DOUBLE_EQ(s->value, 0.001);
 
@@ -72,7 +72,7 @@ TEST_F(ForgedBus, BadChecksumWrongDlcAndRepeatedCounterAreNeverUsed) {
   forged.data[7] ^= 0x01;  // checksum off by one bit
   send_frame(kDefaultLvdtId, forged.data);
   ASSERT_TRUE(counted(CanEvent::kBadChecksum, 1));
-  s = backend_.latest();
+  s = backend_.lvdt().latest();
   ASSERT_TRUE(s);
   EXPECT_FALSE(s->usable());
   EXPECT_TRUE(s->flags & mrd::hal::kSampleCorrupted);
@@ -80,17 +80,17 @@ TEST_F(ForgedBus, BadChecksumWrongDlcAndRepeatedCounterAreNeverUsed) {
   const auto good = encode_lvdt(kDefaultLvdtId, {0.5, false, 1}).frame;
   send_frame(kDefaultLvdtId, std::span(good.data).first(5));  // DLC 5
   ASSERT_TRUE(counted(CanEvent::kWrongDlc, 1));
-  s = backend_.latest();
+  s = backend_.lvdt().latest();
   ASSERT_TRUE(s);
   EXPECT_FALSE(s->usable());
 
   send_lvdt(0.002, 0);  // the last good frame's counter again: a replayed copy
   ASSERT_TRUE(counted(CanEvent::kRepeatedCounter, 1));
-  EXPECT_FALSE(backend_.latest().has_value());
+  EXPECT_FALSE(backend_.lvdt().latest().has_value());
 
   send_lvdt(0.003, 5);  // counter jumps 0 -> 5: frames were lost, the value is good
   ASSERT_TRUE(counted(CanEvent::kSequenceGaps, 1));
-  s = backend_.latest();
+  s = backend_.lvdt().latest();
   ASSERT_TRUE(s && s->usable());
   EXPECT_TRUE(s->flags & mrd::hal::kSampleSequenceGap);
   EXPECT_DOUBLE_EQ(s->value, 0.003);
@@ -137,7 +137,7 @@ TEST_F(ForgedBus, AFloodOfUnexpectedIdsIsCountedAndTheLvdtStillGetsThrough) {
   ASSERT_TRUE(counted(CanEvent::kUnexpectedFrames, kFlood));
   const auto c = backend_.counters();
   EXPECT_EQ(c[CanEvent::kBadChecksum] + c[CanEvent::kWrongDlc] + c[CanEvent::kSequenceGaps], 0u);
-  const auto s = backend_.latest();
+  const auto s = backend_.lvdt().latest();
   ASSERT_TRUE(s && s->usable());
   EXPECT_DOUBLE_EQ(s->value, 1e-6 * (kFlood - 1));
 }
@@ -162,17 +162,17 @@ TEST_F(ForgedDemandBus, DemandFramesBecomeSamplesInNewtonsAndBadOnesAreNeverUsed
   hand[7] = crc8_sae_j1850(std::span(hand).first(7));
   send_demand_frame(hand);
   ASSERT_TRUE(counted(CanEvent::kDemandFrames, 1));
-  auto s = backend_.latest_demand();
+  auto s = backend_.demand().latest();
   ASSERT_TRUE(s && s->usable());
   EXPECT_DOUBLE_EQ(s->value, -1234.5);
   EXPECT_EQ(s->sequence, 1u);
-  EXPECT_FALSE(backend_.latest().has_value()) << "a demand is not a displacement";
+  EXPECT_FALSE(backend_.lvdt().latest().has_value()) << "a demand is not a displacement";
 
   auto forged = encode_demand(kDefaultDemandId, {500.0, false, 1}).frame;
   forged.data[2] ^= 0x10;  // a flipped bit in the value
   send_demand_frame(forged.data);
   ASSERT_TRUE(counted(CanEvent::kBadChecksum, 1));
-  s = backend_.latest_demand();
+  s = backend_.demand().latest();
   ASSERT_TRUE(s);
   EXPECT_FALSE(s->usable());
   EXPECT_TRUE(s->flags & mrd::hal::kSampleCorrupted);
@@ -180,24 +180,24 @@ TEST_F(ForgedDemandBus, DemandFramesBecomeSamplesInNewtonsAndBadOnesAreNeverUsed
   const auto good = encode_demand(kDefaultDemandId, {500.0, false, 1}).frame;
   send_demand_frame(std::span(good.data).first(6));  // DLC 6
   ASSERT_TRUE(counted(CanEvent::kWrongDlc, 1));
-  s = backend_.latest_demand();
+  s = backend_.demand().latest();
   ASSERT_TRUE(s);
   EXPECT_TRUE(s->flags & mrd::hal::kSampleCorrupted);
 
   send_demand_frame(encode_demand(kDefaultDemandId, {700.0, false, 0}).frame.data);  // counter 0 again
   ASSERT_TRUE(counted(CanEvent::kRepeatedCounter, 1));
-  EXPECT_FALSE(backend_.latest_demand().has_value());
+  EXPECT_FALSE(backend_.demand().latest().has_value());
 
   send_demand_frame(encode_demand(kDefaultDemandId, {800.0, false, 3}).frame.data);  // 0 -> 3: lost frames
   ASSERT_TRUE(counted(CanEvent::kSequenceGaps, 1));
-  s = backend_.latest_demand();
+  s = backend_.demand().latest();
   ASSERT_TRUE(s && s->usable());
   EXPECT_TRUE(s->flags & mrd::hal::kSampleSequenceGap);
   EXPECT_DOUBLE_EQ(s->value, 800.0);
 
   send_demand_frame(encode_demand(kDefaultDemandId, {900.0, true, 4}).frame.data);  // DemandInvalid
   ASSERT_TRUE(counted(CanEvent::kDemandFrames, 3));
-  s = backend_.latest_demand();
+  s = backend_.demand().latest();
   ASSERT_TRUE(s);
   EXPECT_FALSE(s->usable());
   EXPECT_TRUE(s->flags & mrd::hal::kSampleSensorFault);
@@ -208,7 +208,7 @@ TEST_F(ForgedDemandBus, DemandFramesBecomeSamplesInNewtonsAndBadOnesAreNeverUsed
 TEST_F(ForgedBus, WithoutUseDemandTheDemandFrameIsUnexpected) {
   send_frame(kDefaultDemandId, encode_demand(kDefaultDemandId, {100.0, false, 0}).frame.data);
   ASSERT_TRUE(counted(CanEvent::kUnexpectedFrames, 1));
-  EXPECT_FALSE(backend_.latest_demand().has_value());
+  EXPECT_FALSE(backend_.demand().latest().has_value());
   EXPECT_EQ(backend_.counters()[CanEvent::kDemandFrames], 0u);
 }
 
@@ -235,31 +235,31 @@ TEST_F(ForgedLoadCellBus, LoadCellFramesBecomeSamplesInNewtonsApartFromTheDemand
   send_frame(kDefaultDemandId, encode_demand(kDefaultDemandId, {-100.0, false, 0}).frame.data);
   ASSERT_TRUE(counted(CanEvent::kLoadCellFrames, 1));
   ASSERT_TRUE(counted(CanEvent::kDemandFrames, 1));
-  auto s = backend_.latest_load_cell();
+  auto s = backend_.load_cell().latest();
   ASSERT_TRUE(s && s->usable());
   EXPECT_DOUBLE_EQ(s->value, 4321.0);
   EXPECT_EQ(s->sequence, 1u);
-  const auto demand = backend_.latest_demand();
+  const auto demand = backend_.demand().latest();
   ASSERT_TRUE(demand && demand->usable());
   EXPECT_DOUBLE_EQ(demand->value, -100.0) << "the load cell is not the demand";
-  EXPECT_FALSE(backend_.latest_load_cell().has_value()) << "one sample per frame";
+  EXPECT_FALSE(backend_.load_cell().latest().has_value()) << "one sample per frame";
 
   auto forged = encode_load_cell(kDefaultLoadCellId, {500.0, false, 1}).frame;
   forged.data[1] ^= 0x04;  // a flipped bit in the value
   send_load_cell_frame(forged.data);
   ASSERT_TRUE(counted(CanEvent::kBadChecksum, 1));
-  s = backend_.latest_load_cell();
+  s = backend_.load_cell().latest();
   ASSERT_TRUE(s);
   EXPECT_FALSE(s->usable());
   EXPECT_TRUE(s->flags & mrd::hal::kSampleCorrupted);
 
   send_load_cell_frame(encode_load_cell(kDefaultLoadCellId, {600.0, false, 0}).frame.data);  // counter 0 again
   ASSERT_TRUE(counted(CanEvent::kRepeatedCounter, 1));
-  EXPECT_FALSE(backend_.latest_load_cell().has_value());
+  EXPECT_FALSE(backend_.load_cell().latest().has_value());
 
   send_load_cell_frame(encode_load_cell(kDefaultLoadCellId, {-700.0, true, 1}).frame.data);  // LoadCellInvalid
   ASSERT_TRUE(counted(CanEvent::kLoadCellFrames, 2));
-  s = backend_.latest_load_cell();
+  s = backend_.load_cell().latest();
   ASSERT_TRUE(s);
   EXPECT_FALSE(s->usable());
   EXPECT_TRUE(s->flags & mrd::hal::kSampleSensorFault);
@@ -269,7 +269,7 @@ TEST_F(ForgedLoadCellBus, LoadCellFramesBecomeSamplesInNewtonsApartFromTheDemand
 TEST_F(ForgedBus, WithoutUseLoadCellTheLoadCellFrameIsUnexpected) {
   send_frame(kDefaultLoadCellId, encode_load_cell(kDefaultLoadCellId, {100.0, false, 0}).frame.data);
   ASSERT_TRUE(counted(CanEvent::kUnexpectedFrames, 1));
-  EXPECT_FALSE(backend_.latest_load_cell().has_value());
+  EXPECT_FALSE(backend_.load_cell().latest().has_value());
   EXPECT_EQ(backend_.counters()[CanEvent::kLoadCellFrames], 0u);
 }
 

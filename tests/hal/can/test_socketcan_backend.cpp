@@ -31,7 +31,7 @@ TEST(SocketCanBackend, UnopenableBusFailsCleanlyAndStaysInert) {
   } else {
     EXPECT_NE(result.error.find("no such interface"), std::string::npos) << result.error;
   }
-  EXPECT_FALSE(backend.latest().has_value());
+  EXPECT_FALSE(backend.lvdt().latest().has_value());
   EXPECT_FALSE(backend.measured().has_value());
   EXPECT_FALSE(backend.feedback_driver_fault().has_value());
   EXPECT_EQ(backend.write_setpoint(0.5), IoStatus::kNotConnected);

@@ -36,7 +36,7 @@ TEST(FaultScript, ValidateNamesBadEntries) {
 class MockHalTest : public ::testing::Test {
  protected:
   // One call of latest() per period, starting at the current clock.
-  std::optional<mrd::hal::DisplacementSample> step() {
+  std::optional<mrd::hal::Sample> step() {
     hal.clock.advance(kPeriod);
     return hal.lvdt.latest();
   }
@@ -51,9 +51,9 @@ class MockHalTest : public ::testing::Test {
 };
 
 TEST_F(MockHalTest, ReportsTheTruthWithRisingSequenceAndInjectedTime) {
-  hal.lvdt.set_truth(0.01);
+  hal.lvdt.set_value(0.01);
   const auto a = step();
-  hal.lvdt.set_truth(-0.02);
+  hal.lvdt.set_value(-0.02);
   const auto b = step();
   ASSERT_TRUE(a && b);
   EXPECT_EQ(a->value, 0.01);
@@ -65,14 +65,14 @@ TEST_F(MockHalTest, ReportsTheTruthWithRisingSequenceAndInjectedTime) {
 }
 
 TEST_F(MockHalTest, EachSensorFaultLooksAsScriptedAndEnds) {
-  hal.lvdt.set_truth(0.01);
+  hal.lvdt.set_value(0.01);
   hal.clock.set(cycle_time(9, kPeriod));
   for (int c = 10; c < 13; ++c) EXPECT_FALSE(step().has_value()) << "cycle " << c;
   EXPECT_TRUE(step().has_value());  // cycle 13: back
 
   hal.clock.set(cycle_time(18, kPeriod));
   const auto fresh = step();  // cycle 19
-  hal.lvdt.set_truth(0.02);
+  hal.lvdt.set_value(0.02);
   const auto stale = step();  // cycle 20: the old sample again, whatever the truth now is
   ASSERT_TRUE(fresh && stale);
   EXPECT_EQ(stale->sequence, fresh->sequence);
@@ -109,6 +109,32 @@ TEST_F(MockHalTest, DroppedSamplesLeaveSequenceGaps) {
   EXPECT_EQ(hal.lvdt.samples_dropped(), 3u);  // every third of the ten in the window
   EXPECT_EQ(delivered, 12 - 3);
   EXPECT_EQ(gaps, 3);
+}
+
+// One mock for the three channels, each answering only to its own faults: the LVDT's timeout
+// leaves the demand and the load cell alone, the demand's missing fault the LVDT.
+TEST(MockSampleSource, EachChannelAnswersOnlyToItsOwnFaults) {
+  MockHal hal{FaultScript{{FaultKind::kSensorTimeout, 0ms, 10ms, 0.0},
+                          {FaultKind::kDemandMissing, 10ms, 20ms, 0.0},
+                          {FaultKind::kDemandOutOfRange, 20ms, 30ms, 1e9}}};
+  hal.demand.set_value(250.0);
+  hal.load_cell.set_value(240.0);
+  hal.clock.set(5ms);
+  EXPECT_FALSE(hal.lvdt.latest().has_value());
+  EXPECT_EQ(hal.demand.latest()->value, 250.0);
+  EXPECT_EQ(hal.load_cell.latest()->value, 240.0);
+  hal.clock.set(15ms);
+  EXPECT_TRUE(hal.lvdt.latest().has_value());
+  EXPECT_FALSE(hal.demand.latest().has_value());
+  EXPECT_TRUE(hal.load_cell.latest().has_value());
+  hal.clock.set(25ms);
+  EXPECT_EQ(hal.demand.latest()->value, 1e9);
+  EXPECT_EQ(hal.load_cell.latest()->value, 240.0);
+
+  hal.load_cell.set_faulty(true);
+  EXPECT_FALSE(hal.load_cell.latest()->usable());
+  hal.load_cell.set_silent(true);
+  EXPECT_FALSE(hal.load_cell.latest().has_value());
 }
 
 TEST(MockDriverAndLines, FollowTheSetpointAndTheScript) {

@@ -12,7 +12,7 @@
 namespace {
 
 using namespace std::chrono_literals;
-using mrd::hal::DisplacementSample;
+using mrd::hal::Sample;
 using mrd::hal::IoStatus;
 using mrd::hal::MonotonicClock;
 using mrd::hal::modbus::ModbusBackend;
@@ -28,17 +28,17 @@ ModbusConfig config_for(int port) { return mrd::test::client_config(port); }
 
 // Drains the back end until a sample satisfying `pred` arrives (bounded).
 template <typename Pred>
-std::optional<DisplacementSample> sample_where(ModbusBackend& backend, Pred pred) {
-  std::optional<DisplacementSample> found;
+std::optional<Sample> sample_where(ModbusBackend& backend, Pred pred) {
+  std::optional<Sample> found;
   wait_for([&] {
-    if (auto s = backend.latest(); s && pred(*s)) found = s;
+    if (auto s = backend.lvdt().latest(); s && pred(*s)) found = s;
     return found.has_value();
   });
   return found;
 }
 
-std::optional<DisplacementSample> any_sample(ModbusBackend& backend) {
-  return sample_where(backend, [](const DisplacementSample&) { return true; });
+std::optional<Sample> any_sample(ModbusBackend& backend) {
+  return sample_where(backend, [](const Sample&) { return true; });
 }
 
 class ModbusBackendTest : public ::testing::Test {
@@ -140,8 +140,8 @@ TEST_F(ModbusBackendTest, ReadsTheDemandRegisterAsSamplesInNewtons) {
   ModbusBackend backend(config, clock);
   ASSERT_TRUE(backend.start().ok);
 
-  std::optional<mrd::hal::DemandSample> d;
-  ASSERT_TRUE(wait_for([&] { return (d = backend.latest_demand()).has_value(); }));
+  std::optional<mrd::hal::Sample> d;
+  ASSERT_TRUE(wait_for([&] { return (d = backend.demand().latest()).has_value(); }));
   EXPECT_TRUE(d->usable());
   EXPECT_DOUBLE_EQ(d->value, -1234.5);
   const auto lvdt = any_sample(backend);
@@ -149,7 +149,7 @@ TEST_F(ModbusBackendTest, ReadsTheDemandRegisterAsSamplesInNewtons) {
   EXPECT_DOUBLE_EQ(lvdt->value, 1e-3) << "the LVDT is still read";
 
   server.set_holding_registers(kDemandAddress, {0x0000, 0x2710});  // 1000.0 N
-  ASSERT_TRUE(wait_for([&] { return (d = backend.latest_demand()) && d->value > 0.0; }));
+  ASSERT_TRUE(wait_for([&] { return (d = backend.demand().latest()) && d->value > 0.0; }));
   EXPECT_DOUBLE_EQ(d->value, 1000.0);
 
   ModbusTestServer nan_server;
@@ -162,7 +162,7 @@ TEST_F(ModbusBackendTest, ReadsTheDemandRegisterAsSamplesInNewtons) {
   config.registers.demand.scale = 1.0;
   ModbusBackend nan_backend(config, clock);
   ASSERT_TRUE(nan_backend.start().ok);
-  ASSERT_TRUE(wait_for([&] { return (d = nan_backend.latest_demand()).has_value(); }));
+  ASSERT_TRUE(wait_for([&] { return (d = nan_backend.demand().latest()).has_value(); }));
   EXPECT_FALSE(d->usable());
   EXPECT_TRUE(d->flags & mrd::hal::kSampleCorrupted);
   EXPECT_GE(nan_backend.counters()[ModbusEvent::kDecodeErrors], 1u);
@@ -211,38 +211,38 @@ TEST_F(ModbusBackendTest, ADemandCounterGivesADemandOnlyWhenItAdvancesAndWrapsAr
       return wait_for([&] { return backend.counters()[ModbusEvent::kReadsOk] >= reads + 8; });
     };
     ASSERT_TRUE(polls_later());
-    EXPECT_FALSE(backend.latest_demand().has_value()) << "the count found at the start gave a demand";
+    EXPECT_FALSE(backend.demand().latest().has_value()) << "the count found at the start gave a demand";
 
-    std::optional<mrd::hal::DemandSample> d;
+    std::optional<mrd::hal::Sample> d;
     publish(150, 8);
-    ASSERT_TRUE(wait_for([&] { return (d = backend.latest_demand()).has_value(); }));
+    ASSERT_TRUE(wait_for([&] { return (d = backend.demand().latest()).has_value(); }));
     EXPECT_DOUBLE_EQ(d->value, 15.0);
     EXPECT_EQ(d->sequence, 8u);
     EXPECT_TRUE(d->usable());
 
     // Frozen: polls go on (reads counted) but no demand comes.
     ASSERT_TRUE(polls_later());
-    EXPECT_FALSE(backend.latest_demand().has_value()) << "a frozen counter gave a demand";
+    EXPECT_FALSE(backend.demand().latest().has_value()) << "a frozen counter gave a demand";
     EXPECT_TRUE(any_sample(backend).has_value()) << "the LVDT is still read";
 
     // Advances: one demand with the new value; a jump of 3 shows in the sequence.
     publish(200, 10);
-    ASSERT_TRUE(wait_for([&] { return (d = backend.latest_demand()).has_value(); }));
+    ASSERT_TRUE(wait_for([&] { return (d = backend.demand().latest()).has_value(); }));
     EXPECT_DOUBLE_EQ(d->value, 20.0);
     EXPECT_EQ(d->sequence, 10u);
 
     // Wrap: 65535 -> 0 is an advance, not a frozen counter.
     publish(300, 65535);
-    ASSERT_TRUE(wait_for([&] { return (d = backend.latest_demand()) && d->sequence == 65535u; }));
+    ASSERT_TRUE(wait_for([&] { return (d = backend.demand().latest()) && d->sequence == 65535u; }));
     EXPECT_DOUBLE_EQ(d->value, 30.0);
     publish(400, 0);
-    ASSERT_TRUE(wait_for([&] { return (d = backend.latest_demand()).has_value(); }));
+    ASSERT_TRUE(wait_for([&] { return (d = backend.demand().latest()).has_value(); }));
     EXPECT_EQ(d->sequence, 0u);
     EXPECT_DOUBLE_EQ(d->value, 40.0);
 
     // A counter that moves with an unchanged value is a new demand: a held demand is fair.
     publish(400, 1);
-    ASSERT_TRUE(wait_for([&] { return (d = backend.latest_demand()).has_value(); }));
+    ASSERT_TRUE(wait_for([&] { return (d = backend.demand().latest()).has_value(); }));
     EXPECT_EQ(d->sequence, 1u);
     EXPECT_DOUBLE_EQ(d->value, 40.0);
     EXPECT_EQ(backend.counters()[ModbusEvent::kReadErrors], 0u);
@@ -256,7 +256,7 @@ TEST_F(ModbusBackendTest, WithoutHasDemandNoDemandIsRead) {
   ModbusBackend backend(config_for(server.port()), clock);
   ASSERT_TRUE(backend.start().ok);
   ASSERT_TRUE(any_sample(backend).has_value());
-  EXPECT_FALSE(backend.latest_demand().has_value());
+  EXPECT_FALSE(backend.demand().latest().has_value());
 }
 
 TEST_F(ModbusBackendTest, ReconnectsWhenTheServerGoesAwayAndComesBack) {
@@ -275,8 +275,8 @@ TEST_F(ModbusBackendTest, ReconnectsWhenTheServerGoesAwayAndComesBack) {
   EXPECT_TRUE(backend.link_problem().value_or("").ends_with(", link lost")) << backend.link_problem().value_or("none");
   // While it is away, setpoints are queued and the loop is told.
   EXPECT_EQ(backend.write_setpoint(0.25), IoStatus::kNotConnected);
-  (void)backend.latest();  // drop what arrived before the outage
-  EXPECT_FALSE(backend.latest().has_value());
+  (void)backend.lvdt().latest();  // drop what arrived before the outage
+  EXPECT_FALSE(backend.lvdt().latest().has_value());
 
   server = std::make_unique<ModbusTestServer>(ModbusTestServer::Mode::kReply, port);
   ASSERT_TRUE(server->listening());
@@ -302,7 +302,7 @@ TEST_F(ModbusBackendTest, SilentServerCountsTimeoutsAndStillStops) {
   ModbusBackend backend(config, clock);
   ASSERT_TRUE(backend.start().ok);
   EXPECT_TRUE(wait_for([&] { return backend.counters()[ModbusEvent::kTimeouts] >= 2; }));
-  EXPECT_FALSE(backend.latest().has_value());
+  EXPECT_FALSE(backend.lvdt().latest().has_value());
   EXPECT_EQ(backend.last_errno(), ETIMEDOUT);
   const auto counters = backend.counters();
   EXPECT_GE(counters[ModbusEvent::kDisconnects], 1u);
@@ -321,7 +321,7 @@ TEST_F(ModbusBackendTest, ExceptionResponseIsCountedWithoutDroppingTheLink) {
   const auto counters = backend.counters();
   EXPECT_EQ(counters[ModbusEvent::kConnects], 1u);
   EXPECT_EQ(counters[ModbusEvent::kDisconnects], 0u);
-  EXPECT_FALSE(backend.latest().has_value());
+  EXPECT_FALSE(backend.lvdt().latest().has_value());
 }
 
 TEST_F(ModbusBackendTest, NoServerMeansConnectFailuresWithBackOff) {
@@ -334,7 +334,7 @@ TEST_F(ModbusBackendTest, NoServerMeansConnectFailuresWithBackOff) {
   ASSERT_TRUE(backend.start().ok);
   EXPECT_TRUE(wait_for([&] { return backend.counters()[ModbusEvent::kConnectFailures] >= 3; }));
   EXPECT_FALSE(backend.connected());
-  EXPECT_FALSE(backend.latest().has_value());
+  EXPECT_FALSE(backend.lvdt().latest().has_value());
   // Where and why, as mbpoll says it.
   const auto problem = backend.link_problem();
   ASSERT_TRUE(problem.has_value());

@@ -34,7 +34,7 @@ mrd::hal::modbus::ModbusCounters run_against(ModbusTestServer::Forge forge, std:
   ModbusBackend backend(mrd::test::client_config(server.port()), clock);
   EXPECT_TRUE(backend.start().ok);
   EXPECT_TRUE(wait_for([&] { return backend.counters()[ModbusEvent::kReadErrors] >= reads; }));
-  EXPECT_FALSE(backend.latest().has_value());
+  EXPECT_FALSE(backend.lvdt().latest().has_value());
   backend.stop();
   return backend.counters();
 }

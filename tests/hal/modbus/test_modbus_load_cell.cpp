@@ -10,7 +10,7 @@
 
 namespace {
 
-using mrd::hal::LoadCellSample;
+using mrd::hal::Sample;
 using mrd::hal::MonotonicClock;
 using mrd::hal::modbus::ModbusBackend;
 using mrd::hal::modbus::ModbusEvent;
@@ -35,19 +35,19 @@ TEST(ModbusLoadCell, ReadsTheLoadCellRegistersAsSamplesInNewtonsApartFromTheDema
   ModbusBackend backend(config, clock);
   ASSERT_TRUE(backend.start().ok);
 
-  std::optional<LoadCellSample> f;
-  ASSERT_TRUE(wait_for([&] { return (f = backend.latest_load_cell()).has_value(); }));
+  std::optional<Sample> f;
+  ASSERT_TRUE(wait_for([&] { return (f = backend.load_cell().latest()).has_value(); }));
   EXPECT_TRUE(f->usable());
   EXPECT_DOUBLE_EQ(f->value, 4321.0);
-  std::optional<mrd::hal::DemandSample> d;
-  ASSERT_TRUE(wait_for([&] { return (d = backend.latest_demand()).has_value(); }));
+  std::optional<mrd::hal::Sample> d;
+  ASSERT_TRUE(wait_for([&] { return (d = backend.demand().latest()).has_value(); }));
   EXPECT_DOUBLE_EQ(d->value, -1234.5) << "the load cell is not the demand";
 
   server.set_input_registers(kLoadCellAddress, {0xFFFF, 0xD8F0});  // -10000 counts: -1000 N
-  ASSERT_TRUE(wait_for([&] { return (f = backend.latest_load_cell()) && f->value < 0.0; }));
+  ASSERT_TRUE(wait_for([&] { return (f = backend.load_cell().latest()) && f->value < 0.0; }));
   EXPECT_DOUBLE_EQ(f->value, -1000.0);
   const std::uint32_t before = f->sequence;
-  ASSERT_TRUE(wait_for([&] { return (f = backend.latest_load_cell()).has_value(); }));
+  ASSERT_TRUE(wait_for([&] { return (f = backend.load_cell().latest()).has_value(); }));
   EXPECT_GT(f->sequence, before) << "one new sample per poll";
 }
 
@@ -65,8 +65,8 @@ TEST(ModbusLoadCell, AValueThatDoesNotDecodeIsACorruptedSample) {
   config.registers.load_cell.scale = 1.0;
   ModbusBackend backend(config, clock);
   ASSERT_TRUE(backend.start().ok);
-  std::optional<LoadCellSample> f;
-  ASSERT_TRUE(wait_for([&] { return (f = backend.latest_load_cell()).has_value(); }));
+  std::optional<Sample> f;
+  ASSERT_TRUE(wait_for([&] { return (f = backend.load_cell().latest()).has_value(); }));
   EXPECT_FALSE(f->usable());
   EXPECT_TRUE(f->flags & mrd::hal::kSampleCorrupted);
   EXPECT_GE(backend.counters()[ModbusEvent::kDecodeErrors], 1u);
@@ -79,8 +79,8 @@ TEST(ModbusLoadCell, WithoutHasLoadCellNoLoadCellIsRead) {
   server.set_input_registers(kLvdtAddress, {0x0000, 1000});
   ModbusBackend backend(mrd::test::client_config(server.port()), clock);
   ASSERT_TRUE(backend.start().ok);
-  ASSERT_TRUE(wait_for([&] { return backend.latest().has_value(); }));
-  EXPECT_FALSE(backend.latest_load_cell().has_value());
+  ASSERT_TRUE(wait_for([&] { return backend.lvdt().latest().has_value(); }));
+  EXPECT_FALSE(backend.load_cell().latest().has_value());
 }
 
 // A device that refuses the load cell's registers (exception: past its map) still serves the
@@ -103,15 +103,15 @@ TEST(ModbusLoadCell, ARefusedLoadCellLeavesTheLvdtAndTheReadbackFlowing) {
   ModbusBackend backend(config, clock);
   ASSERT_TRUE(backend.start().ok);
 
-  std::optional<LoadCellSample> f;
-  ASSERT_TRUE(wait_for([&] { return (f = backend.latest_load_cell()).has_value(); }));
+  std::optional<Sample> f;
+  ASSERT_TRUE(wait_for([&] { return (f = backend.load_cell().latest()).has_value(); }));
   EXPECT_FALSE(f->usable());
   EXPECT_TRUE(f->flags & mrd::hal::kSampleCorrupted);
   // Polls go on past the refusal: new LVDT samples and readings keep coming.
-  std::optional<mrd::hal::DisplacementSample> first;
-  ASSERT_TRUE(wait_for([&] { return (first = backend.latest()).has_value(); }));
+  std::optional<mrd::hal::Sample> first;
+  ASSERT_TRUE(wait_for([&] { return (first = backend.lvdt().latest()).has_value(); }));
   ASSERT_TRUE(wait_for([&] {
-    const auto next = backend.latest();
+    const auto next = backend.lvdt().latest();
     return next && next->sequence > first->sequence + 3;
   })) << "reads ok " << backend.counters()[ModbusEvent::kReadsOk];
   ASSERT_TRUE(wait_for([&] { return backend.measured().has_value(); }));
