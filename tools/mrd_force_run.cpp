@@ -17,7 +17,7 @@
 #include "common/cli/exit_code.hpp"
 #include "tools/force_run/controller_identification.hpp"
 #include "tools/force_run/force_run.hpp"
-#include "tools/gnuplot.hpp"
+#include "tools/plot/gnuplot.hpp"
 #include "tools/json.hpp"
 
 namespace {
@@ -56,19 +56,19 @@ mrd::tools::Json to_json(const CaseRun& run, std::string_view profile_name, cons
 
 bool write_trace(const std::string& path, const DemandProfile& profile, const ForceRunResult& r) {
   std::ofstream out(path);
-  out << "time_s,displacement_mm,velocity_mm_s,desired_kN";
+  out << "time_s,displacement_mm,velocity_mm_s,desired_N";
   for (const auto& s : r.strategies) {
     const std::string name(mrd::tools::strategy_name(s.kind));
-    out << ',' << name << "_kN," << name << "_A";
+    out << ',' << name << "_N," << name << "_A";
     if (!s.yield_scale.empty()) out << ',' << name << "_scale";
   }
   if (!r.plant_yield_factor.empty()) out << ",plant_yield_factor";
   out << '\n';
   for (std::size_t i = 0; i < profile.size(); ++i) {
     out << static_cast<double>(i) * profile.sample_period << ',' << profile.displacement[i] * 1e3 << ','
-        << profile.velocity[i] * 1e3 << ',' << profile.force[i] * 1e-3;
+        << profile.velocity[i] * 1e3 << ',' << profile.force[i];
     for (const auto& s : r.strategies) {
-      out << ',' << s.delivered[i] * 1e-3 << ',' << s.current[i];
+      out << ',' << s.delivered[i] << ',' << s.current[i];
       if (!s.yield_scale.empty()) out << ',' << s.yield_scale[i];
     }
     if (!r.plant_yield_factor.empty()) out << ',' << r.plant_yield_factor[i];
@@ -77,47 +77,60 @@ bool write_trace(const std::string& path, const DemandProfile& profile, const Fo
   return static_cast<bool>(out);
 }
 
-// Four panels, one a strategy, each with the desired force under the delivered one.
-std::string plot_script(const std::string& csv, const std::string& png, const std::string& title, bool against_time,
-                        double from_s, double to_s) {
+namespace plot = mrd::tools::plot;
+
+// The trace's forces are in N, drawn in kN.
+plot::Column in_kN(plot::Column c) { return c.times(1e-3); }
+
+// Four panels, one a strategy, each with the desired force under the delivered one: against time
+// over [from_s, to_s], or against velocity with the samples of that span.
+plot::Figure strategies_figure(const std::string& csv, const std::string& png, const std::string& title,
+                               bool against_time, double from_s, double to_s) {
   static const char* const kNames[] = {"clipped_on_off", "inverse_bingham", "inverse_ja", "inverse_ja_lag"};
-  std::string s = "set terminal pngcairo noenhanced size 1200,850 font ',10'\nset output '" + png +
-                  "'\nset datafile separator ','\nset grid\nset key below horizontal\n"
-                  "set multiplot layout 2,2 title '" + title + "'\n";
-  s += against_time ? "set xlabel 'time [s]'\nset ylabel 'force [kN]'\nset xrange [" + std::to_string(from_s) + ":" +
-                          std::to_string(to_s) + "]\n"
-                    : "set xlabel 'velocity [mm/s]'\nset ylabel 'force [kN]'\n";
-  const std::string when = "($1>=" + std::to_string(from_s) + "&&$1<=" + std::to_string(to_s) + "?";
+  plot::Figure figure{.output = png, .title = title, .width = 1200, .height = 850, .columns = 2};
+  const plot::Column x = against_time ? plot::column(1) : plot::column(3).where(1, from_s, to_s);
+  const plot::Axis x_axis = against_time ? plot::Axis{"time", "s", plot::Range{from_s, to_s}} : plot::Axis{"velocity", "mm/s"};
+  const plot::Style desired = against_time ? plot::lines(plot::colour::kGrey, 2.0) : plot::dots(plot::colour::kGrey);
+  const plot::Style delivered = against_time ? plot::lines(plot::colour::kBlue) : plot::dots(plot::colour::kBlue);
   for (int k = 0; k < 4; ++k) {
-    const int column = 5 + 2 * k;
-    s += "set title '" + std::string(kNames[k]) + "'\n";
-    if (against_time) {
-      s += "plot '" + csv + "' every ::1 using 1:4 with lines lw 2 lc rgb '#888888' title 'desired', '' every ::1 using 1:" +
-           std::to_string(column) + " with lines lc rgb '#1f77b4' title 'delivered'\n";
-    } else {
-      s += "plot '" + csv + "' every ::1 using " + when + "$3:1/0):4 with dots lc rgb '#888888' title 'desired', "
-           "'' every ::1 using " + when + "$3:1/0):" + std::to_string(column) +
-           " with dots lc rgb '#1f77b4' title 'delivered'\n";
-    }
+    const int column = 5 + 2 * k;  // write_trace: each strategy's force, then its current
+    figure.panels.push_back({.title = kNames[k],
+                             .x = x_axis,
+                             .y = {"force", "kN"},
+                             .data = {csv, true},
+                             .series = {{"desired", x, in_kN(plot::column(4)), desired},
+                                        {"delivered", x, in_kN(plot::column(column)), delivered, plot::Layer::measured}}});
   }
-  return s + "unset multiplot\n";
+  return figure;
 }
 
 // With --load-cell: inverse_ja's error and inverse_ja_load_cell's over the whole run, and the
 // correction's scale against the plant's drifting yield factor (columns as write_trace lays them
 // out: inverse_ja is the third strategy, inverse_ja_load_cell the fifth with its scale after).
-std::string load_cell_plot_script(const std::string& csv, const std::string& png, const std::string& title,
-                                  bool drifting) {
-  std::string s = "set terminal pngcairo noenhanced size 1200,850 font ',10'\nset output '" + png +
-                  "'\nset datafile separator ','\nset grid\nset key below horizontal\n"
-                  "set multiplot layout 2,1 title '" + title + "'\nset xlabel 'time [s]'\n";
-  s += "set ylabel 'delivered - desired [kN]'\nset title 'force error'\n"
-       "plot '" + csv + "' every ::1 using 1:($9-$4) with lines lc rgb '#d62728' title 'inverse_ja', "
-       "'' every ::1 using 1:($13-$4) with lines lc rgb '#1f77b4' title 'inverse_ja_load_cell'\n";
-  s += "set ylabel 'yield scale [-]'\nset title 'the model yield force scale'\nplot '" + csv +
-       "' every ::1 using 1:15 with lines lw 2 lc rgb '#1f77b4' title 'load-cell correction'";
-  if (drifting) s += ", '' every ::1 using 1:16 with lines lw 2 lc rgb '#888888' title 'plant yield stress / its undrifted value'";
-  return s + "\nunset multiplot\n";
+plot::Figure load_cell_figure(const std::string& csv, const std::string& png, const std::string& title, bool drifting) {
+  plot::Panel scale{.title = "the model yield force scale",
+                    .x = {"time", "s"},
+                    .y = {"yield scale", "-"},
+                    .data = {csv, true},
+                    .series = {{"load-cell correction", plot::column(1), plot::column(15),
+                                plot::lines(plot::colour::kBlue, 2.0)}}};
+  if (drifting) {
+    scale.series.push_back({"plant yield stress / its undrifted value", plot::column(1), plot::column(16),
+                            plot::lines(plot::colour::kGrey, 2.0)});
+  }
+  return {.output = png,
+          .title = title,
+          .width = 1200,
+          .height = 850,
+          .panels = {{.title = "force error",
+                      .x = {"time", "s"},
+                      .y = {"delivered - desired", "kN"},
+                      .data = {csv, true},
+                      .series = {{"inverse_ja", plot::column(1), in_kN(plot::column(9).minus(4)),
+                                  plot::lines(plot::colour::kRed)},
+                                 {"inverse_ja_load_cell", plot::column(1), in_kN(plot::column(13).minus(4)),
+                                  plot::lines(plot::colour::kBlue)}}},
+                     std::move(scale)}};
 }
 
 }  // namespace
@@ -275,9 +288,8 @@ int main(int argc, char** argv) {
       const double from = std::min(2.0, duration - 1.0), to = std::min(from + 6.0, duration);
       if (load_cell) {
         const std::string png = stem + "_load_cell.png";
-        const std::string error = mrd::tools::run_gnuplot(
-            load_cell_plot_script(stem + ".csv", png, title + ", yield drift " + std::to_string(drift_pct).substr(0, 4) + " %",
-                                  drift_pct > 0.0));
+        const std::string error = plot::draw({load_cell_figure(
+            stem + ".csv", png, title + ", yield drift " + std::to_string(drift_pct).substr(0, 4) + " %", drift_pct > 0.0)});
         if (error.empty()) {
           std::printf("wrote %s\n", png.c_str());
         } else {
@@ -287,7 +299,7 @@ int main(int argc, char** argv) {
       for (const bool against_time : {true, false}) {
         const std::string png = stem + (against_time ? "_force_time.png" : "_force_velocity.png");
         const std::string error =
-            mrd::tools::run_gnuplot(plot_script(stem + ".csv", png, title, against_time, from, to));
+            plot::draw({strategies_figure(stem + ".csv", png, title, against_time, from, to)});
         if (error.empty()) {
           std::printf("wrote %s\n", png.c_str());
         } else {

@@ -10,7 +10,7 @@
 
 #include "common/cli/command_line.hpp"
 #include "record/csv.hpp"
-#include "tools/gnuplot.hpp"
+#include "tools/plot/gnuplot.hpp"
 #include "tools/hil/force_join.hpp"
 #include "tools/hil/telemetry_csv.hpp"
 #include "record/row_screen.hpp"
@@ -18,15 +18,21 @@
 
 namespace {
 
-std::string plot_script(const std::string& data, const std::string& png) {
-  return "set terminal pngcairo noenhanced size 1000,700 font ',11'\n"
-         "set output '" + png + "'\n"
-         "set datafile separator ','\nset datafile columnheaders\n"
-         "set title 'mrd-controller against mrd-plant: force against displacement'\n"
-         "set xlabel 'displacement [mm]'\nset ylabel 'force [kN]'\nset grid\nset key below horizontal\n"
-         "plot '" + data + "' using 1:($2 / 1e3) with lines lw 2 lc rgb '#888888' title "
-         "'plant (true force)', '' using 1:($3 / 1e3) with lines lc rgb '#1f77b4' title "
-         "'controller observer'\n";
+// The paper's Fig. 14: the plant's true force (the measurement a test rig would give) over the
+// observer's. `data`: force_displacement.csv.
+mrd::tools::plot::Figure force_displacement_figure(const std::string& data, const std::string& png) {
+  namespace plot = mrd::tools::plot;
+  return {.output = png,
+          .title = "mrd-controller against mrd-plant: force against displacement",
+          .width = 1000,
+          .height = 700,
+          .panels = {{.x = {"displacement", "mm"},
+                      .y = {"force", "kN"},
+                      .data = {data, true},
+                      .series = {{"controller observer", plot::column(1), plot::column(3).times(1e-3),
+                                  plot::lines(plot::colour::kBlue, 2.0)},
+                                 {"plant (true force)", plot::column(1), plot::column(2).times(1e-3),
+                                  plot::lines(plot::colour::kDarkGrey), plot::Layer::measured}}}}};
 }
 
 // What the reader set aside, each row with its line (the first kMaxListed of each file).
@@ -141,7 +147,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "mrd-hil-report: cannot write %s\n", data.c_str());
         return mrd::cli::kIo;
       }
-      const std::string error = mrd::tools::run_gnuplot(plot_script(data, png));
+      const std::string error = mrd::tools::plot::draw({force_displacement_figure(data, png)});
       if (error.empty()) {
         std::printf("plot: %s (data %s)\n", png.c_str(), data.c_str());
       } else {

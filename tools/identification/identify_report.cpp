@@ -8,7 +8,7 @@
 #include <limits>
 #include <sstream>
 
-#include "tools/gnuplot.hpp"
+#include "tools/plot/gnuplot.hpp"
 #include "tools/json.hpp"
 #include "tools/report/fit_statistics.hpp"
 #include "tools/report/force_fit.hpp"
@@ -25,6 +25,16 @@ Json params_json(const Point& x) {
 }
 
 Point final_point(const IdentifyResult& r) { return r.polish ? r.polish->best : r.search.best; }
+
+// Figure 8: the global best (the best of every box so far) never rises, the box's own may.
+// `data`: evaluations, global best, box best.
+plot::Panel convergence_panel(const std::string& data) {
+  return {.x = {"evaluations", ""},
+          .y = {"best fitness", "T", std::nullopt, true},
+          .data = {data},
+          .series = {{"best of the search box in use", plot::column(1), plot::column(3), plot::steps(plot::colour::kLightBlue)},
+                     {"global best", plot::column(1), plot::column(2), plot::steps(plot::colour::kBlue, 2.0)}}};
+}
 
 std::vector<double> measured_B(const BHCurve& curve) {
   std::vector<double> B;
@@ -135,20 +145,20 @@ std::string plot_identification(const IdentifyResult& r, const BHObjective& obje
     }
   }
   const std::string label = std::string(algorithm_name(r.algorithm)) + (r.polish ? " + LM" : "");
-  std::ostringstream gp;
-  gp << "set terminal pngcairo noenhanced size 900,650\n"
-     << "set output '" << (fs::path(directory) / "identify_bh.png").string() << "'\n"
-     << "set title 'B-H loops: measured and fitted (" << label << ", RMSE "
-     << format("%.9g", r.polish ? r.polish->rmse : r.fit.rmse) << " T)' noenhanced\n"
-     << "set xlabel 'H [A/m]'\nset ylabel 'B [T]'\nset grid\nset key below horizontal\n"
-     << "plot '" << loops_file << "' using 1:2 with points pt 7 ps 0.4 title 'measured', '"
-     << loops_file << "' using 1:3 with lines lw 2 title 'J-A fit'\n"
-     << "set output '" << (fs::path(directory) / "identify_convergence.png").string() << "'\n"
-     << "set title 'Convergence (" << label << ")' noenhanced\n"
-     << "set xlabel 'evaluations'\nset ylabel 'best fitness [T]'\nset logscale y\n"
-     << "plot '" << convergence_file << "' using 1:3 with steps lw 1 lc rgb '#9ecae1' title 'best of the search box in use', '"
-     << convergence_file << "' using 1:2 with steps lw 2 lc rgb '#1f77b4' title 'global best'\n";
-  return run_gnuplot(gp.str());
+  const plot::Figure loops{
+      .output = (fs::path(directory) / "identify_bh.png").string(),
+      .title = "B-H loops: measured and fitted (" + label + ", RMSE " +
+               format("%.9g", r.polish ? r.polish->rmse : r.fit.rmse) + " T)",
+      .panels = {{.x = {"H", "A/m"},
+                  .y = {"B", "T"},
+                  .data = {loops_file},
+                  .series = {{"measured", plot::column(1), plot::column(2), plot::points(plot::colour::kGrey, 0.4),
+                              plot::Layer::measured},
+                             {"J-A fit", plot::column(1), plot::column(3), plot::lines(plot::colour::kRed, 2.0)}}}}};
+  const plot::Figure convergence{.output = (fs::path(directory) / "identify_convergence.png").string(),
+                                 .title = "Convergence (" + label + ")",
+                                 .panels = {convergence_panel(convergence_file)}};
+  return plot::draw({loops, convergence});
 }
 
 std::string write_identify_report(const IdentifyResult& r, const IdentifyStatistics& statistics,
@@ -199,23 +209,34 @@ std::string write_identify_report(const IdentifyResult& r, const IdentifyStatist
   const std::string dat = report.data("bh", {"point", "H_A_per_m", "B_T", "B_fitted_T", "residual_T"},
                                       {&index, &H, &Bm, &Bf, &residual}, H.size());
   report.plot("bh_loops", format("B against H, measured and fitted (%s), fit %.2f %%", label.c_str(), statistics.fit_percent),
-              "set xlabel 'H [A/m]'\nset ylabel 'B [T]'\nplot '" + dat +
-                  "' using 2:3 with points pt 7 ps 0.5 lc rgb '#888888' title 'measured', '" + dat +
-                  "' using 2:4 with lines lw 2 lc rgb '#d62728' title 'J-A fit'\n");
+              {.x = {"H", "A/m"},
+               .y = {"B", "T"},
+               .data = {dat},
+               .series = {{"measured", plot::column(2), plot::column(3), plot::points(plot::colour::kGrey, 0.5),
+                           plot::Layer::measured},
+                          {"J-A fit", plot::column(2), plot::column(4), plot::lines(plot::colour::kRed, 2.0)}}});
   report.plot("bh_time", "B point by point along the loops, measured and fitted",
-              "set xlabel 'point'\nset ylabel 'B [T]'\nplot '" + dat + "' using 1:3 with lines lc rgb '#555555' title 'measured', '" +
-                  dat + "' using 1:4 with lines lc rgb '#d62728' title 'J-A fit'\n");
+              {.x = {"point", ""},
+               .y = {"B", "T"},
+               .data = {dat},
+               .series = {{"measured", plot::column(1), plot::column(3), plot::lines(plot::colour::kDarkGrey),
+                           plot::Layer::measured},
+                          {"J-A fit", plot::column(1), plot::column(4), plot::lines(plot::colour::kRed)}}});
   report.heading("Residual");
   report.plot("bh_residual", "B residual, measured - fitted, point by point",
-              "set xlabel 'point'\nset ylabel 'residual [T]'\nplot '" + dat +
-                  "' using 1:5 with lines lc rgb '#1f77b4' title 'measured - fitted'\n");
+              {.x = {"point", ""},
+               .y = {"residual", "T"},
+               .data = {dat},
+               .series = {{"measured - fitted", plot::column(1), plot::column(5), plot::lines(plot::colour::kBlue)}}});
   report.plot("bh_residual_H", "B residual against H (structure the J-A set leaves)",
-              "set xlabel 'H [A/m]'\nset ylabel 'residual [T]'\nplot '" + dat +
-                  "' using 2:5 with points pt 7 ps 0.3 lc rgb '#1f77b4' title 'measured - fitted'\n");
+              {.x = {"H", "A/m"},
+               .y = {"residual", "T"},
+               .data = {dat},
+               .series = {{"measured - fitted", plot::column(2), plot::column(5), plot::points(plot::colour::kBlue, 0.3)}}});
   const std::size_t lags = std::min<std::size_t>(100, B.size() / 4);
   std::vector<double> point_residual(B.size());
   for (std::size_t k = 0; k < B.size(); ++k) point_residual[k] = B[k] - fitted[k];
-  add_autocorrelation_plot(report, point_residual, lags, 1.0, "lag [points]",
+  add_autocorrelation_plot(report, point_residual, lags, 1.0, {"lag", "points"},
                            format("autocorrelation of the B residual, 95 %% bounds +-%.3g",
                                   autocorrelation_bound_95(point_residual.size())));
   report.heading("Convergence");
@@ -229,10 +250,7 @@ std::string write_identify_report(const IdentifyResult& r, const IdentifyStatist
   }
   const std::string conv =
       report.data("convergence", {"evaluations", "best_fitness_T", "box_best_fitness_T"}, {&evaluations, &fitness, &box});
-  report.plot("convergence", "best fitness of the global search against model evaluations",
-              "set xlabel 'evaluations'\nset ylabel 'best fitness [T]'\nset logscale y\nplot '" + conv +
-                  "' using 1:3 with steps lw 1 lc rgb '#9ecae1' title 'best of the search box in use', '" + conv +
-                  "' using 1:2 with steps lw 2 lc rgb '#1f77b4' title 'global best'\n");
+  report.plot("convergence", "best fitness of the global search against model evaluations", convergence_panel(conv));
   report.provenance(provenance);
   return report.write();
 }

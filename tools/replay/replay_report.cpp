@@ -5,9 +5,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
-#include "tools/gnuplot.hpp"
+#include "tools/plot/gnuplot.hpp"
 #include "tools/json.hpp"
 #include "tools/report/fit_statistics.hpp"
 #include "tools/report/force_fit.hpp"
@@ -199,31 +198,36 @@ std::string plot_replay(const ReplayContext& c, const std::string& directory) {
                                                     c.result.force->rms, c.result.force->nrmse)
                                            : "";
   auto png = [&](const char* file) { return (fs::path(directory) / file).string(); };
-  std::ostringstream gp;
-  gp << "set terminal pngcairo noenhanced size 900,650\nset grid\nset key below horizontal\n"
-     << "set output '" << png("replay_force_displacement.png") << "'\n"
-     << "set title '" << name << ": force against displacement" << error << "' noenhanced\n"
-     << "set xlabel 'displacement [mm]'\nset ylabel 'force [N]'\n"
-     << "plot "
-     << (force ? "'" + data +
-                     "' using 2:3 with points pt 7 ps 0.25 lc rgb '#888888' title 'measured', "
-               : "")
-     << "'" << data
-     << "' using 2:4 with points pt 7 ps 0.25 lc rgb '#d62728' title 'predicted (observer)'\n";
+  plot::Panel force_displacement{.x = {"displacement", "mm"}, .y = {"force", "N"}, .data = {data}};
+  force_displacement.series.push_back(
+      {"predicted (observer)", plot::column(2), plot::column(4), plot::points(plot::colour::kRed, 0.25)});
   if (force) {
-    gp << "set output '" << png("replay_residual.png") << "'\n"
-       << "set title '" << name << ": residual, measured - predicted" << error << "' noenhanced\n"
-       << "set xlabel 'time [s]'\nset ylabel 'residual [N]'\n"
-       << "plot '" << data
-       << "' using 1:5 with lines lw 1 lc rgb '#1f77b4' title 'measured - predicted'\n";
+    force_displacement.series.push_back(
+        {"measured", plot::column(2), plot::column(3), plot::points(plot::colour::kGrey, 0.25), plot::Layer::measured});
   }
-  gp << "set output '" << png("replay_current.png") << "'\n"
-     << "set title '" << name
-     << ": coil current of the run, and the command the controller would have given' noenhanced\n"
-     << "set xlabel 'time [s]'\nset ylabel 'current [A]'\n"
-     << "plot '" << data << "' using 1:6 with lines lw 1 title 'run (drives the observer)', '"
-     << data << "' using 1:7 with lines lw 1 title 'controller command'\n";
-  return run_gnuplot(gp.str());
+  std::vector<plot::Figure> figures;
+  figures.push_back({.output = png("replay_force_displacement.png"),
+                     .title = name + ": force against displacement" + error,
+                     .panels = {std::move(force_displacement)}});
+  if (force) {
+    figures.push_back({.output = png("replay_residual.png"),
+                       .title = name + ": residual, measured - predicted" + error,
+                       .panels = {{.x = {"time", "s"},
+                                   .y = {"residual", "N"},
+                                   .data = {data},
+                                   .series = {{"measured - predicted", plot::column(1), plot::column(5),
+                                               plot::lines(plot::colour::kBlue)}}}}});
+  }
+  figures.push_back({.output = png("replay_current.png"),
+                     .title = name + ": coil current of the run, and the command the controller would have given",
+                     .panels = {{.x = {"time", "s"},
+                                 .y = {"current", "A"},
+                                 .data = {data},
+                                 .series = {{"run (drives the observer)", plot::column(1), plot::column(6),
+                                             plot::lines(plot::colour::kBlue)},
+                                            {"controller command", plot::column(1), plot::column(7),
+                                             plot::lines(plot::colour::kGreen)}}}}});
+  return plot::draw(figures);
 }
 
 std::string write_replay_report(const ReplayContext& c, const Provenance& provenance, const std::string& directory) {
@@ -254,7 +258,9 @@ std::string write_replay_report(const ReplayContext& c, const Provenance& proven
   report.heading("Coil current");
   report.time_chart({"current", "the run's coil current (drives the observer) and the command the controller would give",
                      "time [s]", "current [A]", &time,
-                     {{"run", &t.coil_current, "#1f77b4"}, {"controller command", &t.command_current, "#2ca02c"}}, {}});
+                     {{"run", &t.coil_current, plot::colour::kBlue},
+                      {"controller command", &t.command_current, plot::colour::kGreen}},
+                     {}});
   report.heading("Damper parameters");
   const model::DamperModel& m = c.options.law.damper;
   report.parameters("From the config (a replay fits nothing, so no standard deviations)",

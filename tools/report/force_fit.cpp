@@ -219,16 +219,19 @@ std::string per_run_text(const ForceFitFigures& f) {
 
 namespace {
 
+// A correlation's whole range, asked for: its scale read at a glance, and |r| <= 1 cannot be cut.
+constexpr plot::Range kCorrelationRange{-1.0, 1.0};
+
 void plot_autocorrelation(HtmlReport& report, const std::vector<double>& r, double bound, double lag_step,
-                          const std::string& lag_label, const std::string& caption) {
+                          const plot::Axis& lag_axis, const std::string& caption) {
   std::vector<double> lag(r.size()), upper(r.size(), bound), lower(r.size(), -bound);
   for (std::size_t k = 0; k < r.size(); ++k) lag[k] = static_cast<double>(k) * lag_step;
   const std::string acf = report.data("autocorrelation", {"lag", "r", "upper_95", "lower_95"}, {&lag, &r, &upper, &lower});
   report.plot("residual_autocorrelation", caption,
-              "set xlabel '" + lag_label + "'\nset ylabel 'autocorrelation [-]'\nset yrange [-1:1]\nplot '" + acf +
-                  "' using 1:2 with impulses lw 2 lc rgb '#1f77b4' title 'r(k)', '" + acf +
-                  "' using 1:3 with lines dt 2 lc rgb '#d62728' title '95 % bound', '" + acf +
-                  "' using 1:4 with lines dt 2 lc rgb '#d62728' notitle\n");
+              {.x = lag_axis, .y = {"autocorrelation", "-", kCorrelationRange}, .data = {acf},
+               .series = {{"r(k)", plot::column(1), plot::column(2), plot::impulses(plot::colour::kBlue)},
+                          {"95 % bound", plot::column(1), plot::column(3), plot::dashed(plot::colour::kRed)},
+                          {"", plot::column(1), plot::column(4), plot::dashed(plot::colour::kRed)}}});
 }
 
 }  // namespace
@@ -248,23 +251,23 @@ void add_input_correlation_plot(HtmlReport& report, const std::string& name, con
   std::vector<std::vector<double>> bounds;  // each input's own, +-
   bounds.reserve(4);
   std::vector<ReportFigure> rows;
-  std::string plot = "plot ";
-  const char* colours[] = {"#1f77b4", "#2ca02c"};
+  std::vector<plot::Series> series;
+  const char* colours[] = {plot::colour::kBlue, plot::colour::kGreen};
   for (std::size_t i = 0; i < f.inputs.size() && i < 2; ++i) {
     const InputCorrelation& c = f.inputs[i];
     if (c.r.size() != lag.size()) continue;
     names.push_back(c.input);
     columns.push_back(&c.r);
-    plot += format("'xcorr.dat' using 1:%zu with lines lw 2 lc rgb '%s' title '%s', ", columns.size(), colours[i], c.input.c_str());
+    series.push_back({c.input, plot::column(1), plot::column(static_cast<int>(columns.size())), plot::lines(colours[i], 2.0)});
     bounds.emplace_back(lag.size(), c.bound);
     bounds.emplace_back(lag.size(), -c.bound);
     names.push_back(c.input + "_upper_95");
     columns.push_back(&bounds[bounds.size() - 2]);
     names.push_back(c.input + "_lower_95");
     columns.push_back(&bounds.back());
-    plot += format("'xcorr.dat' using 1:%zu with lines dt 2 lc rgb '%s' title '%s 95 %% bound', '' using 1:%zu with lines dt 2 "
-                   "lc rgb '%s' notitle, ",
-                   columns.size() - 1, colours[i], c.input.c_str(), columns.size(), colours[i]);
+    const int upper = static_cast<int>(columns.size()) - 1;
+    series.push_back({c.input + " 95 % bound", plot::column(1), plot::column(upper), plot::dashed(colours[i])});
+    series.push_back({"", plot::column(1), plot::column(upper + 1), plot::dashed(colours[i])});
     const std::string key = "fit.input_xcorr." + std::to_string(i);
     rows.push_back({c.input + ": largest |r|", key + ".max_abs_r", c.max_abs_r, ""});
     rows.push_back({c.input + ": at lag", key + ".at_lag_s", c.at_lag_s, in_ms ? "s" : "samples"});
@@ -272,14 +275,15 @@ void add_input_correlation_plot(HtmlReport& report, const std::string& name, con
     rows.push_back({c.input + ": share of lags outside the bound", key + ".outside_fraction", c.outside, "(0 to 1)"});
   }
   report.figures("Residual against the inputs (as MATLAB's resid: cross-correlation, lag > 0 when the residual follows)", rows);
-  report.data("xcorr", names, columns);
-  plot.resize(plot.size() - 2);  // the last ", "
+  const std::string xcorr = report.data("xcorr", names, columns);
   report.plot("residual_input_correlation",
               format("%s: cross-correlation of the residual with the velocity and the displacement, each between its "
                      "95 %% bounds (dashed)",
                      name.c_str()),
-              format("set xlabel '%s'\nset ylabel 'cross-correlation [-]'\nset yrange [-1:1]\n", in_ms ? "lag [ms]" : "lag [samples]") +
-                  plot + "\n");
+              {.x = {"lag", in_ms ? "ms" : "samples"},
+               .y = {"cross-correlation", "-", kCorrelationRange},
+               .data = {xcorr},
+               .series = std::move(series)});
 }
 
 }  // namespace
@@ -295,23 +299,18 @@ std::vector<TimeMarker> run_markers(const std::vector<double>& time, const std::
   return out;
 }
 
-std::string run_boundaries(const std::vector<double>& time, const std::vector<std::size_t>& run_starts,
-                           const std::vector<std::string>& run_names) {
-  std::string out;
-  const std::vector<TimeMarker> markers = run_markers(time, run_starts, run_names);
-  for (std::size_t r = 0; r < markers.size(); ++r) {
-    const double at = markers[r].at;
-    if (r > 0) out += format("set arrow from %.9g, graph 0 to %.9g, graph 1 nohead dt 3 lc rgb '#888888'\n", at, at);
-    if (!markers[r].label.empty())
-      out += format("set label '%s' at %.9g, graph 0.97 left front font ',8' noenhanced\n", markers[r].label.c_str(), at);
-  }
+std::vector<plot::Marker> run_boundaries(const std::vector<double>& time, const std::vector<std::size_t>& run_starts,
+                                         const std::vector<std::string>& run_names) {
+  std::vector<plot::Marker> out;
+  for (const TimeMarker& m : run_markers(time, run_starts, run_names))
+    out.push_back({m.at, m.label, !out.empty()});  // the first run begins at the axis
   return out;
 }
 
 void add_autocorrelation_plot(HtmlReport& report, const std::vector<double>& residual, std::size_t lags,
-                              double lag_step, const std::string& lag_label, const std::string& caption) {
+                              double lag_step, const plot::Axis& lag_axis, const std::string& caption) {
   plot_autocorrelation(report, autocorrelation(residual, lags), autocorrelation_bound_95(residual.size()), lag_step,
-                       lag_label, caption);
+                       lag_axis, caption);
 }
 
 namespace {
@@ -359,32 +358,33 @@ ForceFitFigures add_force_fit(HtmlReport& report, const ForceFitTraces& t) {
   const std::string dat = report.data(
       "force", {"time_s", "displacement_mm", "velocity_mm_s", "measured_N", "predicted_N", "residual_N", "baseline_N", "set_aside_N"},
       {&t.time, &x_mm, &v_mm, &t.measured, &t.predicted, &residual, &baseline, &aside});
-  const std::string q = "'" + dat + "'";
-  // The baseline first and the measured last, so that the data is drawn over both models.
-  const auto overlay = [&](int x, const char* x_label, const char* style) {
-    std::string out = format("set xlabel '%s'\nset ylabel 'force [N]'\nplot ", x_label);
+  // The baseline under the final model, the measured over both, the samples set aside over it.
+  const auto overlay = [&](int x, plot::Axis x_axis) {
+    plot::Panel panel{.x = std::move(x_axis), .y = {"force", "N"}, .data = {dat}};
     if (!t.baseline.empty())
-      out += format("%s using %d:7 with %s lc rgb '#9ecae1' title '%s', ", q.c_str(), x, style, t.baseline_label.c_str());
-    out += format("%s using %d:5 with %s lc rgb '#d62728' title '%s', %s using %d:4 with %s lc rgb '#555555' title 'measured'",
-                  q.c_str(), x, style, t.predicted_label.c_str(), q.c_str(), x, style);
+      panel.series.push_back({t.baseline_label, plot::column(x), plot::column(7), plot::points(plot::colour::kLightBlue)});
+    panel.series.push_back({t.predicted_label, plot::column(x), plot::column(5), plot::points(plot::colour::kRed)});
+    panel.series.push_back({"measured", plot::column(x), plot::column(4), plot::points(plot::colour::kDarkGrey),
+                            plot::Layer::measured});
     if (!t.keep.empty())
-      out += format(", %s using %d:8 with points pt 6 ps 0.5 lc rgb '#ff7f0e' title 'set aside by screening'", q.c_str(), x);
-    return out + "\n";
+      panel.series.push_back({"set aside by screening", plot::column(x), plot::column(8), plot::rings(plot::colour::kOrange),
+                              plot::Layer::note});
+    return panel;
   };
   const bool several = t.run_starts.size() > 1;
   const char* time_label = several ? "time, each run after the one before [s]" : "time [s]";
   const std::vector<TimeMarker> markers = run_markers(t.time, t.run_starts, t.run_names);
   TimeChart force_chart{"force_time", format("%s: measured and predicted force against time, fit %.2f %%", t.name.c_str(), f.fit_percent),
                         time_label, "force [N]", &t.time, {}, markers};
-  if (!t.baseline.empty()) force_chart.series.push_back({t.baseline_label, &t.baseline, "#9ecae1"});
-  if (t.reference.size() == n) force_chart.series.push_back({t.reference_label, &t.reference, "#2ca02c"});
-  force_chart.series.push_back({t.predicted_label, &t.predicted, "#d62728"});
-  force_chart.series.push_back({"measured", &t.measured, "#555555"});  // on top: the data, not the model
-  if (!t.keep.empty()) force_chart.series.push_back({"set aside by screening", &aside, "#ff7f0e", 2.0, true});
+  if (!t.baseline.empty()) force_chart.series.push_back({t.baseline_label, &t.baseline, plot::colour::kLightBlue});
+  if (t.reference.size() == n) force_chart.series.push_back({t.reference_label, &t.reference, plot::colour::kGreen});
+  force_chart.series.push_back({t.predicted_label, &t.predicted, plot::colour::kRed});
+  force_chart.series.push_back({"measured", &t.measured, plot::colour::kDarkGrey});  // on top: the data, not the model
+  if (!t.keep.empty()) force_chart.series.push_back({"set aside by screening", &aside, plot::colour::kOrange, 2.0, true});
   report.time_chart(force_chart);
-  report.plot("force_displacement", t.name + ": force against displacement", overlay(2, "displacement [mm]", "points pt 7 ps 0.2"),
+  report.plot("force_displacement", t.name + ": force against displacement", overlay(2, {"displacement", "mm"}),
               HtmlReport::Drawing::raster);
-  report.plot("force_velocity", t.name + ": force against velocity", overlay(3, "velocity [mm/s]", "points pt 7 ps 0.2"),
+  report.plot("force_velocity", t.name + ": force against velocity", overlay(3, {"velocity", "mm/s"}),
               HtmlReport::Drawing::raster);
 
   report.heading("Residual");
@@ -394,18 +394,20 @@ ForceFitFigures add_force_fit(HtmlReport& report, const ForceFitTraces& t) {
                   {"95 % bound, 1.96/sqrt(N)", "fit.acf_bound", f.acf_bound, ""},
                   {"share of lags outside the bound", "fit.acf_outside_fraction", f.acf_outside, "(0 to 1)"}});
   report.time_chart({"residual_time", t.name + ": residual, measured - predicted, against time", time_label, "residual [N]",
-                     &t.time, {{"measured - predicted", &residual, "#1f77b4"}}, markers});
+                     &t.time, {{"measured - predicted", &residual, plot::colour::kBlue}}, markers});
   std::size_t pooled_samples = 0;
   const std::vector<double> r = pooled_autocorrelation(t, f.lags, pooled_samples);
   const bool in_ms = f.lag_step_s > 0.0;
   plot_autocorrelation(report, r, f.acf_bound, in_ms ? 1e3 * f.lag_step_s : 1.0,
-                       in_ms ? "lag [ms]" : "lag [samples, each run at its own rate]",
+                       {"lag", in_ms ? "ms" : "samples, each run at its own rate"},
                            format("%s: autocorrelation of the residual, 95 %% bounds +-%.3g (%.0f %% of lags outside)",
                                   t.name.c_str(), f.acf_bound, 100.0 * f.acf_outside));
   add_input_correlation_plot(report, t.name, f);
   report.plot("residual_velocity", t.name + ": residual against velocity (structure left in the model)",
-              "set xlabel 'velocity [mm/s]'\nset ylabel 'residual [N]'\nplot " + q +
-                  " using 3:6 with points pt 7 ps 0.2 lc rgb '#1f77b4' title 'measured - predicted'\n",
+              {.x = {"velocity", "mm/s"},
+               .y = {"residual", "N"},
+               .data = {dat},
+               .series = {{"measured - predicted", plot::column(3), plot::column(6), plot::points(plot::colour::kBlue)}}},
               HtmlReport::Drawing::raster);
   return f;
 }

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "tools/json.hpp"
+#include "tools/plot/figure.hpp"
 #include "tools/report/html_report.hpp"
 
 // The force-fit part of a report, shared by mrd-replay and mrd-residual: measured against
@@ -74,10 +75,11 @@ struct ForceFitFigures {
 // and reference_rms_N. The report's cells name them "fit.*".
 [[nodiscard]] Json force_fit_json(const ForceFitFigures& f);
 
-// gnuplot commands marking where each run after the first begins on a time axis (a dotted
-// line each, named while there are eight runs or fewer); none for one run.
-[[nodiscard]] std::string run_boundaries(const std::vector<double>& time, const std::vector<std::size_t>& run_starts,
-                                         const std::vector<std::string>& run_names);
+// Where each run begins on a time axis, for a plot: a dotted line at each after the first,
+// named while there are eight runs or fewer; none for one run.
+[[nodiscard]] std::vector<plot::Marker> run_boundaries(const std::vector<double>& time,
+                                                       const std::vector<std::size_t>& run_starts,
+                                                       const std::vector<std::string>& run_names);
 
 // The same boundaries for a time chart: where each run begins, named while there are eight or fewer.
 [[nodiscard]] std::vector<TimeMarker> run_markers(const std::vector<double>& time, const std::vector<std::size_t>& run_starts,
@@ -87,9 +89,9 @@ struct ForceFitFigures {
 [[nodiscard]] std::string per_run_text(const ForceFitFigures& f);
 
 // The plot "residual_autocorrelation": r(k) of `residual` for k = 0..lags as impulses, at lag
-// k * lag_step on an axis labelled `lag_label`, between the 95 % bounds +-1.96/sqrt(N).
+// k * lag_step on `lag_axis`, between the 95 % bounds +-1.96/sqrt(N).
 void add_autocorrelation_plot(HtmlReport& report, const std::vector<double>& residual, std::size_t lags,
-                              double lag_step, const std::string& lag_label, const std::string& caption);
+                              double lag_step, const plot::Axis& lag_axis, const std::string& caption);
 
 // Writes the section (figures table and six plots) into the report.
 ForceFitFigures add_force_fit(HtmlReport& report, const ForceFitTraces& t);

@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "common/cli/command_line.hpp"
-#include "tools/gnuplot.hpp"
+#include "tools/plot/gnuplot.hpp"
 #include "tools/report/sha256.hpp"
 #include "tools/text_format.hpp"
 
@@ -219,8 +219,8 @@ std::string HtmlReport::data(const std::string& name, const std::vector<std::str
   return file;
 }
 
-void HtmlReport::plot(const std::string& name, const std::string& caption, const std::string& body, Drawing drawing) {
-  plots_.emplace_back(pieces_.size(), Plot{name, caption, body, drawing});
+void HtmlReport::plot(const std::string& name, const std::string& caption, plot::Panel panel, Drawing drawing) {
+  plots_.emplace_back(pieces_.size(), Plot{name, caption, std::move(panel), drawing});
   pieces_.emplace_back();
 }
 
@@ -238,26 +238,20 @@ void HtmlReport::time_chart(const TimeChart& chart) {
 
 std::string HtmlReport::write() {
   if (!error_.empty()) return error_;
-  std::string load;
+  std::vector<std::string> scripts;
   for (const auto& [at, p] : plots_) {
     const fs::path gp = fs::path(directory_) / (p.name + ".gp");
+    const plot::Figure figure{.output = p.name + (p.drawing == Drawing::raster ? ".png" : ".svg"),
+                              .width = 860,
+                              .height = 440,
+                              .panels = {p.panel},
+                              .comment = p.caption + "\nredraw: gnuplot " + p.name + ".gp (in this directory)"};
     std::ofstream out(gp);
-    const bool png = p.drawing == Drawing::raster;
-    out << "# " << p.caption << "\n# redraw: gnuplot " << p.name << ".gp (in this directory)\n"
-        << (png ? "set terminal pngcairo noenhanced size 860,440 font 'Helvetica,10' background '#ffffff'\n"
-                : "set terminal svg noenhanced size 860,440 font 'Helvetica,12' background '#ffffff'\n")
-        << "set output '" << p.name << (png ? ".png" : ".svg") << "'\nset grid\nset key below horizontal noenhanced\n"
-        << p.body << (p.body.empty() || p.body.back() == '\n' ? "" : "\n") << "unset output\n";
+    out << plot::gnuplot_script(figure);
     if (!out) return "cannot write " + gp.string();
-    load += "reset\nload '" + p.name + ".gp'\n";
+    scripts.push_back(p.name);
   }
-  std::string why;
-  if (!plots_.empty()) {
-    std::string dir = fs::absolute(directory_).string();
-    std::string quoted;
-    for (const char c : dir) quoted += c == '\'' ? std::string("''") : std::string(1, c);
-    why = run_gnuplot("cd '" + quoted + "'\n" + load);
-  }
+  const std::string why = scripts.empty() ? std::string() : plot::draw_scripts(directory_, scripts);
   for (const auto& [at, p] : plots_) {
     std::string svg;
     if (p.drawing == Drawing::raster) {

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "tools/plot/figure.hpp"
 #include "tools/report/time_chart.hpp"
 
 // One self-contained report.html in a directory: headings, text, tables, zoomable time charts
@@ -60,10 +61,11 @@ class HtmlReport {
   // directory, for the plot bodies. A header line names the columns.
   std::string data(const std::string& name, const std::vector<std::string>& column_names,
                    const std::vector<const std::vector<double>*>& columns, std::size_t max_rows = 20000);
-  // A plot: `body` is gnuplot after the terminal and output (labels, `plot '<dat>' using ...`),
-  // with data file names relative to the directory. Scatter plots of long runs are drawn as PNG.
+  // A plot of one panel (tools/plot: the house style), reading a data file of data() by the name
+  // it returned. Its caption is the HTML's; the panel needs no title. Scatter plots of long runs
+  // are drawn as PNG.
   enum class Drawing { vector, raster };
-  void plot(const std::string& name, const std::string& caption, const std::string& body,
+  void plot(const std::string& name, const std::string& caption, plot::Panel panel,
             Drawing drawing = Drawing::vector);
   // An interactive chart against time (drag to zoom; every chart of the report zooms together).
   void time_chart(const TimeChart& chart);
@@ -76,7 +78,8 @@ class HtmlReport {
 
  private:
   struct Plot {
-    std::string name, caption, body;
+    std::string name, caption;
+    plot::Panel panel;
     Drawing drawing = Drawing::vector;
   };
   std::string title_, directory_, error_;

@@ -5,12 +5,11 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <sstream>
 #include <stdexcept>
 #include <toml++/toml.h>
 
 #include "config/effects_config.hpp"
-#include "tools/gnuplot.hpp"
+#include "tools/plot/gnuplot.hpp"
 #include "tools/json.hpp"
 #include "tools/report/force_fit.hpp"
 #include "tools/residual/candidate_effects.hpp"
@@ -311,34 +310,49 @@ std::string plot_residual(const FitSeries& s, const ResidualResult& r, const std
   }
   const std::string figures = format("RMS %.4g N -> %.4g N (range %.4g N)", r.before.all, r.after.all, range_of(s.force));
   auto png = [&](const char* file) { return (fs::path(directory) / file).string(); };
-  const std::string boundaries = run_boundaries(time, s.run_starts, s.run_names);
-  std::ostringstream gp;
-  gp << "set terminal pngcairo noenhanced size 900,650\nset grid\nset key below horizontal\n"
-     << "set output '" << png("residual_force_displacement.png") << "'\n"
-     << "set title '" << name << ": force against displacement, " << figures << "' noenhanced\n"
-     << "set xlabel 'displacement [mm]'\nset ylabel 'force [N]'\n"
-     << "plot '" << data << "' using 2:4 with points pt 7 ps 0.2 lc rgb '#888888' title 'measured', '" << data
-     << "' using 2:5 with points pt 7 ps 0.2 lc rgb '#1f77b4' title 'base model', '" << data
-     << "' using 2:6 with points pt 7 ps 0.2 lc rgb '#d62728' title '" << after << "', '" << data
-     << "' using 2:($9 > 0 ? $4 : 1/0) with points pt 6 ps 0.5 lc rgb '#ff7f0e' title 'set aside by the screening'\n"
-     << "set output '" << png("residual_time.png") << "'\n"
-     << "set title '" << name << ": residual against time, " << figures << "' noenhanced\n"
-     << boundaries
-     << "set xlabel '" << (s.run_starts.size() > 1 ? "time, each run after the one before [s]" : "time [s]")
-     << "'\nset ylabel 'measured - predicted [N]'\n"
-     << "plot '" << data << "' using 1:7 with lines lw 1 lc rgb '#1f77b4' title 'base model', '" << data
-     << "' using 1:8 with lines lw 1 lc rgb '#d62728' title '" << after << "', '" << data
-     << "' using 1:($9 > 0 ? $8 : 1/0) with points pt 6 ps 0.5 lc rgb '#ff7f0e' title 'set aside by the screening'\n"
-     << "unset arrow\nunset label\nset terminal pngcairo noenhanced size 1200,500\nset output '" << png("residual_phase.png") << "'\n"
-     << "set multiplot layout 1,2 title '" << name << ": residual against the motion' noenhanced\n"
-     << "set title 'against displacement'\nset xlabel 'displacement [mm]'\n"
-     << "plot '" << data << "' using 2:7 with points pt 7 ps 0.2 lc rgb '#1f77b4' title 'base', '" << data
-     << "' using 2:8 with points pt 7 ps 0.2 lc rgb '#d62728' title 'after'\n"
-     << "set title 'against velocity'\nset xlabel 'velocity [mm/s]'\n"
-     << "plot '" << data << "' using 3:7 with points pt 7 ps 0.2 lc rgb '#1f77b4' title 'base', '" << data
-     << "' using 3:8 with points pt 7 ps 0.2 lc rgb '#d62728' title 'after'\n"
-     << "unset multiplot\n";
-  return run_gnuplot(gp.str());
+  const plot::DataFile file{data};
+  const plot::Axis residual_axis{"measured - predicted", "N"};
+  // residual.dat: time, displacement, velocity, measured, base, after, their residuals, set aside (1).
+  const auto set_aside = [](int x, int y) {
+    return plot::Series{"set aside by the screening", plot::column(x), plot::column(y).where(9, 0.5),
+                        plot::rings(plot::colour::kOrange), plot::Layer::note};
+  };
+  const auto against = [&](plot::Axis x_axis, int x) {
+    return plot::Panel{.title = "against " + x_axis.label,
+                       .x = std::move(x_axis),
+                       .y = residual_axis,
+                       .data = file,
+                       .series = {{"base", plot::column(x), plot::column(7), plot::points(plot::colour::kBlue)},
+                                  {"after", plot::column(x), plot::column(8), plot::points(plot::colour::kRed)}}};
+  };
+  const plot::Figure force_displacement{
+      .output = png("residual_force_displacement.png"),
+      .title = name + ": force against displacement, " + figures,
+      .panels = {{.x = {"displacement", "mm"},
+                  .y = {"force", "N"},
+                  .data = file,
+                  .series = {{"measured", plot::column(2), plot::column(4), plot::points(plot::colour::kGrey),
+                              plot::Layer::measured},
+                             {"base model", plot::column(2), plot::column(5), plot::points(plot::colour::kBlue)},
+                             {after, plot::column(2), plot::column(6), plot::points(plot::colour::kRed)},
+                             set_aside(2, 4)}}}};
+  const plot::Figure residual_time{
+      .output = png("residual_time.png"),
+      .title = name + ": residual against time, " + figures,
+      .panels = {{.x = {s.run_starts.size() > 1 ? "time, each run after the one before" : "time", "s"},
+                  .y = residual_axis,
+                  .data = file,
+                  .series = {{"base model", plot::column(1), plot::column(7), plot::lines(plot::colour::kBlue)},
+                             {after, plot::column(1), plot::column(8), plot::lines(plot::colour::kRed)},
+                             set_aside(1, 8)},
+                  .markers = run_boundaries(time, s.run_starts, s.run_names)}}};
+  const plot::Figure phase{.output = png("residual_phase.png"),
+                           .title = name + ": residual against the motion",
+                           .width = 1200,
+                           .height = 500,
+                           .columns = 2,
+                           .panels = {against({"displacement", "mm"}, 2), against({"velocity", "mm/s"}, 3)}};
+  return plot::draw({force_displacement, residual_time, phase});
 }
 
 ForceFitTraces residual_traces(const std::vector<record::RecordedRun>& runs, const FitSeries& s,

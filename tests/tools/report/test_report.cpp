@@ -280,9 +280,11 @@ TEST(ReportHtml, InlinesOneImagePerPlotAndKeepsTheScripts) {
   report.figures("figures", {{"fit", "fit.fit_percent", 97.5, "%"}, {"not finite", "x", NAN, ""}});
   const std::vector<double> t = {0.0, 1.0, 2.0}, f = {1.0, 4.0, 9.0};
   const std::string dat = report.data("series", {"t", "f"}, {&t, &f});
-  report.plot("one", "first", "plot '" + dat + "' using 1:2 with lines title 'f'");
-  report.plot("two", "second", "plot '" + dat + "' using 2:1 with points title 'g'");
-  report.plot("three", "third", "plot '" + dat + "' using 2:1 with points title 'h'", HtmlReport::Drawing::raster);
+  namespace plot = mrd::tools::plot;
+  report.plot("one", "first", {.data = {dat}, .series = {{"f", plot::column(1), plot::column(2)}}});
+  report.plot("two", "second", {.data = {dat}, .series = {{"g", plot::column(2), plot::column(1), plot::points()}}});
+  report.plot("three", "third", {.data = {dat}, .series = {{"h", plot::column(2), plot::column(1), plot::points()}}},
+              HtmlReport::Drawing::raster);
   ASSERT_EQ(report.write(), "");
   const std::string html = report_slurp(dir / "report.html");
   std::size_t svgs = 0;
@@ -295,7 +297,9 @@ TEST(ReportHtml, InlinesOneImagePerPlotAndKeepsTheScripts) {
   EXPECT_NE(html.find("a &lt;test&gt; &amp; &quot;quotes&quot;"), std::string::npos);
   EXPECT_NE(html.find("data-key=\"fit.fit_percent\" data-value=\"97.5\""), std::string::npos);
   EXPECT_NE(html.find("data-key=\"x\" data-value=\"nan\""), std::string::npos);
-  EXPECT_TRUE(std::filesystem::exists(dir / "one.gp"));
+  // Each script redraws its figure where it lies, its caption at the top.
+  EXPECT_EQ(report_slurp(dir / "one.gp").rfind("# first\n# redraw: gnuplot one.gp (in this directory)\n", 0), 0u);
+  EXPECT_NE(report_slurp(dir / "one.gp").find("set output 'one.svg'\n"), std::string::npos);
   EXPECT_TRUE(std::filesystem::exists(dir / "two.gp"));
   EXPECT_NE(report_slurp(dir / "series.dat").find("2 9"), std::string::npos);
 }
