@@ -73,8 +73,19 @@ int main(int argc, char** argv) {
                "where the least-squares base leaves a fault no screening rule names, identify the base again "
                "under a robust loss, and run the candidates' fits and judgements under it (docs/CLOSING-THE-LOOP.md, \"Robust fit\")");
   app.add_option("--threshold", options.minimum_reduction,
-                 "fraction by which an effect must lower the validation error to be accepted")
+                 "margin (a fraction of the validation RMS) by which one explanation must beat another to tell them "
+                 "apart: ambiguity, the library's terms against an effect, the discovery's terms")
       ->check(mrd::cli::finite_in(0.0, 0.9))->capture_default_str();
+  app.add_option("--claim-confidence", options.claim.confidence,
+                 "family-wise confidence that an accepted effect's fall of the held-out error is no chance "
+                 "(paired blocks, over a round's candidates)")
+      ->check(mrd::cli::finite_in(0.5, 0.999999))->capture_default_str();
+  app.add_option("--claim-share", options.claim.excess_share,
+                 "share of the held-out mean square above the noise floor an effect must remove to be accepted")
+      ->check(mrd::cli::finite_in(0.0, 1.0))->capture_default_str();
+  app.add_option("--claim-noise-share", options.claim.noise_share,
+                 "least fall of the held-out mean square an effect must show, as a share of the noise floor's variance")
+      ->check(mrd::cli::finite_in(0.0, 100.0))->capture_default_str();
   app.add_option("--velocity-cutoff", series_options.velocity_cutoff,
                  "[Hz] zero-phase velocity filter, for runs without a velocity column (0: from the motion's spectrum)")
       ->check(mrd::cli::finite_in(0.0, 1e6))->capture_default_str();

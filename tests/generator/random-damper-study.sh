@@ -13,7 +13,8 @@
 # same away from the run's first and last 0.5 s (from the residual trace --plot writes).
 # 8 s at 1 kHz per run. Needs python3 with numpy.
 # Usage: tests/generator/random-damper-study.sh [BUILD_DIR] [OUT_DIR] [N_CLEAN] [N_SINGLE] [N_PAIRS]
-#   defaults: build/release out/random-damper 12 12 0; MRD_THREADS sets mrd-residual --threads.
+#   defaults: build/release out/random-damper 12 12 0; MRD_THREADS sets mrd-residual --threads,
+#   MRD_RESIDUAL_ARGS adds options (e.g. "--robust-fit").
 set -uo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 build=${1:-build/release}
@@ -25,6 +26,7 @@ python=${MRD_PYTHON:-/usr/bin/python3}
 residual="$build/tools/mrd-residual"
 threads=()
 [[ -n ${MRD_THREADS:-} ]] && threads=(--threads "$MRD_THREADS")
+read -r -a extra <<< "${MRD_RESIDUAL_ARGS:-}"
 if [[ ! -x $residual ]]; then
   echo "random-damper-study: no $residual (build mrd-residual first)" >&2
   exit 2
@@ -43,7 +45,7 @@ run() {  # KIND NAME SEED PROFILE EFFECT...   (KIND: clean, single or pair)
       "${args[@]}" --out "$out/$name.csv" --manifest "$out/$name.truth.json" 2> "$out/$name.gen.err"; then
     status=gen
   else
-    "$residual" "$out/$name.csv" --quiet "${threads[@]}" --json "$out/$name.json" --plot "$out/$name.plot" \
+    "$residual" "$out/$name.csv" --quiet "${threads[@]}" "${extra[@]}" --json "$out/$name.json" --plot "$out/$name.plot" \
       > "$out/$name.txt" 2> "$out/$name.err" || status=$?
   fi
   "$python" - "$out" "$name" "$kind" "$seed" "$profile" "$status" "$rows" "$@" <<'PY'

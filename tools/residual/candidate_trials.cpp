@@ -17,7 +17,10 @@ Round try_candidates(Search& s, const model::DamperModel& current, double curren
   Round round;
   round.trials.resize(candidates.size());
   round.fits.resize(candidates.size());
+  round.predicted.resize(candidates.size());
   round.null_validation = current_validation;
+  round.current_predicted = s.predicted(current);
+  round.null_predicted = round.current_predicted;
   const std::uint64_t round_seed = s.seed;
   s.seed += candidates.size();
   // The round model's B: every candidate that leaves B alone shares it during its swarm.
@@ -49,6 +52,7 @@ Round try_candidates(Search& s, const model::DamperModel& current, double curren
       s.evaluations += spent;
       predict_force(refined.model, s.fit_series, force);
       round.null_validation = residual_rms(s.fit_series, force).validation;
+      round.null_predicted = force;
       report("no effect");
       return;
     }
@@ -70,6 +74,7 @@ Round try_candidates(Search& s, const model::DamperModel& current, double curren
     trial.round = round_number;
     predict_force(fit.model, s.fit_series, force);
     trial.validation_rms = residual_rms(s.fit_series, force).validation;
+    round.predicted[k] = force;
     s.evaluations += spent;
     predict_force(fit.model, s.full, force);
     const ResidualRms on_full = residual_rms(s.full, force);
@@ -86,16 +91,22 @@ Round try_candidates(Search& s, const model::DamperModel& current, double curren
   return round;
 }
 
-std::size_t judge_round(Round& round, double current_validation, double threshold) {
-  const double baseline = std::min(current_validation, round.null_validation);
-  for (CandidateTrial& trial : round.trials) {
+std::size_t judge_round(const Search& s, Round& round, double current_validation) {
+  const bool null_better = round.null_validation < current_validation;
+  const double baseline = null_better ? round.null_validation : current_validation;
+  const std::vector<double>& baseline_force = null_better ? round.null_predicted : round.current_predicted;
+  const int comparisons = static_cast<int>(round.trials.size());
+  for (std::size_t k = 0; k < round.trials.size(); ++k) {
+    CandidateTrial& trial = round.trials[k];
     trial.validation_before = baseline;
-    const double reduction = 1.0 - trial.validation_rms / std::max(baseline, 1e-300);
-    if (trial.verdict == TrialVerdict::kUndecided && reduction < threshold) {
-      trial.verdict = TrialVerdict::kBelowThreshold;
-      trial.explanation = format("validation RMS falls %.1f%%, below the %.0f%% threshold", 100.0 * reduction,
-                                 100.0 * threshold);
-    }
+    trial.evidence = s.weigh(baseline_force, round.predicted[k], comparisons);
+    if (trial.verdict != TrialVerdict::kUndecided || trial.evidence.passes()) continue;
+    trial.verdict = TrialVerdict::kBelowThreshold;
+    const char* why = !trial.evidence.weighable()     ? "too few held-out pieces to weigh"
+                      : !trial.evidence.significant() ? "not significant"
+                                                      : "too small against the noise and the model's form";
+    trial.explanation = format("%s: validation RMS %.4g -> %.4g N; %s", why, baseline, trial.validation_rms,
+                               trial.evidence.describe().c_str());
   }
   std::size_t best = round.trials.size();
   for (std::size_t i = 0; i < round.trials.size(); ++i) {
@@ -105,7 +116,8 @@ std::size_t judge_round(Round& round, double current_validation, double threshol
   if (best == round.trials.size()) return best;
   CandidateTrial& winner = round.trials[best];
   winner.verdict = TrialVerdict::kAccepted;
-  winner.explanation = format("accepted: validation RMS %.4g -> %.4g N", winner.validation_before, winner.validation_rms);
+  winner.explanation = format("accepted: validation RMS %.4g -> %.4g N; %s", winner.validation_before,
+                              winner.validation_rms, winner.evidence.describe().c_str());
   for (CandidateTrial& trial : round.trials) {
     if (trial.verdict != TrialVerdict::kUndecided) continue;
     trial.verdict = TrialVerdict::kOutperformed;

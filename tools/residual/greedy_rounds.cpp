@@ -49,7 +49,7 @@ AcceptedSet greedy_rounds(Search& s, const model::DamperModel& base, ResidualRes
   set.validation = s.validation_rms(set.model);
   for (int round_number = 1; !candidates.empty(); ++round_number) {
     Round round = try_candidates(s, set.model, set.validation, candidates, round_number);
-    const std::size_t best = judge_round(round, set.validation, s.options.minimum_reduction);
+    const std::size_t best = judge_round(s, round, set.validation);
     if (best < round.trials.size()) {
       Effects alike = ambiguous_with_winner(round, candidates, best, s.options.minimum_reduction);
       Effects rivals;

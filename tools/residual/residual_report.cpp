@@ -94,8 +94,8 @@ std::string residual_summary(const std::vector<record::RecordedRun>& runs, const
   out += "base model (J-A + Bingham, lumped):\n";
   for (const auto& line : r.base_parameters) out += "  " + line + "\n";
   out += screening_summary(r);
-  out += format("before: RMS %.4g N, max %.4g N (validation blocks %.4g N)\n", r.before.all, r.before.max,
-                r.before.validation);
+  out += format("before: RMS %.4g N, max %.4g N (validation blocks %.4g N); white-noise floor %.4g N\n", r.before.all,
+                r.before.max, r.before.validation, r.noise_floor);
   out += "  residual: " + describe(r.structure_before) + "\n";
   int round = 0;
   for (const CandidateTrial& t : r.trials) {
@@ -163,7 +163,18 @@ std::string residual_json(const ResidualResult& r, const ForceFitFigures* fit) {
     candidates.push_back({{"effect", t->effect},
                           {"rms_after_N", t->rms_after},
                           {"validation_rms_N", t->validation_rms},
-                          {"accepted", t->accepted()}});
+                          {"accepted", t->accepted()},
+                          {"evidence",
+                           {{"pieces", t->evidence.pieces},
+                            {"mean_square_fall_N2", t->evidence.reduction},
+                            {"fall_required_N2", t->evidence.required},
+                            {"standard_error_N2", t->evidence.standard_error},
+                            {"t", t->evidence.t},
+                            {"t_required", t->evidence.t_required},
+                            {"z", t->evidence.z},
+                            {"z_required", t->evidence.z_required},
+                            {"significant", t->evidence.significant()},
+                            {"material", t->evidence.material()}}}});
   }
   Json discovered = Json::array();
   for (const DiscoveredTerm& t : r.discovered) {
@@ -206,6 +217,7 @@ std::string residual_json(const ResidualResult& r, const ForceFitFigures* fit) {
   }
   Json out = {{"samples", r.samples},
                     {"rms_before_N", r.before.all},
+                    {"noise_floor_N", r.noise_floor},
                     {"fit_before_percent", r.fit_before_percent},
                     {"fit_after_percent", r.fit_after_percent},
                     {"parameters", parameters},
@@ -449,8 +461,9 @@ std::string write_residual_report(const std::vector<record::RecordedRun>& runs, 
                       format("%.6g", t->validation_rms), format("%.6g", t->rms_after), t->accepted() ? "accepted" : "rejected",
                       t->explanation});
   }
-  report.table(format("Candidates (each at its last round; accepted when the validation RMS falls by %.0f %% or more)",
-                      100.0 * kMinimumValidationReduction),
+  report.table(format("Candidates (each at its last round; accepted when the paired held-out blocks show the fall "
+                      "significant and at least a share of what the model leaves above the noise floor of %.4g N)",
+                      r.noise_floor),
                {"effect", "round", "validation before [N]", "validation with it [N]", "whole run [N]", "verdict", "why"},
                trials);
   std::vector<std::vector<std::string>> terms;

@@ -7,6 +7,7 @@
 
 #include "model/damper_model.hpp"
 #include "tools/progress.hpp"
+#include "tools/residual/claim_evidence.hpp"
 #include "tools/residual/model_fit.hpp"
 #include "tools/residual/model_uncertainty.hpp"
 #include "tools/residual/residual_structure.hpp"
@@ -18,8 +19,9 @@
 // its result; what the search's steps and the reports share.
 namespace mrd::tools {
 
-// The documented acceptance threshold: an effect is accepted only when, fitted on the fitting
-// blocks, it lowers the RMS error on the validation blocks by at least this fraction.
+// The documented margin by which one explanation must beat another to tell them apart
+// (ambiguity, the library's terms against an effect, the discovery's terms): a fraction of the
+// validation RMS. An effect's acceptance is the claim criterion's (claim_evidence.hpp).
 inline constexpr double kMinimumValidationReduction = 0.10;
 
 struct ResidualOptions {
@@ -28,6 +30,7 @@ struct ResidualOptions {
   model::DamperModel start;
   std::vector<std::string> candidates;  // default: every named candidate effect
   double minimum_reduction = kMinimumValidationReduction;
+  ClaimCriterion claim;  // what an effect must show to be accepted or to stay in the set
   // The fits run on every k-th sample of the series, at most this many samples (never below
   // min_fit_rate); every reported error is evaluated on the full series.
   std::size_t max_fit_samples = 100000;
@@ -53,9 +56,9 @@ struct ResidualOptions {
 enum class TrialVerdict {
   kUndecided,           // not yet judged (no trial of a result is left so)
   kNotPhysical,         // its fitted parameters are implausible
-  kBelowThreshold,      // lowers the validation error by less than the threshold
-  kOutperformed,        // passes the threshold, but the accepted one lowers the error more
-  kAmbiguous,           // passes, within the threshold of the accepted one
+  kBelowThreshold,      // fails the claim criterion: not significant, or too small a share
+  kOutperformed,        // passes the criterion, but the accepted one lowers the error more
+  kAmbiguous,           // passes, within the margin (minimum_reduction) of the accepted one
   kAccepted,            // the round's best
   kRevisedOut,          // accepted, then dropped or swapped out by the set revision
   kAcceptedInRevision,  // swapped in by the set revision
@@ -69,6 +72,7 @@ struct CandidateTrial {
   double rms_after = 0.0;          // on the whole run, with this effect added [N]
   double max_after = 0.0;          // [N]
   TrialVerdict verdict = TrialVerdict::kUndecided;
+  ClaimEvidence evidence;  // against the round's model, on the paired validation blocks
   std::string explanation;  // the verdict in words, with its figures
   std::vector<std::pair<std::string, double>> parameters;
 
@@ -99,6 +103,7 @@ struct ResidualResult {
   model::DamperModel base;
   model::DamperModel final_model;
   ResidualRms before;  // base model, whole run
+  double noise_floor = 0.0;  // [N] of the base's residual: what the claims are weighed against
   ResidualRms after;   // with the accepted effects (the base when none)
   // NRMSE fit [%] of the base and the final model over the kept samples (nrmse_fit_percent).
   double fit_before_percent = 0.0;

@@ -10,4 +10,10 @@ double Search::validation_rms(const model::DamperModel& m) const {
   return residual_rms(fit_series, force).validation;
 }
 
+std::vector<double> Search::predicted(const model::DamperModel& m) const {
+  std::vector<double> force;
+  predict_force(m, fit_series, force);
+  return force;
+}
+
 }  // namespace mrd::tools::search

@@ -9,6 +9,7 @@
 #include "model/effects/effect_set.hpp"
 #include "tools/optimisation/worker_pool.hpp"
 #include "tools/residual/candidate_effects.hpp"
+#include "tools/residual/claim_evidence.hpp"
 #include "tools/residual/fit_series.hpp"
 #include "tools/residual/residual_result.hpp"
 
@@ -27,6 +28,7 @@ struct Search {
         fit_series(decimate(full, decimation_factor(full, opts.max_fit_samples), opts.min_fit_rate)),
         swarm_series(run_openings(fit_series, opts.max_swarm_samples)),
         scales(series_scales(fit_series)),
+        blocks(validation_blocks(fit_series)),
         pool(opts.threads),
         seed(opts.seed) {}
 
@@ -35,12 +37,24 @@ struct Search {
   FitSeries fit_series;    // what the fits run on; its loss is least squares unless --robust-fit
   FitSeries swarm_series;  // the runs' openings: where the swarms that move B explore
   const SeriesScales scales;
+  const ValidationBlocks blocks;  // the fitting series' held-out pieces, for the claims
+  // [N] the load cell's white noise as the base model's residual shows it: what a claim's
+  // materiality is measured against. Set once the base is identified.
+  double noise_floor = 0.0;
   WorkerPool pool;
   std::uint64_t seed;
   std::atomic<std::int64_t> evaluations{0};
 
   // The model's RMS error on the validation blocks of the fitting series [N].
   [[nodiscard]] double validation_rms(const model::DamperModel& m) const;
+  // The model's force on the fitting series.
+  [[nodiscard]] std::vector<double> predicted(const model::DamperModel& m) const;
+  // Whether the model predicting `richer` has earned its claim over the one predicting `simpler`
+  // (on the fitting series), among `comparisons`.
+  [[nodiscard]] ClaimEvidence weigh(const std::vector<double>& simpler, const std::vector<double>& richer,
+                                    int comparisons) const {
+    return weigh_claim(fit_series, blocks, simpler, richer, noise_floor, comparisons, options.claim);
+  }
 };
 
 // The Bingham damper of the model's geometry and fluid: its viscous coefficient, and what the

@@ -30,7 +30,6 @@ Reduced without_effect(Search& s, const model::DamperModel& current, const Effec
 }
 
 void revise_set(Search& s, AcceptedSet& set, ResidualResult& result) {
-  const double threshold = s.options.minimum_reduction;
   for (std::size_t k = 0; set.effects.size() >= 2 && k < set.effects.size(); ++k) {
     if (set.rivals[k].empty()) continue;
     const model::EffectInfo* held = set.effects[k];
@@ -52,25 +51,27 @@ void revise_set(Search& s, AcceptedSet& set, ResidualResult& result) {
     set.model = polish_accepted(s, round.fits[best].model, set.effects, set.validation);
   }
   while (set.effects.size() >= 2) {
+    // An effect stays while the set with it still earns the claim over the set without it.
     std::size_t weakest = set.effects.size();
-    double weakest_cost = threshold;
+    ClaimEvidence weakest_evidence;
     std::vector<Reduced> rests;
+    const std::vector<double> with_all = s.predicted(set.model);
+    const int comparisons = static_cast<int>(set.effects.size());
     for (std::size_t k = 0; k < set.effects.size(); ++k) {
       rests.push_back(without_effect(s, set.model, set.effects, set.effects[k]));
-      const double cost = 1.0 - set.validation / std::max(rests.back().validation, 1e-300);
-      if (cost < weakest_cost) {
-        weakest = k;
-        weakest_cost = cost;
-      }
+      const ClaimEvidence evidence = s.weigh(s.predicted(rests.back().model), with_all, comparisons);
+      if (evidence.passes() || (weakest < set.effects.size() && evidence.margin() >= weakest_evidence.margin())) continue;
+      weakest = k;
+      weakest_evidence = evidence;
     }
     if (weakest == set.effects.size()) {
       set.without = std::move(rests);
       break;
     }
     Reduced& weakest_rest = rests[weakest];
-    result.revisions.push_back(format("dropped %s: without it the validation RMS rises only %.1f%% (%.4g -> %.4g N)",
-                                      std::string(set.effects[weakest]->name).c_str(), 100.0 * weakest_cost,
-                                      set.validation, weakest_rest.validation));
+    result.revisions.push_back(format("dropped %s: without it the validation RMS is %.4g N against %.4g N; %s",
+                                      std::string(set.effects[weakest]->name).c_str(), weakest_rest.validation,
+                                      set.validation, weakest_evidence.describe().c_str()));
     set.effects.erase(set.effects.begin() + static_cast<std::ptrdiff_t>(weakest));
     set.rivals.erase(set.rivals.begin() + static_cast<std::ptrdiff_t>(weakest));
     set.model = std::move(weakest_rest.model);

@@ -12,8 +12,9 @@ Reduced without_effect(Search& s, const model::DamperModel& current, const Effec
                        const model::EffectInfo* dropped);
 
 // Step 6: with two or more accepted, each is reconsidered beside the others: it is swapped for a
-// candidate that passed in its round when that one now validates better, and dropped when
-// removing it costs less than the threshold. Each swap and drop goes to result.revisions.
+// candidate that passed in its round when that one now validates better, and dropped when the
+// set no longer earns the claim criterion over the set without it. Each swap and drop goes to
+// result.revisions.
 void revise_set(Search& s, AcceptedSet& set, ResidualResult& result);
 
 // The trials' verdicts follow the revised set (result.accepted): a dropped or swapped-out

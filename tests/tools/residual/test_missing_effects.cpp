@@ -90,11 +90,12 @@ class ResidualProgressRecorder final : public mrd::tools::ProgressSink {
 
 }  // namespace
 
-// The threshold guards acceptance: the same small gas spring is accepted under a threshold below
-// what it gains and rejected under one above it, with the verdict saying by how much it fell.
+// The claim criterion guards acceptance: the same small gas spring is accepted by default, with
+// its t statistic past the one required, and rejected as too small when asked for twice the fall
+// of the held-out mean square it shows, the verdict saying why.
 // The lenient run's progress: the base fit, then round 1's candidate and null refinement, each
 // once, with the round model's validation error.
-TEST(MissingEffects, ACandidateBelowTheThresholdIsRejected) {
+TEST(MissingEffects, ACandidateBelowTheClaimCriterionIsRejected) {
   const mrd::record::RecordedRun run =
       residual_testing::simulated_recorded_run(RunProfile::kTelegraph, "1kN", {{"gas_spring", 0.3}}, 4.0);
   ResidualOptions options;
@@ -119,13 +120,43 @@ TEST(MissingEffects, ACandidateBelowTheThresholdIsRejected) {
   }
   std::ranges::sort(round_one);
   EXPECT_EQ(round_one, (std::vector<std::string>{"gas_spring", "no effect"}));
-  const double gain = 1.0 - trial.validation_rms / trial.validation_before;
-  ASSERT_GT(gain, 0.15);
-  options.minimum_reduction = gain + 0.05;
+  ASSERT_TRUE(trial.evidence.passes());
+  EXPECT_GT(trial.evidence.t, trial.evidence.t_required);
+  // Asked for twice the fall it showed, against the noise's variance: refused as too small.
+  const double floor = lenient.noise_floor;
+  ASSERT_GT(floor, 0.0);
+  options.claim.noise_share = 2.0 * trial.evidence.reduction / (floor * floor);
   const ResidualResult strict = find_missing_effects(series, options);
   EXPECT_TRUE(strict.accepted.empty()) << residual_summary({run}, strict);
   EXPECT_EQ(strict.trials.front().verdict, TrialVerdict::kBelowThreshold);
-  EXPECT_NE(strict.trials.front().explanation.find("below the"), std::string::npos) << strict.trials.front().explanation;
+  EXPECT_TRUE(strict.trials.front().evidence.significant());
+  EXPECT_NE(strict.trials.front().explanation.find("too small"), std::string::npos) << strict.trials.front().explanation;
+}
+
+// At the noise floor an effect must be worth a quarter of the noise's variance: on the same
+// 1 kN telegraph run a gas spring worth about 0.15 sigma^2 is not named (significant, not
+// material), one worth about 0.32 sigma^2 is, and that fit ends at the noise.
+TEST(MissingEffects, AtTheNoiseFloorAnEffectNeedsAQuarterOfTheNoisesVariance) {
+  const auto analysed = [](double scale) {
+    const mrd::record::RecordedRun run =
+        residual_testing::simulated_recorded_run(RunProfile::kTelegraph, "1kN", {{"gas_spring", scale}}, 4.0);
+    ResidualOptions options;
+    options.threads = 2;
+    options.candidates = {"gas_spring"};
+    return find_missing_effects(make_fit_series({run}, {}), options);
+  };
+  const ResidualResult small = analysed(0.01);
+  ASSERT_EQ(small.trials.size(), 1u);
+  const ClaimEvidence& weak = small.trials.front().evidence;
+  const double variance = small.noise_floor * small.noise_floor;
+  EXPECT_TRUE(small.accepted.empty()) << weak.describe();
+  EXPECT_TRUE(weak.significant()) << weak.describe();
+  EXPECT_LT(weak.reduction, 0.25 * variance);
+  EXPECT_GT(weak.reduction, 0.1 * variance);
+  const ResidualResult larger = analysed(0.015);
+  ASSERT_EQ(larger.accepted, std::vector<std::string>{"gas_spring"}) << larger.trials.front().explanation;
+  EXPECT_GT(larger.trials.front().evidence.reduction, 0.25 * variance);
+  EXPECT_LT(larger.after.all, 1.1 * larger.noise_floor);
 }
 
 // Two effects in one run: both named, neither revised away, and no ambiguity claimed between

@@ -28,7 +28,7 @@ TEST(ResidualReport, JsonHasExactlyTheDocumentedKeys) {
   const auto json = nlohmann::json::parse(residual_json(r));
   std::set<std::string> top;
   for (const auto& [key, value] : json.items()) top.insert(key);
-  EXPECT_EQ(top, (std::set<std::string>{"samples", "rms_before_N", "fit_before_percent", "fit_after_percent", "parameters",
+  EXPECT_EQ(top, (std::set<std::string>{"samples", "rms_before_N", "noise_floor_N", "fit_before_percent", "fit_after_percent", "parameters",
                                         "max_before_N", "effects", "effect", "rms_after_N", "max_after_N", "effect_params",
                                         "candidates", "ambiguous", "ambiguity_tests", "discovered", "screening",
                                         "robust", "set_revisions", "unexplained", "unphysical"}));
@@ -39,10 +39,19 @@ TEST(ResidualReport, JsonHasExactlyTheDocumentedKeys) {
   // Doubles round-trip: the JSON holds the very bits of the result.
   EXPECT_EQ(json["rms_before_N"].get<double>(), r.before.all);
   EXPECT_EQ(json["rms_after_N"].get<double>(), r.after.all);
+  EXPECT_EQ(json["noise_floor_N"].get<double>(), r.noise_floor);
   EXPECT_EQ(json["fit_after_percent"].get<double>(), r.fit_after_percent);
   bool coil_lag = false;
   for (const auto& c : json["candidates"]) {
     EXPECT_TRUE(c.contains("rms_after_N") && c.contains("validation_rms_N") && c["accepted"].is_boolean()) << c;
+    const auto& e = c["evidence"];
+    EXPECT_EQ(e["pieces"].get<int>(), 72) << c;  // 12 blocks of 166 samples held out, 6 pieces each
+    for (const char* key : {"mean_square_fall_N2", "fall_required_N2", "standard_error_N2", "t", "t_required", "z", "z_required"})
+      EXPECT_TRUE(e[key].is_number()) << key << c;
+    // Accepted only with the evidence (the set revision may still drop one that had it).
+    if (c["accepted"].get<bool>()) {
+      EXPECT_TRUE(e["significant"].get<bool>() && e["material"].get<bool>()) << c;
+    }
     coil_lag = coil_lag || c["effect"] == "coil_lag";
   }
   EXPECT_TRUE(coil_lag) << json.dump(2);
