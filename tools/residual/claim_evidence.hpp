@@ -31,8 +31,8 @@ struct ClaimCriterion {
   double confidence = 0.95;
   // The least an effect must remove of the simpler model's validation mean square above the
   // white-noise floor: far above the floor the residual is mostly the model's form, which any
-  // flexible effect soaks up in part.
-  double excess_share = 0.25;
+  // flexible effect soaks up in part (docs/CLOSING-THE-LOOP.md, "Claims": why a fifth).
+  double excess_share = 0.2;
   // ... and never less than this share of the noise's variance (an effect of half the noise's
   // RMS): at the floor, what an accepted effect's fit leaves of its own shape is small but
   // systematic, so significant, and a flexible candidate soaks it up (a tenth let a thermal
