@@ -6,8 +6,9 @@
 #include "tools/residual/fit_series.hpp"
 
 // When a richer model (an effect added) has earned its claim over a simpler one: paired block
-// cross-validation on the held-out blocks, judged against the noise (docs/CLOSING-THE-LOOP.md, "Claims"). A fixed relative threshold asks too much of a small effect on a run the base fits
-// to its noise, and too little of one that soaks up model-form error far above it.
+// cross-validation on the held-out blocks, judged against the noise (docs/CLOSING-THE-LOOP.md,
+// "Claims"). A fixed relative threshold is blind to how much of a fall the noise could make and
+// how much of it is the model's form.
 namespace mrd::tools {
 
 // The pieces of the held-out blocks the paired comparison counts: each run's validation
