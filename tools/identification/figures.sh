@@ -20,20 +20,23 @@ for algo in pso improved-pso; do
     > "$work/$algo.txt"
   cat "$work/$algo.txt"
 done
+# Two tools' runs on one figure, so drawn here, in the house style of tools/plot (noenhanced
+# text, the key below the data, the generated curve on top).
 gnuplot <<GP
-set terminal pngcairo size 900,600
+set terminal pngcairo size 900,600 noenhanced font ',10'
+set key outside below; set grid; set format y '%g'
 set output '$out/table1_convergence.png'
 set title 'Paper Table 1 set, 40 A/m loop, +-100% box: best fitness against evaluations (Figure 8)'
-set xlabel 'evaluations'; set ylabel 'RMSE of B [T] (Eq. 15)'; set logscale y; set grid
+set xlabel 'evaluations'; set ylabel 'RMSE of B [T] (Eq. 15)'; set logscale y
 plot '$work/pso/identify_convergence.dat' using 1:2 with steps lw 2 title 'classical PSO', \
      '$work/improved-pso/identify_convergence.dat' using 1:2 with steps lw 2 title 'improved PSO'
 set output '$out/table1_bh.png'
 unset logscale y
 set title 'Paper Table 1 set, 40 A/m loop: generated curve and the two fits (Figure 7)'
-set xlabel 'H [A/m]'; set ylabel 'B [T]'; set key left top
-plot '$work/improved-pso/identify_bh.dat' using 1:2 with points pt 7 ps 0.3 lc rgb 'black' title 'generated', \
-     '$work/pso/identify_bh.dat' using 1:3 with lines lw 2 title 'classical PSO', \
-     '$work/improved-pso/identify_bh.dat' using 1:3 with lines lw 2 dt 2 title 'improved PSO'
+set xlabel 'H [A/m]'; set ylabel 'B [T]'
+plot '$work/pso/identify_bh.dat' using 1:3 with lines lw 2 title 'classical PSO', \
+     '$work/improved-pso/identify_bh.dat' using 1:3 with lines lw 2 dt 2 title 'improved PSO', \
+     '$work/improved-pso/identify_bh.dat' using 1:2 with points pt 7 ps 0.3 lc rgb 'black' title 'generated'
 GP
 
 "$identify" fit "$here/data/bh-loops/szewczyk-jamodel/MnZn_ferrite_loops.csv" --polish --seed 1 \
