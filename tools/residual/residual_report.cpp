@@ -151,6 +151,30 @@ std::string residual_summary(const std::vector<record::RecordedRun>& runs, const
   return out;
 }
 
+namespace {
+
+// One candidate's entry: its figures and the claim criterion's evidence (step 5).
+Json candidate_json(const CandidateTrial& t) {
+  const ClaimEvidence& e = t.evidence;
+  return {{"effect", t.effect},
+          {"rms_after_N", t.rms_after},
+          {"validation_rms_N", t.validation_rms},
+          {"accepted", t.accepted()},
+          {"evidence",
+           {{"pieces", e.pieces},
+            {"mean_square_fall_N2", e.reduction},
+            {"fall_required_N2", e.required},
+            {"standard_error_N2", e.standard_error},
+            {"t", e.t},
+            {"t_required", e.t_required},
+            {"z", e.z},
+            {"z_required", e.z_required},
+            {"significant", e.significant()},
+            {"material", e.material()}}}};
+}
+
+}  // namespace
+
 std::string residual_json(const ResidualResult& r, const ForceFitFigures* fit) {
   Json effect_params = Json::object();
   for (const auto& e : r.accepted) {
@@ -159,23 +183,7 @@ std::string residual_json(const ResidualResult& r, const ForceFitFigures* fit) {
     effect_params[e] = params;
   }
   Json candidates = Json::array();
-  for (const CandidateTrial* t : final_trials(r)) {
-    candidates.push_back({{"effect", t->effect},
-                          {"rms_after_N", t->rms_after},
-                          {"validation_rms_N", t->validation_rms},
-                          {"accepted", t->accepted()},
-                          {"evidence",
-                           {{"pieces", t->evidence.pieces},
-                            {"mean_square_fall_N2", t->evidence.reduction},
-                            {"fall_required_N2", t->evidence.required},
-                            {"standard_error_N2", t->evidence.standard_error},
-                            {"t", t->evidence.t},
-                            {"t_required", t->evidence.t_required},
-                            {"z", t->evidence.z},
-                            {"z_required", t->evidence.z_required},
-                            {"significant", t->evidence.significant()},
-                            {"material", t->evidence.material()}}}});
-  }
+  for (const CandidateTrial* t : final_trials(r)) candidates.push_back(candidate_json(*t));
   Json discovered = Json::array();
   for (const DiscoveredTerm& t : r.discovered) {
     discovered.push_back({{"term", t.term},
