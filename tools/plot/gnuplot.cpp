@@ -106,7 +106,8 @@ std::string gnuplot_script(const Figure& figure) {
   out += "set output " + quoted(figure.output) + "\n";
   // Headroom above and below the data: autoscaling alone ends the axis at the tick nearest the
   // extreme, where a trace at its peak (B at 1.4 T) would run along the frame and vanish.
-  out += "set grid\nset key below horizontal\nset offsets 0, 0, graph 0.05, graph 0.05\n";
+  // The key's extra line of height keeps it clear of the x label (in a grid of panels it sat on it).
+  out += "set grid\nset key below horizontal height 1\nset offsets 0, 0, graph 0.05, graph 0.05\n";
   const bool several = figure.panels.size() > 1;
   if (several) {
     const int columns = std::max(1, figure.columns);

@@ -11,6 +11,7 @@ namespace mrd::tools::search {
 struct Reduced {
   model::DamperModel model;
   double validation = 0.0;
+  std::vector<double> predicted;  // its force on the fitting series (empty where not kept)
 };
 
 // What the greedy rounds accepted, as the set revision then reconsiders it (step 6): with two or

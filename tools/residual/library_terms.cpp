@@ -25,7 +25,8 @@ WithTerms with_damper_terms(const Search& s, const model::DamperModel& m, double
   std::vector<double> force, induction;
   predict_force_and_induction(m, s.fit_series, force, induction);
   WithTerms out;
-  out.discovery = discover_terms(s.fit_series, force, induction, fluid_of(m), s.options.minimum_reduction);
+  out.discovery = discover_terms(s.fit_series, force, induction, fluid_of(m), s.options.minimum_reduction,
+                                 {.pieces = &s.blocks, .noise_floor = s.noise_floor, .criterion = s.options.claim});
   std::erase_if(out.discovery.terms, [](const DiscoveredTerm& t) { return t.interference; });
   out.validation = validation;
   if (!out.discovery.has_terms()) return out;
@@ -92,8 +93,12 @@ void discover(Search& s, model::DamperModel& model, ResidualResult& result) {
   predict_force_and_induction(model, s.full, result.predicted_after, induction);
   result.discovery = s.options.discover;
   if (!s.options.discover) return;
-  const TermDiscovery discovery = discover_terms(s.full, result.predicted_after, induction,
-                                                 fluid_of(model), s.options.minimum_reduction);
+  // Weighed on the whole series' held-out pieces against the fitting series' noise floor: the
+  // full rate's sample-to-sample differences understate the noise a load cell's filter smooths.
+  const ValidationBlocks pieces = validation_blocks(s.full);
+  const TermDiscovery discovery =
+      discover_terms(s.full, result.predicted_after, induction, fluid_of(model), s.options.minimum_reduction,
+                     {.pieces = &pieces, .noise_floor = s.noise_floor, .criterion = s.options.claim});
   result.discovered = discovery.terms;
   bool added = true;
   if (discovery.has_terms()) {

@@ -113,9 +113,9 @@ std::string residual_summary(const std::vector<record::RecordedRun>& runs, const
   }
   for (const auto& line : r.revisions) out += "set revision: " + line + "\n";
   for (const DiscoveredTerm& t : r.discovered) {
-    out += format("discovered: %-22s %11.4g %-10s %s, validation RMS -%.1f%%\n", t.term.c_str(), t.coefficient,
+    out += format("discovered: %-22s %11.4g %-10s %s, validation RMS -%.1f%%%s\n", t.term.c_str(), t.coefficient,
                   t.unit.c_str(), t.interference ? "interference (taken off the measurement, not the model)" : "damper term, added to the model",
-                  100.0 * t.validation_gain);
+                  100.0 * t.validation_gain, t.evidence.weighable() ? ("; " + t.evidence.describe()).c_str() : "");
   }
   for (const AmbiguousGroup& group : r.ambiguous) {
     out += "ambiguous:";
@@ -148,29 +148,37 @@ std::string residual_summary(const std::vector<record::RecordedRun>& runs, const
   for (const std::string& line : r.unphysical) out += "unphysical: " + line + " (--write-config needs --accept-unphysical)\n";
   out += format("analysed %zu samples in %.2f s (%lld observer passes over the fitting series)\n", r.samples,
                 r.seconds, static_cast<long long>(r.evaluations));
+  std::string by_step;
+  for (const ResidualResult::StepCost& c : r.steps)
+    by_step += format("%s%s %.1f s (%lld passes)", by_step.empty() ? "" : ", ", c.step.c_str(), c.seconds,
+                      static_cast<long long>(c.evaluations));
+  if (!by_step.empty()) out += "  by step: " + by_step + "\n";
   return out;
 }
 
 namespace {
 
-// One candidate's entry: its figures and the claim criterion's evidence (step 5).
+// The claim criterion's evidence (step 5) for an effect or a library term.
+Json evidence_json(const ClaimEvidence& e) {
+  return {{"pieces", e.pieces},
+          {"mean_square_fall_N2", e.reduction},
+          {"fall_required_N2", e.required},
+          {"standard_error_N2", e.standard_error},
+          {"t", e.t},
+          {"t_required", e.t_required},
+          {"z", e.z},
+          {"z_required", e.z_required},
+          {"significant", e.significant()},
+          {"material", e.material()}};
+}
+
+// One candidate's entry: its figures and its evidence.
 Json candidate_json(const CandidateTrial& t) {
-  const ClaimEvidence& e = t.evidence;
   return {{"effect", t.effect},
           {"rms_after_N", t.rms_after},
           {"validation_rms_N", t.validation_rms},
           {"accepted", t.accepted()},
-          {"evidence",
-           {{"pieces", e.pieces},
-            {"mean_square_fall_N2", e.reduction},
-            {"fall_required_N2", e.required},
-            {"standard_error_N2", e.standard_error},
-            {"t", e.t},
-            {"t_required", e.t_required},
-            {"z", e.z},
-            {"z_required", e.z_required},
-            {"significant", e.significant()},
-            {"material", e.material()}}}};
+          {"evidence", evidence_json(t.evidence)}};
 }
 
 }  // namespace
@@ -190,7 +198,8 @@ std::string residual_json(const ResidualResult& r, const ForceFitFigures* fit) {
                           {"coefficient", t.coefficient},
                           {"unit", t.unit},
                           {"kind", t.interference ? "interference" : "damper"},
-                          {"validation_gain", t.validation_gain}});
+                          {"validation_gain", t.validation_gain},
+                          {"evidence", evidence_json(t.evidence)}});
   }
   std::size_t excluded = 0;
   Json spans = Json::array();
@@ -477,10 +486,11 @@ std::string write_residual_report(const std::vector<record::RecordedRun>& runs, 
   std::vector<std::vector<std::string>> terms;
   for (const DiscoveredTerm& t : r.discovered) {
     terms.push_back({t.term, format("%.6g", t.coefficient), t.unit, t.interference ? "interference" : "damper",
-                     format("%.1f %%", 100.0 * t.validation_gain)});
+                     format("%.1f %%", 100.0 * t.validation_gain), t.evidence.describe()});
   }
-  report.table("Library terms accepted by the regression of what the effects left",
-               {"term", "coefficient", "unit", "kind", "validation RMS gain"}, terms);
+  report.table("Library terms accepted by the regression of what the effects left (each by the claim criterion, "
+               "against the terms before it)",
+               {"term", "coefficient", "unit", "kind", "validation RMS gain", "evidence"}, terms);
   std::vector<std::vector<std::string>> groups;
   for (const AmbiguousGroup& group : r.ambiguous) {
     std::string members;

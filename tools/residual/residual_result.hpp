@@ -137,6 +137,13 @@ struct ResidualResult {
   std::vector<double> predicted_after;
   std::int64_t evaluations = 0;  // observer passes over the fitting series
   double seconds = 0.0;  // wall time of the analysis
+  // Where the time went: each step of the pipeline with its wall time and observer passes.
+  struct StepCost {
+    std::string step;
+    double seconds = 0.0;
+    std::int64_t evaluations = 0;
+  };
+  std::vector<StepCost> steps;
 };
 
 }  // namespace mrd::tools

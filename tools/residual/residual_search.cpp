@@ -75,6 +75,15 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   };
   search::Search s(full, options);
   ResidualResult result;
+  auto step_started = started;
+  std::int64_t step_evaluations = 0;
+  const auto step_done = [&](const char* step) {
+    const auto now = std::chrono::steady_clock::now();
+    result.steps.push_back({step, std::chrono::duration<double>(now - step_started).count(),
+                            s.evaluations - step_evaluations});
+    step_started = now;
+    step_evaluations = s.evaluations;
+  };
   result.samples = full.size();
   result.notes = full.notes;
   result.screenings = full.screenings;
@@ -88,7 +97,9 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   // 1-3. The base model (3b: under the robust loss, with --robust-fit) and its residual.
   ParameterSpace base_fit_space;
   const FittedModel identified = search::fit_base_model(s, base_fit_space);
+  step_done("base fit");
   const FittedModel base = search::refit_robustly(s, base_fit_space, identified, result.robust_refits);
+  if (result.robust_refits > 0) step_done("robust base fit");
   result.base = reported(base.model);
   result.base_parameters = search::describe_base(base_fit_space, base, options.start, s.scales);
   predict_force(result.base, full, result.predicted_before);
@@ -103,15 +114,19 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   // cannot decide.
   std::vector<search::Effects> ambiguous_groups;
   search::AcceptedSet set = search::greedy_rounds(s, base.model, result, ambiguous_groups);
+  step_done("greedy rounds");
   search::revise_set(s, set, result);
+  step_done("set revision");
   search::weigh_effects_against_terms(s, set, base.model, result);
   search::name_ambiguities(set, ambiguous_groups, result);
   for (const model::EffectInfo* e : set.effects) result.accepted.emplace_back(e->name);
   search::mark_final_set(result);
   search::name_unplaced_thresholds(s, set, result);
+  step_done("effects against terms");
   // 7. Discovery on what the named effects left.
   model::DamperModel current = reported(set.model);
   search::discover(s, current, result);
+  step_done("discovery");
   result.final_model = current;
   result.evaluations = s.evaluations;
   result.after = residual_rms(full, result.predicted_after);
@@ -128,6 +143,7 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   result.parameters = model_uncertainty(linearised, s.fit_series, free_magnetics(s.scales, Magnetics::kMaterial));
   result.unexplained = describe(result.structure_after);
   result.unphysical = unphysical_parameters(result.final_model, options.start, s.scales);
+  step_done("uncertainty");
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return result;
 }

@@ -25,7 +25,8 @@ Reduced without_effect(Search& s, const model::DamperModel& current, const Effec
                              spent)
                   .model;
   s.evaluations += spent;
-  out.validation = s.validation_rms(out.model);
+  out.predicted = s.predicted(out.model);
+  out.validation = residual_rms(s.fit_series, out.predicted).validation;
   return out;
 }
 
@@ -59,7 +60,7 @@ void revise_set(Search& s, AcceptedSet& set, ResidualResult& result) {
     const int comparisons = static_cast<int>(set.effects.size());
     for (std::size_t k = 0; k < set.effects.size(); ++k) {
       rests.push_back(without_effect(s, set.model, set.effects, set.effects[k]));
-      const ClaimEvidence evidence = s.weigh(s.predicted(rests.back().model), with_all, comparisons);
+      const ClaimEvidence evidence = s.weigh(rests.back().predicted, with_all, comparisons);
       if (evidence.passes() || (weakest < set.effects.size() && evidence.margin() >= weakest_evidence.margin())) continue;
       weakest = k;
       weakest_evidence = evidence;

@@ -192,42 +192,71 @@ void TermDiscovery::add_to(model::DamperModel& model) const {
 
 namespace {
 
-// The library's moments over the fitting samples (moments[0]) and the validation samples
-// (moments[1]); the screening's excluded samples count in neither.
-void accumulate_moments(const Library& lib, const FitSeries& s, const std::vector<double>& predicted,
-                        const std::vector<double>& B, const model::BinghamDamper& fluid, Moments (&moments)[2]) {
-  const std::vector<double> a = zero_phase_acceleration(s);
-  for (Moments& m : moments) {
-    m.gram = Eigen::MatrixXd::Zero(lib.columns, lib.columns);
-    m.cross = Eigen::VectorXd::Zero(lib.columns);
+// The library's columns over the kept samples of a series (the screening's excluded ones are
+// in no sum), given the model's force, its induction and the acceleration per sample.
+struct LibraryRows {
+  const Library& lib;
+  const FitSeries& s;
+  const std::vector<double>& predicted;
+  const std::vector<double>& B;
+  const std::vector<double>& a;
+  const model::BinghamDamper& fluid;
+
+  // `use(i, row)` for each kept sample i.
+  template <typename Use>
+  void each_kept(Use use) const {
+    Eigen::VectorXd row(lib.columns);
+    std::size_t run = 0;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      const double t = time_of(s, i, run);
+      if (s.role[i] == SampleRole::kExcluded) continue;
+      fill_row(lib, s, predicted, B, a, fluid, t, i, row);
+      use(i, row);
+    }
   }
-  Eigen::VectorXd row(lib.columns);
-  std::size_t run = 0;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    const double t = time_of(s, i, run);
-    if (s.role[i] == SampleRole::kExcluded) continue;
-    fill_row(lib, s, predicted, B, a, fluid, t, i, row);
-    const double r = s.force[i];
-    Moments& m = moments[static_cast<std::size_t>(s.role[i])];
+};
+
+// The library's moments over the fitting samples (moments[0]) and the validation samples (moments[1]).
+void accumulate_moments(const LibraryRows& rows, Moments (&moments)[2]) {
+  for (Moments& m : moments) {
+    m.gram = Eigen::MatrixXd::Zero(rows.lib.columns, rows.lib.columns);
+    m.cross = Eigen::VectorXd::Zero(rows.lib.columns);
+  }
+  rows.each_kept([&](std::size_t i, const Eigen::VectorXd& row) {
+    const double r = rows.s.force[i];
+    Moments& m = moments[static_cast<std::size_t>(rows.s.role[i])];
     m.gram.selfadjointView<Eigen::Lower>().rankUpdate(row);
     m.cross += r * row;
     m.energy += r * r;
     ++m.count;
-  }
+  });
   for (Moments& m : moments) m.gram = m.gram.selfadjointView<Eigen::Lower>();
+}
+
+// The regression's force per sample: `fit`'s coefficients on the columns of `subset`.
+std::vector<double> subset_force(const LibraryRows& rows, const std::vector<std::size_t>& subset, const SubsetFit& fit) {
+  const std::vector<int> cols = columns_of(rows.lib, subset);
+  std::vector<double> force(rows.s.size(), 0.0);
+  rows.each_kept([&](std::size_t i, const Eigen::VectorXd& row) {
+    for (std::size_t c = 0; c < cols.size(); ++c) force[i] += fit.coefficients[static_cast<Eigen::Index>(c)] * row[cols[c]];
+  });
+  return force;
 }
 
 }  // namespace
 
 TermDiscovery discover_terms(const FitSeries& s, const std::vector<double>& predicted, const std::vector<double>& B,
-                             const model::BinghamDamper& fluid, double threshold, std::size_t max_terms) {
+                             const model::BinghamDamper& fluid, double threshold, const TermClaim& claim,
+                             std::size_t max_terms) {
   const double viscous_coefficient = fluid.viscous_coefficient();
   TermDiscovery out;
   out.interference.assign(s.size(), 0.0);
   if (s.size() < 16 || s.run_periods.empty()) return out;
   const Library lib = make_library(1.0 / s.sample_period);
+  const std::vector<double> a = zero_phase_acceleration(s);
+  const LibraryRows rows{lib, s, predicted, B, a, fluid};
   Moments moments[2];
-  accumulate_moments(lib, s, predicted, B, fluid, moments);
+  accumulate_moments(rows, moments);
   if (moments[0].count < 8 || moments[1].count < 8) return out;
   // Columns scaled to unit RMS on the fitting samples, for the conditioning of the solve.
   Eigen::VectorXd scale(lib.columns);
@@ -236,14 +265,17 @@ TermDiscovery discover_terms(const FitSeries& s, const std::vector<double>& pred
 
   std::vector<std::size_t> chosen;
   std::vector<double> gains;
+  std::vector<ClaimEvidence> claims;
   SubsetFit accepted_fit = fit_subset(lib, chosen, moments[0], moments[1], scale, viscous_coefficient);
   double current = accepted_fit.validation_rms;
   while (chosen.size() < max_terms) {
     std::size_t best = lib.terms.size();
     SubsetFit best_fit;
+    int tried = 0;
     for (std::size_t t = 0; t < lib.terms.size(); ++t) {
       if (std::ranges::find(chosen, t) != chosen.end()) continue;
       if (moments[0].gram(lib.terms[t].first_column, lib.terms[t].first_column) <= 0.0) continue;  // all zero
+      ++tried;
       std::vector<std::size_t> trial = chosen;
       trial.push_back(t);
       SubsetFit fit = fit_subset(lib, trial, moments[0], moments[1], scale, viscous_coefficient);
@@ -255,7 +287,16 @@ TermDiscovery discover_terms(const FitSeries& s, const std::vector<double>& pred
     }
     if (best == lib.terms.size()) break;
     const double gain = 1.0 - best_fit.validation_rms / std::max(current, 1e-300);
-    if (gain < threshold) break;
+    ClaimEvidence evidence;
+    if (claim.pieces != nullptr) {
+      std::vector<std::size_t> with_best = chosen;
+      with_best.push_back(best);
+      evidence = weigh_claim(s, *claim.pieces, subset_force(rows, chosen, accepted_fit),
+                             subset_force(rows, with_best, best_fit), claim.noise_floor, tried, claim.criterion);
+      if (!evidence.passes()) break;
+    } else if (gain < threshold) {
+      break;
+    }
     // Terms that would have done as well: the run cannot tell them from the one chosen (on a
     // single sine, a mass and a negative stiffness are the same column).
     std::vector<std::string> alike{lib.terms[best].name};
@@ -271,6 +312,7 @@ TermDiscovery discover_terms(const FitSeries& s, const std::vector<double>& pred
     if (alike.size() > 1) out.ambiguous.push_back(std::move(alike));
     chosen.push_back(best);
     gains.push_back(gain);
+    claims.push_back(evidence);
     current = best_fit.validation_rms;
     accepted_fit = std::move(best_fit);
   }
@@ -281,7 +323,7 @@ TermDiscovery discover_terms(const FitSeries& s, const std::vector<double>& pred
   Eigen::Index c = kBaseColumns;
   for (std::size_t k = 0; k < chosen.size(); ++k) {
     const LibraryTerm& term = lib.terms[chosen[k]];
-    DiscoveredTerm d{term.name, accepted_fit.coefficients[c], term.unit, term.interference, gains[k]};
+    DiscoveredTerm d{term.name, accepted_fit.coefficients[c], term.unit, term.interference, gains[k], claims[k]};
     if (term.interference) {
       const double sine = accepted_fit.coefficients[c], cosine = accepted_fit.coefficients[c + 1];
       d.coefficient = std::hypot(sine, cosine);

@@ -5,6 +5,7 @@
 
 #include "model/bingham_damper.hpp"
 #include "model/damper_model.hpp"
+#include "tools/residual/claim_evidence.hpp"
 #include "tools/residual/fit_series.hpp"
 
 namespace mrd::tools {
@@ -16,6 +17,15 @@ struct DiscoveredTerm {
   std::string unit;
   bool interference = false;      // describes the measurement (mains), not the damper
   double validation_gain = 0.0;   // fraction of the validation RMS it removed when it joined
+  ClaimEvidence evidence;         // its claim when it joined (pieces 0: judged by the threshold)
+};
+
+// How a term earns its place: the claim criterion on the series' held-out pieces, against the
+// terms before it, over the library's terms tried at that step (as a round's candidates).
+struct TermClaim {
+  const ValidationBlocks* pieces = nullptr;  // null: the relative threshold alone decides
+  double noise_floor = 0.0;                  // [N]
+  ClaimCriterion criterion;
 };
 
 struct TermDiscovery {
@@ -37,15 +47,17 @@ struct TermDiscovery {
 
 // Step 7 of mrd-residual: forward sparse regression of the residual (force - predicted) on the
 // library of physical terms, fitted on the fitting blocks and judged on the validation blocks:
-// the term that lowers the validation RMS most joins while it lowers it by at least
-// `threshold` and every coefficient keeps its physical sign; at most `max_terms`. `B` is the
+// the term that lowers the validation RMS most joins while every coefficient keeps its physical
+// sign and its claim passes (`claim`; without pieces, while it lowers the validation RMS by at
+// least `threshold`); at most `max_terms`. `threshold` also sets which other terms would have
+// done as well (the ambiguous groups). `B` is the
 // model's induction per sample [T].
 // `fluid` is the model's viscous law: the extra viscous column is its shape u(v) (v for Bingham,
 // the Herschel-Bulkley shape otherwise), and the refitted a c0 + b must stay >= 0, since the
 // model cannot carry a negative viscosity (a term that needs one is not physical).
 TermDiscovery discover_terms(const FitSeries& series, const std::vector<double>& predicted,
                              const std::vector<double>& B, const model::BinghamDamper& fluid, double threshold,
-                             std::size_t max_terms = 4);
+                             const TermClaim& claim = {}, std::size_t max_terms = 4);
 
 // The library's term names, damper terms first, then the mains lines the series' rate resolves.
 std::vector<std::string> term_library(double sample_rate);

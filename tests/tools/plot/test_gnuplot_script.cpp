@@ -46,7 +46,7 @@ TEST(PlotScript, TextIsTakenLiterally) {
 
 TEST(PlotScript, KeyOutsideTheDataAndHeadroomInsteadOfFixedRanges) {
   const std::string script = plot::gnuplot_script(force_figure("run.csv"));
-  EXPECT_NE(script.find("set key below horizontal\n"), std::string::npos);
+  EXPECT_NE(script.find("set key below horizontal height 1\n"), std::string::npos);
   EXPECT_EQ(script.find("set key inside"), std::string::npos);
   EXPECT_NE(script.find("set offsets 0, 0, graph 0.05, graph 0.05\n"), std::string::npos);
   EXPECT_EQ(script.find("set yrange ["), std::string::npos);
