@@ -12,6 +12,7 @@
 
 #include "config/config_loader.hpp"
 #include "tests/tools/residual/residual_test_support.hpp"
+#include "tools/text_format.hpp"
 
 namespace {
 
@@ -58,6 +59,32 @@ TEST(ResidualReport, JsonHasExactlyTheDocumentedKeys) {
   ASSERT_EQ(json["parameters"].size(), r.parameters.size());
   EXPECT_EQ(json["parameters"][0]["name"], "geometry.pole_length");
   EXPECT_EQ(json["parameters"][0]["sd"].get<double>(), r.parameters[0].standard_deviation);
+}
+
+// Where the time went: every step of the pipeline in order, its passes adding up to the total,
+// the base fit and the rounds doing the fitting, and the summary's last line saying so.
+TEST(ResidualReport, TheTimeAndThePassesAreSplitByStep) {
+  const ResidualResult& r = gas_spring_result();
+  std::vector<std::string> steps;
+  std::int64_t passes = 0;
+  double seconds = 0.0;
+  for (const ResidualResult::StepCost& c : r.steps) {
+    steps.push_back(c.step);
+    passes += c.evaluations;
+    seconds += c.seconds;
+    EXPECT_GE(c.seconds, 0.0) << c.step;
+  }
+  EXPECT_EQ(steps, (std::vector<std::string>{"base fit", "greedy rounds", "set revision", "effects against terms",
+                                             "discovery", "uncertainty"}));
+  EXPECT_EQ(passes, r.evaluations);
+  EXPECT_LE(seconds, r.seconds);
+  EXPECT_GT(r.steps[0].evaluations, 0);
+  EXPECT_GT(r.steps[1].evaluations, 0);
+  const std::string summary = residual_summary({}, r);
+  EXPECT_NE(summary.find(format("  by step: base fit %.1f s (%lld passes), greedy rounds", r.steps[0].seconds,
+                                static_cast<long long>(r.steps[0].evaluations))),
+            std::string::npos)
+      << summary;
 }
 
 TEST(ResidualReport, UpdatedConfigLoadsWithTheEffectOnAndTheFittedDamper) {
