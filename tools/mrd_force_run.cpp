@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -133,11 +134,8 @@ plot::Figure load_cell_figure(const std::string& csv, const std::string& png, co
                      std::move(scale)}};
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  CLI::App app{"Force tracking on the simulated damper: clipped on-off, static Bingham inverse, J-A inverse "
-               "with and without the coil lag inverted"};
+// The command line, as parsed.
+struct Arguments {
   std::string profile_choice = "random";
   std::string case_choice = "identified";
   double coil_lag_ms = 0.0;
@@ -151,92 +149,114 @@ int main(int argc, char** argv) {
   double load_cell_tau = mrd::control::ForceScaleSettings{}.time_constant;
   std::string json_path, out_dir;
   bool no_plot = false;
-  app.add_option("--profile", profile_choice, "desired-force profile")
+
+  mrd::tools::ProfileKind profile_kind() const {
+    return profile_choice == "random" ? mrd::tools::ProfileKind::kRandom : mrd::tools::ProfileKind::kStructure;
+  }
+};
+
+void add_options(CLI::App& app, Arguments& a) {
+  app.add_option("--profile", a.profile_choice, "desired-force profile")
       ->check(CLI::IsMember({"random", "structure"}))->capture_default_str();
-  app.add_option("--case", case_choice, "the controller's model: the plant's own, identified on noisy runs, "
-                                        "perturbed 10-20 %, or all three")
+  app.add_option("--case", a.case_choice, "the controller's model: the plant's own, identified on noisy runs, "
+                                          "perturbed 10-20 %, or all three")
       ->check(CLI::IsMember({"matched", "identified", "perturbed", "all"}))->capture_default_str();
-  app.add_option("--coil-lag-ms", coil_lag_ms, "the plant's coil lag time constant [ms], 0 for none")
+  app.add_option("--coil-lag-ms", a.coil_lag_ms, "the plant's coil lag time constant [ms], 0 for none")
       ->check(mrd::cli::finite_in(0.0, 200.0))->capture_default_str();
-  app.add_option("--seed", seed, "seed of the profile, the noise and the identification")->capture_default_str();
-  app.add_option("--duration", duration, "run length [s]; the first second is left out of the figures")
+  app.add_option("--seed", a.seed, "seed of the profile, the noise and the identification")->capture_default_str();
+  app.add_option("--duration", a.duration, "run length [s]; the first second is left out of the figures")
       ->check(mrd::cli::finite_in(2.0, 600.0))->capture_default_str();
-  app.add_option("--force-noise-n", force_noise, "load-cell noise RMS [N] (the clipped law reads the load cell)")
+  app.add_option("--force-noise-n", a.force_noise, "load-cell noise RMS [N] (the clipped law reads the load cell)")
       ->check(mrd::cli::finite_in(0.0, 1e4))->capture_default_str();
-  app.add_option("--lqr-force-weight", lqr_force_weight, "structure profile: r, the LQR weight on the damper force "
-                                                         "against the storey shears")
+  app.add_option("--lqr-force-weight", a.lqr_force_weight, "structure profile: r, the LQR weight on the damper force "
+                                                           "against the storey shears")
       ->check(mrd::cli::finite_in(1e-6, 1e6))->capture_default_str();
-  app.add_option("--pga-g", pga_g, "structure profile: peak ground acceleration [g]")
+  app.add_option("--pga-g", a.pga_g, "structure profile: peak ground acceleration [g]")
       ->check(mrd::cli::finite_in(0.01, 2.0))->capture_default_str();
-  app.add_option("--drift", drift_pct, "the plant's yield stress falls by PCT % over the run, as the fluid heats")
+  app.add_option("--drift", a.drift_pct, "the plant's yield stress falls by PCT % over the run, as the fluid heats")
       ->check(mrd::cli::finite_in(0.0, 60.0))->capture_default_str();
-  app.add_flag("--load-cell", load_cell, "add inverse_ja_load_cell: inverse_ja with the load-cell correction of "
-                                         "its model's yield force");
-  app.add_option("--load-cell-tau", load_cell_tau, "the correction's time constant [s]")
+  app.add_flag("--load-cell", a.load_cell, "add inverse_ja_load_cell: inverse_ja with the load-cell correction of "
+                                           "its model's yield force");
+  app.add_option("--load-cell-tau", a.load_cell_tau, "the correction's time constant [s]")
       ->check(mrd::cli::finite_in(0.01, 1000.0))->capture_default_str();
-  app.add_option("--json", json_path, "write the figures as JSON to FILE");
-  app.add_option("--out", out_dir, "folder for the CSV trace and the PNG plots (none without it)");
-  app.add_flag("--no-plot", no_plot, "with --out, skip the PNGs");
-  mrd::cli::set_up(app, "mrd-force-run");
-  if (const auto status = mrd::cli::parse(app, argc, argv)) return *status;
-  if (!mrd::cli::check_outputs("mrd-force-run", {&json_path}, {&out_dir})) return mrd::cli::kIo;
+  app.add_option("--json", a.json_path, "write the figures as JSON to FILE");
+  app.add_option("--out", a.out_dir, "folder for the CSV trace and the PNG plots (none without it)");
+  app.add_flag("--no-plot", a.no_plot, "with --out, skip the PNGs");
+}
 
-  const double dt = 1e-3;
-  const mrd::model::DamperModel plant = mrd::tools::with_coil_lag({}, coil_lag_ms * 1e-3);
+// The simulated damper and its driver, which every case runs on.
+struct Plant {
+  mrd::model::DamperModel model;
   mrd::model::CompensatorLimits limits;
-  limits.min_current = -limits.max_current;  // bipolar: a unipolar driver cannot clear remanence
-  if (const auto report = mrd::model::validate(plant); !report.ok()) {
+};
+
+// Nullopt, with the problems on stderr, when the plant is not valid.
+std::optional<Plant> make_plant(const Arguments& a) {
+  Plant plant{mrd::tools::with_coil_lag({}, a.coil_lag_ms * 1e-3), {}};
+  plant.limits.min_current = -plant.limits.max_current;  // bipolar: a unipolar driver cannot clear remanence
+  if (const auto report = mrd::model::validate(plant.model); !report.ok()) {
     std::fprintf(stderr, "mrd-force-run: invalid plant\n%s", report.to_string().c_str());
-    return mrd::cli::kUsage;
+    return std::nullopt;
   }
+  return plant;
+}
 
-  const mrd::tools::ProfileKind profile_kind =
-      profile_choice == "random" ? mrd::tools::ProfileKind::kRandom : mrd::tools::ProfileKind::kStructure;
+DemandProfile make_profile(const Arguments& a, const Plant& plant) {
+  const double dt = 1e-3;
+  if (a.profile_kind() == mrd::tools::ProfileKind::kRandom) return mrd::tools::random_demand(a.duration, dt, a.seed);
   mrd::tools::StructureDemandOptions structure;
-  structure.weights.force_weight = lqr_force_weight;
-  structure.ground.peak_acceleration = pga_g * 9.81;
-  const DemandProfile profile = profile_kind == mrd::tools::ProfileKind::kRandom
-                                    ? mrd::tools::random_demand(duration, dt, seed)
-                                    : mrd::tools::structure_demand(duration, dt, seed, plant, limits.max_current, structure);
+  structure.weights.force_weight = a.lqr_force_weight;
+  structure.ground.peak_acceleration = a.pga_g * 9.81;
+  return mrd::tools::structure_demand(a.duration, dt, a.seed, plant.model, plant.limits.max_current, structure);
+}
 
-  std::vector<std::string> cases;
-  if (case_choice == "all") {
-    cases = {"matched", "identified", "perturbed"};
-  } else {
-    cases = {case_choice};
+// The controller's model for one case, with the notes that say how it was made.
+mrd::model::DamperModel controller_for(const std::string& name, const Arguments& a, const Plant& plant,
+                                       std::vector<std::string>& notes) {
+  if (name == "matched") return plant.model;
+  if (name == "perturbed") {
+    notes.push_back("every J-A and Bingham parameter off by 10-20 % (docs/FORCE-CONTROL.md)");
+    return mrd::tools::perturbed_model(plant.model);
   }
+  mrd::tools::ControllerIdentificationOptions id;
+  id.seed = a.seed;
+  auto identified =
+      mrd::tools::identify_controller(plant.model, mrd::tools::perturbed_model(plant.model), plant.limits, id);
+  notes = std::move(identified.notes);
+  return std::move(identified.model);
+}
+
+std::vector<CaseRun> run_cases(const Arguments& a, const Plant& plant, const DemandProfile& profile) {
+  const std::vector<std::string> cases =
+      a.case_choice == "all" ? std::vector<std::string>{"matched", "identified", "perturbed"}
+                             : std::vector<std::string>{a.case_choice};
   mrd::tools::ForceRunOptions options;
-  options.plant = plant;
-  options.limits = limits;
-  options.force_noise_rms = force_noise;
-  options.seed = static_cast<unsigned>(seed);
-  options.yield_drift = drift_pct / 100.0;
-  options.load_cell = load_cell;
-  options.load_cell_settings.time_constant = load_cell_tau;
+  options.plant = plant.model;
+  options.limits = plant.limits;
+  options.force_noise_rms = a.force_noise;
+  options.seed = static_cast<unsigned>(a.seed);
+  options.yield_drift = a.drift_pct / 100.0;
+  options.load_cell = a.load_cell;
+  options.load_cell_settings.time_constant = a.load_cell_tau;
   std::vector<CaseRun> runs;
   for (const std::string& name : cases) {
     CaseRun run;
     run.name = name;
-    if (name == "matched") {
-      options.controller = plant;
-    } else if (name == "perturbed") {
-      options.controller = mrd::tools::perturbed_model(plant);
-      run.notes.push_back("every J-A and Bingham parameter off by 10-20 % (docs/FORCE-CONTROL.md)");
-    } else {
-      mrd::tools::ControllerIdentificationOptions id;
-      id.seed = seed;
-      const auto identified = mrd::tools::identify_controller(plant, mrd::tools::perturbed_model(plant), limits, id);
-      options.controller = identified.model;
-      run.notes = identified.notes;
-    }
+    options.controller = controller_for(name, a, plant, run.notes);
     run.result = mrd::tools::run_force_tracking(profile, options);
     runs.push_back(std::move(run));
   }
+  return runs;
+}
 
+// "2.50 ms": the option cut to four characters, as the summary and the plot titles show it.
+std::string coil_lag_text(double coil_lag_ms) { return std::to_string(coil_lag_ms).substr(0, 4) + " ms"; }
+
+void print_summary(const Arguments& a, const Plant& plant, const DemandProfile& profile,
+                   const std::vector<CaseRun>& runs) {
   std::printf("mrd: force tracking, %s; %.0f s at 1 kHz, plant coil lag %s, driver -%.1f..%.1f A at %.0f A/s\n",
-              profile.description.c_str(), duration,
-              coil_lag_ms > 0.0 ? (std::to_string(coil_lag_ms).substr(0, 4) + " ms").c_str() : "none",
-              limits.max_current, limits.max_current, limits.slew_rate);
+              profile.description.c_str(), a.duration, a.coil_lag_ms > 0.0 ? coil_lag_text(a.coil_lag_ms).c_str() : "none",
+              plant.limits.max_current, plant.limits.max_current, plant.limits.slew_rate);
   for (const auto& run : runs) {
     std::printf("\ncase %s: desired %.0f N RMS, %.1f %% of it reachable\n", run.name.c_str(), run.result.desired_rms,
                 100.0 * run.result.reachable_fraction);
@@ -247,66 +267,93 @@ int main(int argc, char** argv) {
                   s.max_error, s.rms_error_reachable);
     }
   }
+}
 
-  if (!json_path.empty()) {
-    // The judged case (identified when it ran) at the top, every case under "runs".
-    std::size_t top = 0;
-    for (std::size_t i = 0; i < runs.size(); ++i) {
-      if (runs[i].name == "identified") top = i;
-    }
-    mrd::tools::Json j = to_json(runs[top], profile_choice, profile, coil_lag_ms);
-    j["runs"] = mrd::tools::Json::array();
-    for (const auto& run : runs) j["runs"].push_back(to_json(run, profile_choice, profile, coil_lag_ms));
-    std::ofstream out(json_path);
-    out << mrd::tools::json_text(j);
-    if (!out) {
-      std::fprintf(stderr, "mrd-force-run: cannot write %s\n", json_path.c_str());
-      return mrd::cli::kIo;
-    }
-    std::printf("\nwrote %s\n", json_path.c_str());
+// --json: the judged case (identified when it ran) at the top, every case under "runs".
+bool write_json(const Arguments& a, const DemandProfile& profile, const std::vector<CaseRun>& runs) {
+  std::size_t top = 0;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    if (runs[i].name == "identified") top = i;
   }
-  if (!out_dir.empty()) {
-    std::error_code ec;
-    std::filesystem::create_directories(out_dir, ec);
-    if (ec) {
-      std::fprintf(stderr, "mrd-force-run: cannot create %s: %s\n", out_dir.c_str(), ec.message().c_str());
-      return mrd::cli::kIo;
-    }
-    for (const auto& run : runs) {
-      // A drifting plant's files apart from the steady plant's.
-      const std::string drift = drift_pct > 0.0 ? "_drift" + std::to_string(static_cast<int>(std::lround(drift_pct))) : "";
-      const std::string stem =
-          out_dir + "/force_run_" + std::string(mrd::tools::profile_name(profile_kind)) + "_" + run.name + drift;
-      if (!write_trace(stem + ".csv", profile, run.result)) {
-        std::fprintf(stderr, "mrd-force-run: cannot write %s.csv\n", stem.c_str());
-        return mrd::cli::kIo;
-      }
-      std::printf("wrote %s.csv\n", stem.c_str());
-      if (no_plot) continue;
-      const std::string title = run.name + " model, " + std::string(mrd::tools::profile_name(profile_kind)) + " profile" +
-                                (coil_lag_ms > 0.0 ? ", coil lag " + std::to_string(coil_lag_ms).substr(0, 4) + " ms" : "");
-      const double from = std::min(2.0, duration - 1.0), to = std::min(from + 6.0, duration);
-      if (load_cell) {
-        const std::string png = stem + "_load_cell.png";
-        const std::string error = plot::draw({load_cell_figure(
-            stem + ".csv", png, title + ", yield drift " + std::to_string(drift_pct).substr(0, 4) + " %", drift_pct > 0.0)});
-        if (error.empty()) {
-          std::printf("wrote %s\n", png.c_str());
-        } else {
-          std::fprintf(stderr, "mrd-force-run: no plot: %s\n", error.c_str());
-        }
-      }
-      for (const bool against_time : {true, false}) {
-        const std::string png = stem + (against_time ? "_force_time.png" : "_force_velocity.png");
-        const std::string error =
-            plot::draw({strategies_figure(stem + ".csv", png, title, against_time, from, to)});
-        if (error.empty()) {
-          std::printf("wrote %s\n", png.c_str());
-        } else {
-          std::fprintf(stderr, "mrd-force-run: no plot: %s\n", error.c_str());
-        }
-      }
-    }
+  mrd::tools::Json j = to_json(runs[top], a.profile_choice, profile, a.coil_lag_ms);
+  j["runs"] = mrd::tools::Json::array();
+  for (const auto& run : runs) j["runs"].push_back(to_json(run, a.profile_choice, profile, a.coil_lag_ms));
+  std::ofstream out(a.json_path);
+  out << mrd::tools::json_text(j);
+  if (!out) {
+    std::fprintf(stderr, "mrd-force-run: cannot write %s\n", a.json_path.c_str());
+    return false;
   }
+  std::printf("\nwrote %s\n", a.json_path.c_str());
+  return true;
+}
+
+// A figure that cannot be drawn is reported and skipped: the CSV it comes from is written.
+void draw_figure(const plot::Figure& figure) {
+  const std::string error = plot::draw({figure});
+  if (error.empty()) {
+    std::printf("wrote %s\n", figure.output.c_str());
+  } else {
+    std::fprintf(stderr, "mrd-force-run: no plot: %s\n", error.c_str());
+  }
+}
+
+// One case's PNGs beside its trace STEM.csv.
+void draw_case(const Arguments& a, const CaseRun& run, const std::string& stem) {
+  const std::string title = run.name + " model, " + std::string(mrd::tools::profile_name(a.profile_kind())) +
+                            " profile" + (a.coil_lag_ms > 0.0 ? ", coil lag " + coil_lag_text(a.coil_lag_ms) : "");
+  const double from = std::min(2.0, a.duration - 1.0), to = std::min(from + 6.0, a.duration);
+  if (a.load_cell) {
+    const std::string drift_title = title + ", yield drift " + std::to_string(a.drift_pct).substr(0, 4) + " %";
+    draw_figure(load_cell_figure(stem + ".csv", stem + "_load_cell.png", drift_title, a.drift_pct > 0.0));
+  }
+  for (const bool against_time : {true, false}) {
+    const std::string png = stem + (against_time ? "_force_time.png" : "_force_velocity.png");
+    draw_figure(strategies_figure(stem + ".csv", png, title, against_time, from, to));
+  }
+}
+
+// --out: each case's trace, and its plots unless --no-plot.
+bool write_out_dir(const Arguments& a, const DemandProfile& profile, const std::vector<CaseRun>& runs) {
+  std::error_code ec;
+  std::filesystem::create_directories(a.out_dir, ec);
+  if (ec) {
+    std::fprintf(stderr, "mrd-force-run: cannot create %s: %s\n", a.out_dir.c_str(), ec.message().c_str());
+    return false;
+  }
+  // A drifting plant's files apart from the steady plant's.
+  const std::string drift =
+      a.drift_pct > 0.0 ? "_drift" + std::to_string(static_cast<int>(std::lround(a.drift_pct))) : "";
+  for (const auto& run : runs) {
+    const std::string stem =
+        a.out_dir + "/force_run_" + std::string(mrd::tools::profile_name(a.profile_kind())) + "_" + run.name + drift;
+    if (!write_trace(stem + ".csv", profile, run.result)) {
+      std::fprintf(stderr, "mrd-force-run: cannot write %s.csv\n", stem.c_str());
+      return false;
+    }
+    std::printf("wrote %s.csv\n", stem.c_str());
+    if (!a.no_plot) draw_case(a, run, stem);
+  }
+  return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Force tracking on the simulated damper: clipped on-off, static Bingham inverse, J-A inverse "
+               "with and without the coil lag inverted"};
+  Arguments args;
+  add_options(app, args);
+  mrd::cli::set_up(app, "mrd-force-run");
+  if (const auto status = mrd::cli::parse(app, argc, argv)) return *status;
+  if (!mrd::cli::check_outputs("mrd-force-run", {&args.json_path}, {&args.out_dir})) return mrd::cli::kIo;
+  const auto plant = make_plant(args);
+  if (!plant) return mrd::cli::kUsage;
+
+  const DemandProfile profile = make_profile(args, *plant);
+  const std::vector<CaseRun> runs = run_cases(args, *plant, profile);
+  print_summary(args, *plant, profile, runs);
+  if (!args.json_path.empty() && !write_json(args, profile, runs)) return mrd::cli::kIo;
+  if (!args.out_dir.empty() && !write_out_dir(args, profile, runs)) return mrd::cli::kIo;
   return mrd::cli::kOk;
 }

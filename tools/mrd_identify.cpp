@@ -225,6 +225,34 @@ struct FitArguments {
   bool quiet = false;
 };
 
+// --write-config: the identified set into [damper.jiles_atherton] of the file (patched in place:
+// its order and comments stay), or of the compiled-in default when the file does not exist yet.
+int write_config(const std::string& path, const Point& best) {
+  std::error_code ec;
+  const bool existing = std::filesystem::exists(path, ec);
+  std::string text;
+  try {
+    text = existing ? mrd::record::read_text_file(path) : std::string(mrd::config::default_config_text());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "mrd-identify: --write-config: %s\n", e.what());
+    return mrd::cli::kIo;
+  }
+  toml::table ja;
+  for (int j = 0; j < kParameterCount; ++j) ja.insert(std::string(kParameterNames[static_cast<std::size_t>(j)]), best[j]);
+  toml::table damper;
+  damper.insert("jiles_atherton", std::move(ja));
+  toml::table values;
+  values.insert("damper", std::move(damper));
+  mrd::tools::round_floats(values);
+  try {
+    text = patch_toml(text, values);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "mrd-identify: --write-config %s: %s\n", path.c_str(), e.what());
+    return mrd::cli::kUsage;
+  }
+  return write_file(path, text) ? mrd::cli::kOk : mrd::cli::kIo;  // write_file says why
+}
+
 int run_fit(const FitArguments& args) {
   IdentifyOptions options = args.options;
   const auto algorithm = parse_algorithm(args.algo);
@@ -253,34 +281,8 @@ int run_fit(const FitArguments& args) {
     if (!why.empty()) std::fprintf(stderr, "mrd-identify: plot skipped: %s\n", why.c_str());
   }
   if (!args.config_path.empty()) {
-    // The identified set into [damper.jiles_atherton] of the file (patched in place: its order
-    // and comments stay), or of the compiled-in default when the file does not exist yet.
-    std::error_code ec;
-    const bool existing = std::filesystem::exists(args.config_path, ec);
-    std::string text;
-    try {
-      text = existing ? mrd::record::read_text_file(args.config_path) : std::string(mrd::config::default_config_text());
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "mrd-identify: --write-config: %s\n", e.what());
-      return mrd::cli::kIo;
-    }
     const Point best = result.polish ? result.polish->best : result.search.best;
-    toml::table ja;
-    for (int j = 0; j < kParameterCount; ++j) ja.insert(std::string(kParameterNames[static_cast<std::size_t>(j)]), best[j]);
-    toml::table damper;
-    damper.insert("jiles_atherton", std::move(ja));
-    toml::table values;
-    values.insert("damper", std::move(damper));
-    mrd::tools::round_floats(values);
-    try {
-      text = patch_toml(text, values);
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "mrd-identify: --write-config %s: %s\n", args.config_path.c_str(), e.what());
-      return mrd::cli::kUsage;
-    }
-    if (!write_file(args.config_path, text)) {  // write_file says why
-      return mrd::cli::kIo;
-    }
+    if (const int status = write_config(args.config_path, best); status != mrd::cli::kOk) return status;
   }
   if (!args.report_dir.empty()) {
     std::vector<const char*> words;
@@ -343,81 +345,118 @@ int run_synthetic(const SyntheticArguments& args) {
   return write_file(args.path, csv.str()) ? mrd::cli::kOk : mrd::cli::kIo;
 }
 
+// Every subcommand's arguments, and the subcommands, which tell the one the command line chose.
+struct Commands {
+  FitArguments fit;
+  CurveArguments evaluate_curve;
+  std::string evaluate_text;
+  CurveArguments compare_curve;
+  IdentifyOptions compare_options;
+  StudyArguments compare_study;
+  IdentifyOptions paper_options;
+  StudyArguments paper_study;
+  double table1_H_max = 60.0;
+  SyntheticArguments synthetic;
+  CLI::App* fit_cmd = nullptr;
+  CLI::App* evaluate_cmd = nullptr;
+  CLI::App* compare_cmd = nullptr;
+  CLI::App* paper_cmd = nullptr;
+};
+
+void add_fit_command(CLI::App& app, Commands& c) {
+  FitArguments& fit = c.fit;
+  c.fit_cmd = app.add_subcommand("fit", "fit Ms, a, alpha, k, c to the loops of a file");
+  CLI::App& cmd = *c.fit_cmd;
+  fit.curve.add_to(cmd);
+  add_search_options(cmd, fit.options);
+  cmd.add_option("--algo", fit.algo, "the search")
+      ->check(CLI::IsMember(algorithm_names()))
+      ->capture_default_str();
+  cmd.add_option("--start", fit.start_text, "start point Ms,a,alpha,k,c (default: estimated from the loops)");
+  cmd.add_option("--bounds", fit.bound_texts, "name=lo:hi, repeatable (default: +-100% of the start)");
+  cmd.add_flag("--polish", fit.polish, "refine with Levenberg-Marquardt after the global search");
+  cmd.add_flag("--quiet,-q", fit.quiet, "no progress line on stderr (it shows only when stderr is a terminal)");
+  cmd.add_option("--json", fit.json_path, "write the result as JSON");
+  cmd.add_option("--plot", fit.plot_dir, "folder for the B-H overlay and convergence PNGs");
+  cmd.add_option("--write-config", fit.config_path,
+                 "write the identified set into [damper.jiles_atherton] of this config (patched in place, "
+                 "comments kept; the default config when the file does not exist)");
+  cmd.add_option("--report", fit.report_dir,
+                 "write report.html here: B-H measured and fitted, residual, parameters with standard "
+                 "deviations, provenance (docs/IDENTIFICATION.md)");
+}
+
+void add_evaluate_command(CLI::App& app, Commands& c) {
+  c.evaluate_cmd = app.add_subcommand("evaluate", "print the RMSE of a given Ms,a,alpha,k,c on a file");
+  c.evaluate_curve.add_to(*c.evaluate_cmd);
+  c.evaluate_cmd->add_option("params", c.evaluate_text, "Ms,a,alpha,k,c")->required();
+}
+
+void add_compare_command(CLI::App& app, Commands& c) {
+  c.compare_cmd = app.add_subcommand("compare", "run every algorithm over several seeds on a file");
+  c.compare_curve.add_to(*c.compare_cmd);
+  add_search_options(*c.compare_cmd, c.compare_options);
+  c.compare_study.add_to(*c.compare_cmd, "compare");
+}
+
+void add_paper_command(CLI::App& app, Commands& c) {
+  c.paper_cmd = app.add_subcommand("reproduce-paper", "Section 4.1 protocol on two known sets, all algorithms");
+  add_search_options(*c.paper_cmd, c.paper_options);
+  c.paper_study.add_to(*c.paper_cmd, "reproduce-paper");
+  c.paper_cmd->add_option("--table1-amplitude", c.table1_H_max,
+                          "loop amplitude for the Table 1 set [A/m]; physical up to ~81")
+      ->check(mrd::cli::finite_in(1.0, 1e6))->capture_default_str();
+}
+
+void add_synthetic_command(CLI::App& app, Commands& c) {
+  SyntheticArguments& synthetic = c.synthetic;
+  auto* cmd = app.add_subcommand("synthetic", "write one simulated major loop of a known set to a CSV");
+  cmd->add_option("out", synthetic.path, "CSV to write")->required();
+  cmd->add_option("--truth", synthetic.truth_text, "Ms,a,alpha,k,c")->required();
+  cmd->add_option("--H-max", synthetic.H_max, "loop amplitude [A/m]")->required()
+      ->check(mrd::cli::finite_in(1e-9, 1e9));
+  cmd->add_option("--points", synthetic.points, "points on the loop")
+      ->check(CLI::Range(8, 10000000))->capture_default_str();
+}
+
+// Every output can be written, and every folder of results exists, before the work starts.
+bool check_outputs(const Commands& c) {
+  return mrd::cli::check_outputs("mrd-identify", {&c.fit.json_path, &c.fit.config_path, &c.synthetic.path},
+                                 {&c.fit.plot_dir, &c.fit.report_dir, &c.compare_study.out_dir,
+                                  &c.paper_study.out_dir});
+}
+
+int run_command(const Commands& c) {
+  if (*c.fit_cmd) return run_fit(c.fit);
+  if (*c.evaluate_cmd) return run_evaluate(c.evaluate_curve, c.evaluate_text);
+  if (*c.compare_cmd) {
+    return run_compare(c.compare_curve, c.compare_study.study(c.compare_options), c.compare_study.out_dir,
+                       c.compare_study.quiet);
+  }
+  if (*c.paper_cmd) {
+    return reproduce_paper(c.paper_study.study(c.paper_options), c.table1_H_max, c.paper_study.out_dir,
+                           c.paper_study.quiet);
+  }
+  return run_synthetic(c.synthetic);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"Identify Jiles-Atherton parameters from measured B-H loops (Eq. 15)"};
   mrd::cli::set_up(app, "mrd-identify");
   app.require_subcommand(1);
-
-  FitArguments fit;
-  fit.argv.assign(argv, argv + argc);
-  auto* fit_cmd = app.add_subcommand("fit", "fit Ms, a, alpha, k, c to the loops of a file");
-  fit.curve.add_to(*fit_cmd);
-  add_search_options(*fit_cmd, fit.options);
-  fit_cmd->add_option("--algo", fit.algo, "the search")
-      ->check(CLI::IsMember(algorithm_names()))
-      ->capture_default_str();
-  fit_cmd->add_option("--start", fit.start_text, "start point Ms,a,alpha,k,c (default: estimated from the loops)");
-  fit_cmd->add_option("--bounds", fit.bound_texts, "name=lo:hi, repeatable (default: +-100% of the start)");
-  fit_cmd->add_flag("--polish", fit.polish, "refine with Levenberg-Marquardt after the global search");
-  fit_cmd->add_flag("--quiet,-q", fit.quiet, "no progress line on stderr (it shows only when stderr is a terminal)");
-  fit_cmd->add_option("--json", fit.json_path, "write the result as JSON");
-  fit_cmd->add_option("--plot", fit.plot_dir, "folder for the B-H overlay and convergence PNGs");
-  fit_cmd->add_option("--write-config", fit.config_path,
-                      "write the identified set into [damper.jiles_atherton] of this config (patched in place, "
-                      "comments kept; the default config when the file does not exist)");
-  fit_cmd->add_option("--report", fit.report_dir,
-                      "write report.html here: B-H measured and fitted, residual, parameters with standard "
-                      "deviations, provenance (docs/IDENTIFICATION.md)");
-
-  CurveArguments evaluate_curve;
-  std::string evaluate_text;
-  auto* evaluate_cmd = app.add_subcommand("evaluate", "print the RMSE of a given Ms,a,alpha,k,c on a file");
-  evaluate_curve.add_to(*evaluate_cmd);
-  evaluate_cmd->add_option("params", evaluate_text, "Ms,a,alpha,k,c")->required();
-
-  CurveArguments compare_curve;
-  IdentifyOptions compare_options;
-  StudyArguments compare_study;
-  auto* compare_cmd = app.add_subcommand("compare", "run every algorithm over several seeds on a file");
-  compare_curve.add_to(*compare_cmd);
-  add_search_options(*compare_cmd, compare_options);
-  compare_study.add_to(*compare_cmd, "compare");
-
-  IdentifyOptions paper_options;
-  StudyArguments paper_study;
-  double table1_H_max = 60.0;
-  auto* paper_cmd = app.add_subcommand("reproduce-paper", "Section 4.1 protocol on two known sets, all algorithms");
-  add_search_options(*paper_cmd, paper_options);
-  paper_study.add_to(*paper_cmd, "reproduce-paper");
-  paper_cmd->add_option("--table1-amplitude", table1_H_max,
-                        "loop amplitude for the Table 1 set [A/m]; physical up to ~81")
-      ->check(mrd::cli::finite_in(1.0, 1e6))->capture_default_str();
-
-  SyntheticArguments synthetic;
-  auto* synthetic_cmd = app.add_subcommand("synthetic", "write one simulated major loop of a known set to a CSV");
-  synthetic_cmd->add_option("out", synthetic.path, "CSV to write")->required();
-  synthetic_cmd->add_option("--truth", synthetic.truth_text, "Ms,a,alpha,k,c")->required();
-  synthetic_cmd->add_option("--H-max", synthetic.H_max, "loop amplitude [A/m]")->required()
-      ->check(mrd::cli::finite_in(1e-9, 1e9));
-  synthetic_cmd->add_option("--points", synthetic.points, "points on the loop")
-      ->check(CLI::Range(8, 10000000))->capture_default_str();
-
+  Commands commands;
+  commands.fit.argv.assign(argv, argv + argc);
+  add_fit_command(app, commands);  // the subcommands in the order --help lists them
+  add_evaluate_command(app, commands);
+  add_compare_command(app, commands);
+  add_paper_command(app, commands);
+  add_synthetic_command(app, commands);
   if (const auto status = mrd::cli::parse(app, argc, argv)) return *status;
-  // Every output can be written, and every folder of results exists, before the work starts.
-  if (!mrd::cli::check_outputs("mrd-identify", {&fit.json_path, &fit.config_path, &synthetic.path},
-                                {&fit.plot_dir, &fit.report_dir, &compare_study.out_dir, &paper_study.out_dir})) {
-    return mrd::cli::kIo;
-  }
+  if (!check_outputs(commands)) return mrd::cli::kIo;
   try {
-    if (*fit_cmd) return run_fit(fit);
-    if (*evaluate_cmd) return run_evaluate(evaluate_curve, evaluate_text);
-    if (*compare_cmd) return run_compare(compare_curve, compare_study.study(compare_options), compare_study.out_dir,
-                                          compare_study.quiet);
-    if (*paper_cmd) return reproduce_paper(paper_study.study(paper_options), table1_H_max, paper_study.out_dir,
-                                               paper_study.quiet);
-    return run_synthetic(synthetic);
+    return run_command(commands);
   } catch (const CLI::Error& e) {  // a value checked after parsing (--start, --bounds, ...)
     app.exit(e);
     return mrd::cli::kUsage;

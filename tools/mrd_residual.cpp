@@ -27,51 +27,56 @@ std::vector<std::string> candidate_names() {
   return names;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  CLI::App app{"Fit the damper model to a recorded run, trace the residual to missing effects, add them"};
-  mrd::cli::set_up(app, "mrd-residual");
+// The command line, as parsed; analyse() completes the options with the config and the --no- flags.
+struct Arguments {
   std::vector<std::string> run_paths;
   std::string json_path, plot_dir, config_out, report_dir;
   FitSeriesOptions series_options;
   ResidualOptions options;
-  app.add_option("runs", run_paths,
-                 "one run, or several analysed together (one model for all, e.g. tests at several currents): "
-                 "delimited text, a MATLAB .mat file or a candump -l log, as mrd-replay reads them")
-      ->required();
   RunOptionsCli run_options;
-  run_options.add_to(app);
-  app.add_option("--json", json_path, "write the result as JSON");
-  app.add_option("--write-config", config_out,
+  bool accept_unphysical = false;
+  bool spencer = false;
+  bool no_screening = false;
+  bool no_discovery = false;
+  bool quiet = false;
+};
+
+void add_output_options(CLI::App& app, Arguments& a) {
+  app.add_option("--json", a.json_path, "write the result as JSON");
+  app.add_option("--write-config", a.config_out,
                  "write the updated config (the fitted damper, accepted effects on); refused (exit 2) when a "
                  "fitted parameter sits on its physical range's edge, unless --accept-unphysical");
-  bool accept_unphysical = false;
-  app.add_flag("--accept-unphysical", accept_unphysical,
+  app.add_flag("--accept-unphysical", a.accept_unphysical,
                "write --write-config even with parameters on their physical range's edge (they are listed)");
-  app.add_option("--plot", plot_dir, "folder for the force-displacement, residual-time and residual-phase PNGs");
-  app.add_option("--report", report_dir,
+  app.add_option("--plot", a.plot_dir, "folder for the force-displacement, residual-time and residual-phase PNGs");
+  app.add_option("--report", a.report_dir,
                  "write report.html here: fit, residual structure, parameters with standard deviations, "
                  "candidates, screening, provenance (docs/CLOSING-THE-LOOP.md)");
-  bool spencer = false;
-  app.add_flag("--reference-spencer-dyke", spencer,
+  app.add_flag("--reference-spencer-dyke", a.spencer,
                "also report Spencer 1997's modified Bouc-Wen model with its published parameters for "
                "Dyke's prototype damper (runs that logged the command voltage)");
-  app.add_option("--candidates", options.candidates, "candidate effects, comma-separated (default: all)")
+}
+
+// What the search fits: the candidates, the samples, the library of terms, the loss.
+void add_fit_options(CLI::App& app, Arguments& a) {
+  app.add_option("--candidates", a.options.candidates, "candidate effects, comma-separated (default: all)")
       ->delimiter(',')
       ->check(CLI::IsMember(candidate_names()));
-  bool no_screening = false;
-  app.add_flag("--no-screening", no_screening,
+  app.add_flag("--no-screening", a.no_screening,
                "fit every sample, even those screening finds no damper produced (clipped, stuck, spikes, gaps)");
-  app.add_flag("--settle-start", series_options.settle_start,
+  app.add_flag("--settle-start", a.series_options.settle_start,
                "set aside each run's start until the coil current first reaches its extreme and the rod has "
                "travelled 5 % of its stroke: the core had a history before the record began (docs/CLOSING-THE-LOOP.md, \"Bad input\")");
-  bool no_discovery = false;
-  app.add_flag("--no-discovery", no_discovery,
+  app.add_flag("--no-discovery", a.no_discovery,
                "do not regress what the named effects leave on the library of terms (docs/CLOSING-THE-LOOP.md)");
-  app.add_flag("--robust-fit", options.robust_fit,
+  app.add_flag("--robust-fit", a.options.robust_fit,
                "where the least-squares base leaves a fault no screening rule names, identify the base again "
                "under a robust loss, and run the candidates' fits and judgements under it (docs/CLOSING-THE-LOOP.md, \"Robust fit\")");
+}
+
+// How an effect is judged, and how the search runs.
+void add_search_options(CLI::App& app, Arguments& a) {
+  ResidualOptions& options = a.options;
   app.add_option("--threshold", options.minimum_reduction,
                  "margin (a fraction of the validation RMS) by which one explanation must beat another to tell them "
                  "apart: ambiguity, the library's terms against an effect, the discovery's terms")
@@ -86,7 +91,7 @@ int main(int argc, char** argv) {
   app.add_option("--claim-noise-share", options.claim.noise_share,
                  "least fall of the held-out mean square an effect must show, as a share of the noise floor's variance")
       ->check(mrd::cli::finite_in(0.0, 100.0))->capture_default_str();
-  app.add_option("--velocity-cutoff", series_options.velocity_cutoff,
+  app.add_option("--velocity-cutoff", a.series_options.velocity_cutoff,
                  "[Hz] zero-phase velocity filter, for runs without a velocity column (0: from the motion's spectrum)")
       ->check(mrd::cli::finite_in(0.0, 1e6))->capture_default_str();
   app.add_option("--max-fit-samples", options.max_fit_samples, "fits run on every k-th sample of the runs, at most this many")
@@ -94,80 +99,154 @@ int main(int argc, char** argv) {
   app.add_option("--threads", options.threads, "worker threads (0: every core)")
       ->check(CLI::Range(0u, 1024u))->capture_default_str();
   app.add_option("--seed", options.seed, "seed of the swarms")->capture_default_str();
-  bool quiet = false;
-  app.add_flag("--quiet,-q", quiet, "no progress line on stderr (it shows only when stderr is a terminal)");
-  if (const auto status = mrd::cli::parse(app, argc, argv)) return *status;
-  options.discover = !no_discovery;
-  series_options.screen = !no_screening;
+  app.add_flag("--quiet,-q", a.quiet, "no progress line on stderr (it shows only when stderr is a terminal)");
+}
 
-  const auto config = run_options.load_config();
-  if (!config) return mrd::cli::kUsage;
-  if (spencer && run_paths.size() != 1) {
+void add_options(CLI::App& app, Arguments& a) {
+  app.add_option("runs", a.run_paths,
+                 "one run, or several analysed together (one model for all, e.g. tests at several currents): "
+                 "delimited text, a MATLAB .mat file or a candump -l log, as mrd-replay reads them")
+      ->required();
+  a.run_options.add_to(app);
+  add_output_options(app, a);  // in the order --help lists them
+  add_fit_options(app, a);
+  add_search_options(app, a);
+}
+
+// kOk, or the status to exit with. Every output is checked before the work, which may take minutes.
+int check_arguments(const Arguments& a) {
+  if (a.spencer && a.run_paths.size() != 1) {
     std::fprintf(stderr, "mrd-residual: --reference-spencer-dyke takes one run\n");
     return mrd::cli::kUsage;
   }
-  // Every output is checked before the work, which may take minutes.
-  if (!mrd::cli::check_outputs("mrd-residual", {&json_path, &config_out}, {&plot_dir, &report_dir})) return mrd::cli::kIo;
-  options.start = config->config.law.damper;
-  try {
-    const mrd::record::RunReadOptions read = run_options.read_options(*config);
-    series_options.amps_per_volt = run_options.amps_per_volt();
-    std::vector<mrd::record::RecordedRun> runs;
-    for (const auto& path : run_paths) runs.push_back(mrd::record::read_recorded_run(path, read));
-    const FitSeries series = make_fit_series(runs, series_options);
-    auto progress = TerminalProgress::on_stderr(quiet);
-    options.progress = progress.get();
-    const ResidualResult result = find_missing_effects(series, options);
-    progress.reset();  // ends the status line before the summary
+  if (!mrd::cli::check_outputs("mrd-residual", {&a.json_path, &a.config_out}, {&a.plot_dir, &a.report_dir})) {
+    return mrd::cli::kIo;
+  }
+  return mrd::cli::kOk;
+}
 
-    std::fputs(residual_summary(runs, result).c_str(), stdout);
-    ForceFitTraces traces = residual_traces(runs, series, result);
-    if (spencer) {
-      traces.reference = spencer_dyke_prediction(runs.front(), series);
-      traces.reference_label = "Spencer 1997 (published parameters)";
-      const ForceError s = force_error(series.force, traces.reference);
-      const ForceError ours = force_error(series.force, result.predicted_after);
-      std::printf("reference, Spencer 1997 (published parameters): RMS %.4g N, max %.4g N, NRMSE %.4g; "
-                  "ours before %.4g, after %.4g\n",
-                  s.rms, s.max, s.nrmse, result.before.all / ours.measured_range, ours.nrmse);
-    }
-    int status = 0;
-    const ForceFitFigures fit = force_fit_figures(traces);
-    std::fputs(per_run_text(fit).c_str(), stdout);
-    if (!json_path.empty() && !mrd::record::write_text_file(json_path, residual_json(result, &fit))) {
-      std::fprintf(stderr, "mrd-residual: cannot write %s\n", json_path.c_str());
-      status = mrd::cli::kIo;
-    }
-    if (!config_out.empty() && !result.unphysical.empty() && !accept_unphysical) {
-      std::fprintf(stderr, "mrd-residual: --write-config: %s not written: %zu parameter(s) outside what a damper has "
-                   "(listed as 'unphysical:' above); --accept-unphysical writes it anyway\n",
-                   config_out.c_str(), result.unphysical.size());
-      status = mrd::cli::kBadInput;
-    } else if (!config_out.empty()) {
-      const std::string text = run_options.config_path().empty()
-                                   ? std::string(mrd::config::default_config_text())
-                                   : mrd::record::read_text_file(run_options.config_path());
-      if (!mrd::record::write_text_file(config_out, updated_config(text, result))) {
-        std::fprintf(stderr, "mrd-residual: cannot write %s\n", config_out.c_str());
-        status = mrd::cli::kIo;
-      }
-    }
-    if (!plot_dir.empty()) {
-      const std::string name = runs.size() == 1 ? runs.front().name : std::to_string(runs.size()) + " runs";
-      if (const auto why = plot_residual(series, result, name, plot_dir); !why.empty())
-        std::fprintf(stderr, "mrd-residual: plot skipped: %s\n", why.c_str());
-    }
-    if (!report_dir.empty()) {
-      std::vector<std::string> inputs = run_paths;
-      if (!run_options.config_path().empty()) inputs.push_back(run_options.config_path());
-      const Provenance provenance =
-          provenance_of("mrd-residual", argc, argv, inputs, std::to_string(options.seed));
-      if (const auto why = write_residual_report(runs, series, result, traces, provenance, report_dir); !why.empty()) {
-        std::fprintf(stderr, "mrd-residual: report: %s\n", why.c_str());
-        status = 3;
-      }
-    }
-    return status;
+// The runs, the series fitted to, and what the search found in them.
+struct Analysis {
+  std::vector<mrd::record::RecordedRun> runs;
+  FitSeries series;
+  ResidualResult result;
+};
+
+// Throws InputError for a run that cannot be read.
+Analysis analyse(const Arguments& a, const mrd::config::LoadedConfig& config) {
+  const mrd::record::RunReadOptions read = a.run_options.read_options(config);
+  FitSeriesOptions series_options = a.series_options;
+  series_options.screen = !a.no_screening;
+  series_options.amps_per_volt = a.run_options.amps_per_volt();
+  Analysis analysis;
+  for (const auto& path : a.run_paths) analysis.runs.push_back(mrd::record::read_recorded_run(path, read));
+  analysis.series = make_fit_series(analysis.runs, series_options);
+  ResidualOptions options = a.options;
+  options.discover = !a.no_discovery;
+  options.start = config.config.law.damper;
+  auto progress = TerminalProgress::on_stderr(a.quiet);
+  options.progress = progress.get();
+  analysis.result = find_missing_effects(analysis.series, options);
+  progress.reset();  // ends the status line before the summary
+  return analysis;
+}
+
+// --reference-spencer-dyke: Spencer's prediction beside ours in the traces, its figures printed.
+void add_spencer_reference(const Analysis& analysis, ForceFitTraces& traces) {
+  traces.reference = spencer_dyke_prediction(analysis.runs.front(), analysis.series);
+  traces.reference_label = "Spencer 1997 (published parameters)";
+  const ForceError s = force_error(analysis.series.force, traces.reference);
+  const ForceError ours = force_error(analysis.series.force, analysis.result.predicted_after);
+  std::printf("reference, Spencer 1997 (published parameters): RMS %.4g N, max %.4g N, NRMSE %.4g; "
+              "ours before %.4g, after %.4g\n",
+              s.rms, s.max, s.nrmse, analysis.result.before.all / ours.measured_range, ours.nrmse);
+}
+
+// --write-config: the config read (or the default) with the fitted damper; refused while a
+// parameter is unphysical, unless --accept-unphysical.
+int write_config(const Arguments& a, const ResidualResult& result) {
+  if (!result.unphysical.empty() && !a.accept_unphysical) {
+    std::fprintf(stderr, "mrd-residual: --write-config: %s not written: %zu parameter(s) outside what a damper has "
+                 "(listed as 'unphysical:' above); --accept-unphysical writes it anyway\n",
+                 a.config_out.c_str(), result.unphysical.size());
+    return mrd::cli::kBadInput;
+  }
+  const std::string& config_path = a.run_options.config_path();
+  const std::string text = config_path.empty() ? std::string(mrd::config::default_config_text())
+                                               : mrd::record::read_text_file(config_path);
+  if (!mrd::record::write_text_file(a.config_out, updated_config(text, result))) {
+    std::fprintf(stderr, "mrd-residual: cannot write %s\n", a.config_out.c_str());
+    return mrd::cli::kIo;
+  }
+  return mrd::cli::kOk;
+}
+
+bool write_report(const Arguments& a, const Analysis& analysis, const ForceFitTraces& traces, int argc,
+                  char** argv) {
+  std::vector<std::string> inputs = a.run_paths;
+  if (!a.run_options.config_path().empty()) inputs.push_back(a.run_options.config_path());
+  const Provenance provenance = provenance_of("mrd-residual", argc, argv, inputs, std::to_string(a.options.seed));
+  if (const auto why =
+          write_residual_report(analysis.runs, analysis.series, analysis.result, traces, provenance, a.report_dir);
+      !why.empty()) {
+    std::fprintf(stderr, "mrd-residual: report: %s\n", why.c_str());
+    return false;
+  }
+  return true;
+}
+
+// What the outputs are drawn from: the measured and predicted forces, and their figures.
+struct Fit {
+  ForceFitTraces traces;
+  ForceFitFigures figures;
+};
+
+// The summary and the per-run figures on stdout.
+Fit summarise(const Arguments& a, const Analysis& analysis) {
+  std::fputs(residual_summary(analysis.runs, analysis.result).c_str(), stdout);
+  Fit fit{residual_traces(analysis.runs, analysis.series, analysis.result), {}};
+  if (a.spencer) add_spencer_reference(analysis, fit.traces);
+  fit.figures = force_fit_figures(fit.traces);
+  std::fputs(per_run_text(fit.figures).c_str(), stdout);
+  return fit;
+}
+
+// Every output asked for, each tried whatever the others did; the status of the last that failed.
+int write_outputs(const Arguments& a, const Analysis& analysis, const Fit& fit, int argc, char** argv) {
+  int status = mrd::cli::kOk;
+  if (!a.json_path.empty() && !mrd::record::write_text_file(a.json_path, residual_json(analysis.result, &fit.figures))) {
+    std::fprintf(stderr, "mrd-residual: cannot write %s\n", a.json_path.c_str());
+    status = mrd::cli::kIo;
+  }
+  if (!a.config_out.empty()) {
+    if (const int written = write_config(a, analysis.result); written != mrd::cli::kOk) status = written;
+  }
+  if (!a.plot_dir.empty()) {
+    const auto& runs = analysis.runs;
+    const std::string name = runs.size() == 1 ? runs.front().name : std::to_string(runs.size()) + " runs";
+    if (const auto why = plot_residual(analysis.series, analysis.result, name, a.plot_dir); !why.empty())
+      std::fprintf(stderr, "mrd-residual: plot skipped: %s\n", why.c_str());
+  }
+  if (!a.report_dir.empty() && !write_report(a, analysis, fit.traces, argc, argv)) status = mrd::cli::kIo;
+  return status;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Fit the damper model to a recorded run, trace the residual to missing effects, add them"};
+  mrd::cli::set_up(app, "mrd-residual");
+  Arguments args;
+  add_options(app, args);
+  if (const auto status = mrd::cli::parse(app, argc, argv)) return *status;
+
+  const auto config = args.run_options.load_config();
+  if (!config) return mrd::cli::kUsage;
+  if (const int status = check_arguments(args); status != mrd::cli::kOk) return status;
+  try {
+    const Analysis analysis = analyse(args, *config);
+    const Fit fit = summarise(args, analysis);
+    return write_outputs(args, analysis, fit, argc, argv);
   } catch (const mrd::record::InputError& e) {
     std::fprintf(stderr, "mrd-residual: %s\n", e.what());
     return mrd::cli::kBadInput;

@@ -42,6 +42,115 @@ std::vector<double> measured_B(const BHCurve& curve) {
   return B;
 }
 
+// The report's sections, in their order: the fit's figures, the parameters, the loops and their
+// residual, the convergence.
+
+void report_fit(HtmlReport& report, const IdentifyResult& r, const IdentifyStatistics& statistics,
+                const BHCurve& curve, const std::string& label) {
+  report.paragraph(format("J-A parameters (Eq. 1-10) identified from %zu B-H points in %zu loop(s) by %s "
+                          "(Eq. 14-22 for the improved PSO).",
+                          curve.points(), curve.loops.size(), label.c_str()));
+  const double rmse = r.polish ? r.polish->rmse : r.fit.rmse;
+  report.figures("Fit (as the JSON)", {{"fit, 100 (1 - |B - Bhat| / |B - mean(B)|)", "fit_percent", statistics.fit_percent, "%"},
+                                       {"RMSE, Eq. 15", r.polish ? "polish.rmse_T" : "rmse_T", rmse, "T"},
+                                       {"residual standard error", "sigma_T", statistics.uncertainty.sigma, "T"},
+                                       {"model evaluations", "evaluations", static_cast<double>(r.search.evaluations), ""}});
+}
+
+void report_parameters(HtmlReport& report, const IdentifyResult& r, const IdentifyStatistics& statistics) {
+  const Point best = final_point(r);
+  std::vector<HtmlReport::Parameter> rows;
+  static constexpr std::array<const char*, kParameterCount> kUnits = {"A/m", "A/m", "-", "A/m", "-"};
+  for (std::size_t j = 0; j < static_cast<std::size_t>(kParameterCount); ++j) {
+    const std::string name(kParameterNames[j]);
+    rows.push_back({name, kUnits[j], best[static_cast<Eigen::Index>(j)], statistics.uncertainty.standard_deviation[j],
+                    (r.polish ? "polish.params." : "params.") + name, "params_sd." + name});
+  }
+  report.heading("Parameters");
+  report.parameters(statistics.uncertainty.singular
+                        ? "Identified set (J^T J is singular: the loops do not determine every parameter)"
+                        : "Identified set: standard deviations from sigma^2 (J^T J)^-1 at the optimum (central differences)",
+                    rows);
+  std::vector<std::string> names(kParameterNames.begin(), kParameterNames.end());
+  report.correlation_matrix("Correlation of the estimates", names, statistics.uncertainty.correlation);
+}
+
+// The loops point by point, measured and fitted, with a NaN row after each loop so that gnuplot
+// lifts the pen between loops; `point_residual` without them, for its autocorrelation.
+struct LoopColumns {
+  std::vector<double> index, H, measured, fitted, residual;
+  std::vector<double> point_residual;
+};
+
+LoopColumns loop_columns(const BHCurve& curve, const std::vector<double>& fitted) {
+  const std::vector<double> B = measured_B(curve);
+  LoopColumns c;
+  std::size_t i = 0;
+  for (const auto& loop : curve.loops) {
+    for (std::size_t j = 0; j < loop.H.size(); ++j, ++i) {
+      c.H.push_back(loop.H[j]);
+      c.measured.push_back(B[i]);
+      c.fitted.push_back(fitted[i]);
+      c.index.push_back(static_cast<double>(i));
+      c.residual.push_back(B[i] - fitted[i]);
+    }
+    for (auto* column : {&c.H, &c.measured, &c.fitted, &c.index, &c.residual}) column->push_back(NAN);
+  }
+  c.point_residual.resize(B.size());
+  for (std::size_t k = 0; k < B.size(); ++k) c.point_residual[k] = B[k] - fitted[k];
+  return c;
+}
+
+void report_loops(HtmlReport& report, const LoopColumns& c, const std::string& label, double fit_percent) {
+  report.heading("Measured and fitted B-H loops");
+  const std::string dat = report.data("bh", {"point", "H_A_per_m", "B_T", "B_fitted_T", "residual_T"},
+                                      {&c.index, &c.H, &c.measured, &c.fitted, &c.residual}, c.H.size());
+  report.plot("bh_loops", format("B against H, measured and fitted (%s), fit %.2f %%", label.c_str(), fit_percent),
+              {.x = {"H", "A/m"},
+               .y = {"B", "T"},
+               .data = {dat},
+               .series = {{"measured", plot::column(2), plot::column(3), plot::points(plot::colour::kGrey, 0.5),
+                           plot::Layer::measured},
+                          {"J-A fit", plot::column(2), plot::column(4), plot::lines(plot::colour::kRed, 2.0)}}});
+  report.plot("bh_time", "B point by point along the loops, measured and fitted",
+              {.x = {"point", ""},
+               .y = {"B", "T"},
+               .data = {dat},
+               .series = {{"measured", plot::column(1), plot::column(3), plot::lines(plot::colour::kDarkGrey),
+                           plot::Layer::measured},
+                          {"J-A fit", plot::column(1), plot::column(4), plot::lines(plot::colour::kRed)}}});
+  report.heading("Residual");
+  report.plot("bh_residual", "B residual, measured - fitted, point by point",
+              {.x = {"point", ""},
+               .y = {"residual", "T"},
+               .data = {dat},
+               .series = {{"measured - fitted", plot::column(1), plot::column(5), plot::lines(plot::colour::kBlue)}}});
+  report.plot("bh_residual_H", "B residual against H (structure the J-A set leaves)",
+              {.x = {"H", "A/m"},
+               .y = {"residual", "T"},
+               .data = {dat},
+               .series = {{"measured - fitted", plot::column(2), plot::column(5), plot::points(plot::colour::kBlue, 0.3)}}});
+  const std::size_t lags = std::min<std::size_t>(100, c.point_residual.size() / 4);
+  add_autocorrelation_plot(report, c.point_residual, lags, 1.0, {"lag", "points"},
+                           format("autocorrelation of the B residual, 95 %% bounds +-%.3g",
+                                  autocorrelation_bound_95(c.point_residual.size())));
+}
+
+void report_convergence(HtmlReport& report, const IdentifyResult& r) {
+  report.heading("Convergence");
+  // The search restarts its box now and then; the global best is the best of all boxes so far
+  // and never rises, the box's own best may.
+  std::vector<double> evaluations, fitness, box;
+  for (const auto& c : r.search.convergence) {
+    evaluations.push_back(static_cast<double>(c.evaluations));
+    box.push_back(c.best_fitness);
+    fitness.push_back(fitness.empty() ? c.best_fitness : std::min(fitness.back(), c.best_fitness));
+  }
+  const std::string conv =
+      report.data("convergence", {"evaluations", "best_fitness_T", "box_best_fitness_T"}, {&evaluations, &fitness, &box});
+  report.plot("convergence", "best fitness of the global search against model evaluations", convergence_panel(conv));
+}
+
 }  // namespace
 
 IdentifyStatistics identify_statistics(const IdentifyResult& r, const BHObjective& objective, const BHCurve& curve) {
@@ -166,91 +275,11 @@ std::string write_identify_report(const IdentifyResult& r, const IdentifyStatist
                                   const std::string& directory) {
   const std::string label = std::string(algorithm_name(r.algorithm)) + (r.polish ? " + Levenberg-Marquardt" : "");
   HtmlReport report("mrd-identify: " + curve.source, directory);
-  report.paragraph(format("J-A parameters (Eq. 1-10) identified from %zu B-H points in %zu loop(s) by %s "
-                          "(Eq. 14-22 for the improved PSO).",
-                          curve.points(), curve.loops.size(), label.c_str()));
-  const double rmse = r.polish ? r.polish->rmse : r.fit.rmse;
-  report.figures("Fit (as the JSON)", {{"fit, 100 (1 - |B - Bhat| / |B - mean(B)|)", "fit_percent", statistics.fit_percent, "%"},
-                                       {"RMSE, Eq. 15", r.polish ? "polish.rmse_T" : "rmse_T", rmse, "T"},
-                                       {"residual standard error", "sigma_T", statistics.uncertainty.sigma, "T"},
-                                       {"model evaluations", "evaluations", static_cast<double>(r.search.evaluations), ""}});
-  const Point best = final_point(r);
-  std::vector<HtmlReport::Parameter> rows;
-  static constexpr std::array<const char*, kParameterCount> kUnits = {"A/m", "A/m", "-", "A/m", "-"};
-  for (std::size_t j = 0; j < static_cast<std::size_t>(kParameterCount); ++j) {
-    const std::string name(kParameterNames[j]);
-    rows.push_back({name, kUnits[j], best[static_cast<Eigen::Index>(j)], statistics.uncertainty.standard_deviation[j],
-                    (r.polish ? "polish.params." : "params.") + name, "params_sd." + name});
-  }
-  report.heading("Parameters");
-  report.parameters(statistics.uncertainty.singular
-                        ? "Identified set (J^T J is singular: the loops do not determine every parameter)"
-                        : "Identified set: standard deviations from sigma^2 (J^T J)^-1 at the optimum (central differences)",
-                    rows);
-  std::vector<std::string> names(kParameterNames.begin(), kParameterNames.end());
-  report.correlation_matrix("Correlation of the estimates", names, statistics.uncertainty.correlation);
-
-  const std::vector<double> B = measured_B(curve);
-  const std::vector<double> fitted = objective.simulate(to_params(best));
-  // Per point, with a NaN row after each loop so that gnuplot lifts the pen between loops.
-  std::vector<double> H, Bm, Bf, index, residual;
-  std::size_t i = 0;
-  for (const auto& loop : curve.loops) {
-    for (std::size_t j = 0; j < loop.H.size(); ++j, ++i) {
-      H.push_back(loop.H[j]);
-      Bm.push_back(B[i]);
-      Bf.push_back(fitted[i]);
-      index.push_back(static_cast<double>(i));
-      residual.push_back(B[i] - fitted[i]);
-    }
-    for (auto* column : {&H, &Bm, &Bf, &index, &residual}) column->push_back(NAN);
-  }
-  report.heading("Measured and fitted B-H loops");
-  const std::string dat = report.data("bh", {"point", "H_A_per_m", "B_T", "B_fitted_T", "residual_T"},
-                                      {&index, &H, &Bm, &Bf, &residual}, H.size());
-  report.plot("bh_loops", format("B against H, measured and fitted (%s), fit %.2f %%", label.c_str(), statistics.fit_percent),
-              {.x = {"H", "A/m"},
-               .y = {"B", "T"},
-               .data = {dat},
-               .series = {{"measured", plot::column(2), plot::column(3), plot::points(plot::colour::kGrey, 0.5),
-                           plot::Layer::measured},
-                          {"J-A fit", plot::column(2), plot::column(4), plot::lines(plot::colour::kRed, 2.0)}}});
-  report.plot("bh_time", "B point by point along the loops, measured and fitted",
-              {.x = {"point", ""},
-               .y = {"B", "T"},
-               .data = {dat},
-               .series = {{"measured", plot::column(1), plot::column(3), plot::lines(plot::colour::kDarkGrey),
-                           plot::Layer::measured},
-                          {"J-A fit", plot::column(1), plot::column(4), plot::lines(plot::colour::kRed)}}});
-  report.heading("Residual");
-  report.plot("bh_residual", "B residual, measured - fitted, point by point",
-              {.x = {"point", ""},
-               .y = {"residual", "T"},
-               .data = {dat},
-               .series = {{"measured - fitted", plot::column(1), plot::column(5), plot::lines(plot::colour::kBlue)}}});
-  report.plot("bh_residual_H", "B residual against H (structure the J-A set leaves)",
-              {.x = {"H", "A/m"},
-               .y = {"residual", "T"},
-               .data = {dat},
-               .series = {{"measured - fitted", plot::column(2), plot::column(5), plot::points(plot::colour::kBlue, 0.3)}}});
-  const std::size_t lags = std::min<std::size_t>(100, B.size() / 4);
-  std::vector<double> point_residual(B.size());
-  for (std::size_t k = 0; k < B.size(); ++k) point_residual[k] = B[k] - fitted[k];
-  add_autocorrelation_plot(report, point_residual, lags, 1.0, {"lag", "points"},
-                           format("autocorrelation of the B residual, 95 %% bounds +-%.3g",
-                                  autocorrelation_bound_95(point_residual.size())));
-  report.heading("Convergence");
-  // The search restarts its box now and then; the global best is the best of all boxes so far
-  // and never rises, the box's own best may.
-  std::vector<double> evaluations, fitness, box;
-  for (const auto& c : r.search.convergence) {
-    evaluations.push_back(static_cast<double>(c.evaluations));
-    box.push_back(c.best_fitness);
-    fitness.push_back(fitness.empty() ? c.best_fitness : std::min(fitness.back(), c.best_fitness));
-  }
-  const std::string conv =
-      report.data("convergence", {"evaluations", "best_fitness_T", "box_best_fitness_T"}, {&evaluations, &fitness, &box});
-  report.plot("convergence", "best fitness of the global search against model evaluations", convergence_panel(conv));
+  report_fit(report, r, statistics, curve, label);
+  report_parameters(report, r, statistics);
+  const LoopColumns loops = loop_columns(curve, objective.simulate(to_params(final_point(r))));
+  report_loops(report, loops, label, statistics.fit_percent);
+  report_convergence(report, r);
   report.provenance(provenance);
   return report.write();
 }
