@@ -17,20 +17,23 @@ using mrd::test::stop_counting_allocations;
 
 constexpr int kSteps = 100000;
 
+// Every effect of AllEffects switched on (a new effect is in by construction), some sized so that
+// their costlier paths run.
 mrd::model::DamperModel every_effect_on() {
   mrd::model::DamperModel m;
   auto& e = m.effects;
-  e.get<mrd::model::CoilLagEffect>().enabled = true;
-  e.get<mrd::model::PreyieldHysteresisEffect>().enabled = true;
+  e.for_each([]<typename E>(typename E::Params& p) { p.enabled = true; });
   e.get<mrd::model::PreyieldHysteresisEffect>().n = 1.7;  // the std::pow path as well
   e.get<mrd::model::GasSpringEffect>() = {true, 1500.0, 3e4};
-  e.get<mrd::model::ThermalDriftEffect>().enabled = true;
   e.get<mrd::model::SensorDelayEffect>() = {true, 3.5e-3};
-  e.get<mrd::model::StrokeEndAirEffect>().enabled = true;
-  auto& learned = e.get<mrd::model::LearnedTermsEffect>();
-  learned.enabled = true;
-  learned.coefficients.fill(1.0);
+  e.get<mrd::model::LearnedTermsEffect>().coefficients.fill(1.0);
   return m;
+}
+
+TEST(RealTimeEffects, EveryEffectOfTheListIsOnInTheseTests) {
+  const mrd::model::DamperModel m = every_effect_on();
+  for (const mrd::model::EffectInfo& info : mrd::model::effect_infos()) EXPECT_TRUE(info.enabled(m.effects)) << info.name;
+  EXPECT_EQ(mrd::model::effect_infos().size(), mrd::model::AllEffects::size);
 }
 
 double x_at(int k) { return 0.045 * std::sin(2.0 * std::numbers::pi * 0.5 * k * 1e-3); }
