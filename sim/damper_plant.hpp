@@ -32,6 +32,14 @@ struct PlantSettings {
 // noise and a load cell with white noise. The plant knows its velocity exactly; the controller
 // does not. sensor_delay acts on the LVDT (a delay line), not inside the physics; every other
 // effect acts inside the physics exactly as the observer models it (model::EffectChain).
+// What drives the plant over one period: the rod's true motion and the commanded coil current,
+// held over the period.
+struct PlantInput {
+  double displacement = 0.0;  // [m]
+  double velocity = 0.0;      // [m/s]
+  double coil_current = 0.0;  // [A]
+};
+
 // Allocation-free per step.
 class DamperPlant {
  public:
@@ -47,8 +55,7 @@ class DamperPlant {
   // The firmware's simulated rig: 1 kHz, no load-cell noise.
   DamperPlant(const model::DamperModel& truth, double lvdt_noise_rms, unsigned seed);
 
-  // `coil_current` is the commanded current held over this period.
-  PlantReading step(double displacement, double velocity, double coil_current);
+  PlantReading step(const PlantInput& in);
 
   [[nodiscard]] const model::Observer& physics() const { return physics_; }
   // A fluid temperature [degC] imposed on the physics' temperature-dependent effects (a drift

@@ -47,7 +47,7 @@ Table4RunResult run_table4(const Table4RunOptions& options) {
     const double t = static_cast<double>(i) * dt;
     const double x = options.profile.displacement(t);
     const double v = options.profile.velocity(t);
-    const sim::PlantReading reading = plant.step(x, v, coil_current);
+    const sim::PlantReading reading = plant.step({.displacement = x, .velocity = v, .coil_current = coil_current});
     const auto& seen = law.observe({.displacement = reading.lvdt_displacement, .coil_current = coil_current});
     const control::ControlLaw::Command command = law.command();
 

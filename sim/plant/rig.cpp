@@ -58,7 +58,7 @@ const RigSample& Rig::step(double t, double fault_t, double commanded) {
       [t](const auto& m) { return std::pair{m.displacement(t), m.velocity(t)}; }, motion_);
   last_.time = t;
   last_.commanded = commanded;
-  last_.reading = plant_.step(x, v, commanded);
+  last_.reading = plant_.step({.displacement = x, .velocity = v, .coil_current = commanded});
   last_.fault_time = fault_t;
   last_.faults = fault_t < 0.0 ? ActiveFaults{} : active_faults(faults_, fault_t);
   double lvdt = last_.reading.lvdt_displacement;

@@ -82,7 +82,7 @@ class SineRig {
   void advance(hal::Timestamp now) {
     hal_.clock.set(now);
     const double t = std::chrono::duration<double>(now).count();
-    last_ = plant_.step(profile_.displacement(t), profile_.velocity(t), hal_.driver.last_setpoint());
+    last_ = plant_.step({.displacement = profile_.displacement(t), .velocity = profile_.velocity(t), .coil_current = hal_.driver.last_setpoint()});
     hal_.lvdt.set_value(last_.lvdt_displacement);
   }
   [[nodiscard]] const sim::PlantReading& last() const { return last_; }

@@ -58,7 +58,7 @@ TEST(RealTimeEffects, PlantStepsWithEveryEffectDoNotAllocate) {
   mrd::sim::DamperPlant plant(every_effect_on(), mrd::sim::PlantSettings{1e-3, 5e-6, 20.0, 3});
   double sink = 0.0;
   start_counting_allocations();
-  for (int k = 0; k < kSteps; ++k) sink += plant.step(x_at(k), v_at(k), i_at(k)).measured_force;
+  for (int k = 0; k < kSteps; ++k) sink += plant.step({.displacement = x_at(k), .velocity = v_at(k), .coil_current = i_at(k)}).measured_force;
   EXPECT_EQ(stop_counting_allocations(), 0u);
   EXPECT_TRUE(std::isfinite(sink));
 }

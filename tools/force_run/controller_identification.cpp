@@ -72,7 +72,7 @@ FitSeries simulated_force_run(const model::DamperModel& plant, const model::Comp
     if (i % 250 == 0) wanted = level(rng);
     const double current = driver.update(wanted);
     const double v = motion.velocity(t);
-    const sim::PlantReading r = rig.step(motion.displacement(t), v, current);
+    const sim::PlantReading r = rig.step({.displacement = motion.displacement(t), .velocity = v, .coil_current = current});
     s.displacement.push_back(motion.displacement(t));
     s.velocity.push_back(v);
     s.current.push_back(current);

@@ -160,7 +160,7 @@ ForceRunResult run_force_tracking(const DemandProfile& profile, const ForceRunOp
       // its force at the end is what the demand is compared with (model::ForceInverse).
       const double command =
           strategy->command({.demand = {.force = profile.force[i], .velocity = v}, .measured_force = measured}, observer);
-      const sim::PlantReading reading = plant.step(x, v, command);
+      const sim::PlantReading reading = plant.step({.displacement = x, .velocity = v, .coil_current = command});
       const model::ObserverEstimate predicted = observer.step({.displacement = x, .velocity = v, .coil_current = command});
       measured = reading.measured_force;
       if (correction) {

@@ -20,7 +20,7 @@ record::RecordedRun simulate_run(const model::DamperModel& truth, const Simulate
     const double v = options.motion.velocity(t);
     const bool high = std::fmod(t, options.current_period) >= 0.5 * options.current_period;
     const double current = high ? options.current_high : options.current_low;
-    const sim::PlantReading reading = plant.step(options.motion.displacement(t), v, current);
+    const sim::PlantReading reading = plant.step({.displacement = options.motion.displacement(t), .velocity = v, .coil_current = current});
     run.time.push_back(t);
     run.displacement.push_back(reading.lvdt_displacement);
     run.coil.push_back(current);

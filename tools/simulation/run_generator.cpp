@@ -69,7 +69,7 @@ std::vector<RunSample> run_plant(const RunOptions& o, const model::EffectSet& ef
     const double t = static_cast<double>(k) * T;
     if (o.profile == RunProfile::kTelegraph) command = telegraph.step();
     const double x = motion.x(t);
-    const sim::PlantReading r = plant.step(x, motion.v(t), command);
+    const sim::PlantReading r = plant.step({.displacement = x, .velocity = motion.v(t), .coil_current = command});
     samples.push_back({t, r.lvdt_displacement, r.sensor_velocity, command, r.measured_force, r.B,
                        r.temperature, x, r.force});
     // The schedule sees this period's reading; its current flows from the next period on.
