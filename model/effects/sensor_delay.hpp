@@ -61,9 +61,10 @@ struct PredictedMotion {
   double velocity;      // [m/s]
 };
 
-[[nodiscard]] inline PredictedMotion predict_motion(double displacement, double velocity,
-                                                    double acceleration, double delay) {
-  return {displacement + delay * (velocity + 0.5 * delay * acceleration), velocity + delay * acceleration};
+[[nodiscard]] inline PredictedMotion predict_motion(const PredictedMotion& reading, double acceleration,
+                                                    double delay) {
+  return {reading.displacement + delay * (reading.velocity + 0.5 * delay * acceleration),
+          reading.velocity + delay * acceleration};
 }
 
 // The observer's side of the effect: the prediction above with the configured delay.
@@ -71,7 +72,7 @@ class SensorDelayPrediction {
  public:
   SensorDelayPrediction(const SensorDelayParams& params, double /*sample_period*/) : delay_(params.delay) {}
   [[nodiscard]] PredictedMotion predict(const PredictedMotion& reading, double acceleration) const {
-    return predict_motion(reading.displacement, reading.velocity, acceleration, delay_);
+    return predict_motion(reading, acceleration, delay_);
   }
 
  private:
