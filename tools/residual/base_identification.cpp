@@ -72,14 +72,27 @@ FittedModel identify_base(Search& s, const model::DamperModel& origin, Parameter
     double& best_in_form = s.form_fitting_rms[static_cast<std::size_t>(spaces[k]->origin.jiles_atherton.form)];
     if (!(best_in_form <= refined[k].fitting_rms)) best_in_form = refined[k].fitting_rms;
   }
-  const auto chosen = std::ranges::min_element(refined, {}, &FittedModel::fitting_rms);
-  FittedModel best = *chosen;
-  if (spaces[static_cast<std::size_t>(chosen - refined.begin())] == &other_form) space = other_form;
+  std::size_t chosen = refined.size();
+  for (std::size_t k = 0; k < refined.size(); ++k) {
+    if (spaces[k] != &space) continue;
+    if (chosen == refined.size() || refined[k].fitting_rms < refined[chosen].fitting_rms) chosen = k;
+  }
+  if (kept_form(origin.jiles_atherton.form, s.form_fitting_rms) != origin.jiles_atherton.form) {
+    chosen = refined.size() - 1;
+    space = other_form;
+  }
+  FittedModel best = refined[chosen];
   if (openings.size() == s.fit_series.size()) return best;
   const auto dimension = static_cast<int>(space.bounds.dimension());
   const FittedModel whole = refine_space(space, s.fit_series, best.theta, 20 + 15 * dimension, 0.01);
   s.evaluations += whole.evaluations;
   return whole;
+}
+
+model::JilesAthertonForm kept_form(model::JilesAthertonForm origin, const std::array<double, 2>& form_fitting_rms) {
+  const auto own = static_cast<std::size_t>(origin);
+  const bool other_better = form_fitting_rms[1 - own] < (1.0 - kFormMargin) * form_fitting_rms[own];
+  return other_better ? static_cast<model::JilesAthertonForm>(1 - own) : origin;
 }
 
 FittedModel fit_base_model(Search& s, ParameterSpace& space) {

@@ -24,12 +24,23 @@ namespace mrd::tools::search {
 // runs, 5 of 30 above 1.3x the noise with two, 6 with one, one of them at 3.4x). A
 // re-identification after an accepted effect starts a chain from the model already fitted, and
 // one swarm serves.
+// How much better (a share of the fitting RMS on the runs' openings) the other form of Eq. 10
+// must fit before it replaces the origin's (docs/CLOSING-THE-LOOP.md, step 2).
+inline constexpr double kFormMargin = 0.01;
+
+// The form of Eq. 10 a first identification keeps, from each form's best fitting RMS on the
+// openings (Search::form_fitting_rms): the origin's unless the other fits better by kFormMargin.
+// Where an unnamed effect dominates the residual the two differ by hundredths of a per cent, and
+// a switch on that would be chance (the random dampers' single-effect runs: 0.01-0.03 %).
+model::JilesAthertonForm kept_form(model::JilesAthertonForm origin, const std::array<double, 2>& form_fitting_rms);
+
 struct BaseStarts {
   int swarms = 1;                    // at least 1
   bool from_origin = true;           // a chain from the origin's coordinates
   const Point* also_from = nullptr;  // and one from here, when given
-  // A chain in the other form of Eq. 10 from the first swarm's best, where the current varies: a
-  // first identification decides the form, a re-identification keeps the origin's.
+  // A chain in the other form of Eq. 10 from the first swarm's best, where the current varies,
+  // kept when it fits better by kFormMargin: a first identification decides the form, a
+  // re-identification keeps the origin's.
   bool both_forms = false;
 };
 FittedModel identify_base(Search& s, const model::DamperModel& origin, ParameterSpace& space, const BaseStarts& starts);
