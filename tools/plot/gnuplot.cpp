@@ -64,12 +64,17 @@ std::string plot_command(const Panel& panel) {
   for (const Series& s : panel.series) order.push_back(&s);
   std::stable_sort(order.begin(), order.end(), [](const Series* a, const Series* b) { return a->layer < b->layer; });
   std::string out = "plot ";
+  std::string keys;
   for (std::size_t i = 0; i < order.size(); ++i) {
     const Series& s = *order[i];
+    // A dot is one pixel in the key too: a titled series of dots gets its key from an empty
+    // series of points in its colour.
+    const bool dot_key = s.style.shape == Shape::dots && !s.title.empty() && !s.style.colour.empty();
     out += (i == 0 ? quoted(panel.data.path) : ", \\\n     ''") + " using " + coordinate(s.x) + ":" + coordinate(s.y) +
-           " with " + with(s.style) + (s.title.empty() ? " notitle" : " title " + quoted(s.title));
+           " with " + with(s.style) + (s.title.empty() || dot_key ? " notitle" : " title " + quoted(s.title));
+    if (dot_key) keys += ", \\\n     NaN with points pt 7 ps 0.8 lc rgb " + quoted(s.style.colour) + " title " + quoted(s.title);
   }
-  return out + "\n";
+  return out + keys + "\n";
 }
 
 std::string axis_settings(const Axis& axis, const char* name) {

@@ -133,6 +133,16 @@ TEST(PlotScript, CommentLinesComeFirst) {
 }
 
 // gnuplot itself reads what the module writes (skipped without gnuplot).
+// A scatter of dots keeps its dots, and its key shows a point of its colour (a dot is a pixel).
+TEST(PlotScript, ATitledSeriesOfDotsIsKeyedByAPointOfItsColour) {
+  plot::Figure figure = force_figure("run.csv");
+  figure.panels[0].series.push_back({"delivered", plot::column(2), plot::column(3), plot::dots(plot::colour::kBlue)});
+  const std::string script = plot::gnuplot_script(figure);
+  EXPECT_NE(script.find("using 2:3 with dots lc rgb '#1f77b4' notitle"), std::string::npos) << script;
+  EXPECT_NE(script.find("NaN with points pt 7 ps 0.8 lc rgb '#1f77b4' title 'delivered'\n"), std::string::npos) << script;
+  EXPECT_EQ(count(script, "title 'delivered'"), 1u) << script;
+}
+
 TEST(PlotScript, GnuplotDrawsTheFigures) {
   if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) GTEST_SKIP() << "gnuplot is not installed";
   const auto dir = std::filesystem::temp_directory_path() / "mrd_plot_script";
@@ -141,6 +151,7 @@ TEST(PlotScript, GnuplotDrawsTheFigures) {
   std::ofstream(dir / "run.csv") << "time_s,displacement_mm,force_N,measured_force_N,aside_flag\n"
                                     "0,0,0,100,0\n0.1,1,1400,1300,1\n0.2,2,900,950,0\n";
   plot::Figure csv_figure = force_figure((dir / "run.csv").string());
+  csv_figure.panels[0].series.push_back({"delivered", plot::column(2), plot::column(3), plot::dots(plot::colour::kBlue)});
   csv_figure.output = (dir / "force.png").string();
   ASSERT_EQ(plot::draw({csv_figure}), "");
   EXPECT_GT(std::filesystem::file_size(dir / "force.png"), 1000u);
