@@ -131,9 +131,6 @@ void read_damper(TomlReader& in, model::DamperModel& d) {
   in.get("damper.jiles_atherton.alpha", d.jiles_atherton.alpha);
   in.get("damper.jiles_atherton.k", d.jiles_atherton.k);
   in.get("damper.jiles_atherton.c", d.jiles_atherton.c);
-  in.get_enum("damper.jiles_atherton.form", d.jiles_atherton.form,
-              {{"irreversible", model::JilesAthertonForm::kIrreversiblePinning},
-               {"total", model::JilesAthertonForm::kTotalPinning}});
   in.get("damper.circuit.turns", d.circuit.turns);
   in.get("damper.circuit.effective_length", d.circuit.effective_length);
   in.get_enum("damper.integration.integrator", d.integration.integrator,

@@ -19,8 +19,7 @@ JilesAtherton::JilesAtherton(const JilesAthertonParams& params, const MagneticCi
       one_minus_c_(1.0 - params.c),
       alpha_c_(params.alpha * params.c),
       k_floor_(params.k * settings.denominator_floor),
-      max_field_step_(settings.max_field_step_fraction * std::min(params.a, params.k)),
-      total_pinning_(params.form == JilesAthertonForm::kTotalPinning) {}
+      max_field_step_(settings.max_field_step_fraction * std::min(params.a, params.k)) {}
 
 double JilesAtherton::B() const { return kMu0 * (state_.H + state_.M); }  // Eq. 8
 
@@ -38,23 +37,17 @@ struct ExactLangevin {
 
 double JilesAtherton::apply_field(double H) {
   if (H != state_.H && std::isfinite(H)) {
-    total_pinning_ ? integrate_in_form<true>(H) : integrate_in_form<false>(H);
+    ExactLangevin exact;
+    const bool tabulated = settings_.langevin == LangevinEvaluation::kTabulated;
+    if (settings_.integrator == Integrator::kRk4) {
+      tabulated ? integrate<Integrator::kRk4>(H, langevin_cursor_)
+                : integrate<Integrator::kRk4>(H, exact);
+    } else {
+      tabulated ? integrate<Integrator::kHeun>(H, langevin_cursor_)
+                : integrate<Integrator::kHeun>(H, exact);
+    }
   }
   return B();
-}
-
-// The form of Eq. 10 is a template argument, so that the paper's form pays nothing for the other.
-template <bool kTotalPinning>
-void JilesAtherton::integrate_in_form(double H) {
-  ExactLangevin exact;
-  const bool tabulated = settings_.langevin == LangevinEvaluation::kTabulated;
-  if (settings_.integrator == Integrator::kRk4) {
-    tabulated ? integrate<Integrator::kRk4, kTotalPinning>(H, langevin_cursor_)
-              : integrate<Integrator::kRk4, kTotalPinning>(H, exact);
-  } else {
-    tabulated ? integrate<Integrator::kHeun, kTotalPinning>(H, langevin_cursor_)
-              : integrate<Integrator::kHeun, kTotalPinning>(H, exact);
-  }
 }
 
 // Inlined into each stage: as a call it returned its result through memory and kept the
@@ -97,11 +90,11 @@ template <typename Langevin>
           1.0 / (denominator * coupling), Man, guarded};
 }
 
-template <Integrator kMethod, bool kTotalPinning, typename Langevin>
+template <Integrator kMethod, typename Langevin>
 void JilesAtherton::integrate(double H_target, Langevin& langevin) {
   const double growth = settings_.field_step_growth;
   if (!(growth > 0.0) || std::fabs(H_target - state_.H) <= max_field_step_) {
-    integrate_on_grid<kMethod, kTotalPinning>(H_target, max_field_step_, langevin);
+    integrate_on_grid<kMethod>(H_target, max_field_step_, langevin);
     return;
   }
   // Steps of max(grid, g |He|): the grid where |He| is small (the knee, where M_irr relaxes
@@ -114,11 +107,11 @@ void JilesAtherton::integrate(double H_target, Langevin& langevin) {
     const double remaining = std::fabs(H_target - state_.H);
     const bool last = remaining <= step || taken >= settings_.max_substeps;
     const double next = last ? H_target : state_.H + direction * step;
-    integrate_on_grid<kMethod, kTotalPinning>(next, last ? remaining : step, langevin);
+    integrate_on_grid<kMethod>(next, last ? remaining : step, langevin);
   }
 }
 
-template <Integrator kMethod, bool kTotalPinning, typename Langevin>
+template <Integrator kMethod, typename Langevin>
 void JilesAtherton::integrate_on_grid(double H_target, double max_step, Langevin& langevin) {
   const double span = H_target - state_.H;
   const double delta = span > 0.0 ? 1.0 : -1.0;
@@ -143,11 +136,9 @@ void JilesAtherton::integrate_on_grid(double H_target, double max_step, Langevin
     // H_s/a + (alpha/a) M (Eq. 4): the H_s part and the part from the starting M are known
     // before the stages run, and only the increment waits for the previous stage's division.
     const double x_M = alpha_over_a_ * M;
-    // In the textbook form the pinned state (the M_irr slot) is M: it moves along dM/dH.
-    const auto pinned_num = [](const Slope& k) { return kTotalPinning ? k.dM_num : k.chi_num; };
     const auto stage = [&](double H_s, const Slope& k, double step) {
       return slope(langevin, H_s * inv_a_ + x_M + ((alpha_over_a_ * step) * k.dM_num) * k.inv,
-                   M_irr + (step * pinned_num(k)) * k.inv, delta);
+                   M_irr + (step * k.chi_num) * k.inv, delta);
     };
     const Slope k1 = slope(langevin, H * inv_a_ + x_M, M_irr, delta);
     if constexpr (kMethod == Integrator::kRk4) {
@@ -158,19 +149,15 @@ void JilesAtherton::integrate_on_grid(double H_target, double max_step, Langevin
       const double sixth = h / 6.0;
       M = (M + sixth * (k1.dM_dH() + 2.0 * k2.dM_dH() + 2.0 * k3.dM_dH())) +
           (sixth * k4.dM_num) * k4.inv;
-      if constexpr (kTotalPinning) {
-        M_irr = M;
-      } else {
-        M_irr = (M_irr + sixth * (k1.chi_irr() + 2.0 * k2.chi_irr() + 2.0 * k3.chi_irr())) +
-                (sixth * k4.chi_num) * k4.inv;
-      }
+      M_irr = (M_irr + sixth * (k1.chi_irr() + 2.0 * k2.chi_irr() + 2.0 * k3.chi_irr())) +
+              (sixth * k4.chi_num) * k4.inv;
       guarded = k1.guarded || k2.guarded || k3.guarded || k4.guarded;
       Man_end = k4.Man;
     } else {
       const Slope k2 = stage(H + h, k1, h);
       const double half = 0.5 * h;
       M = (M + half * k1.dM_dH()) + (half * k2.dM_num) * k2.inv;
-      M_irr = kTotalPinning ? M : (M_irr + half * k1.chi_irr()) + (half * k2.chi_num) * k2.inv;
+      M_irr = (M_irr + half * k1.chi_irr()) + (half * k2.chi_num) * k2.inv;
       guarded = k1.guarded || k2.guarded;
       Man_end = k2.Man;
     }
@@ -178,11 +165,7 @@ void JilesAtherton::integrate_on_grid(double H_target, double max_step, Langevin
     // The exact solution relaxes M_irr towards Man and never passes it. A sub-step can
     // overshoot when chi_irr is huge (near runaway, or when max_substeps stretched the step).
     // The avalanche then ends on the anhysteretic curve: M_irr = Man, so M = Man (Eq. 1-2).
-    // In the textbook form the pinned M also moves by its reversible part while unpinned, so
-    // only a crossing from the side the pinning pulls from is an overshoot.
-    const bool moved_past = kTotalPinning ? delta * (k1.Man - state_.M_irr) > 0.0
-                                          : delta * (M_irr - state_.M_irr) > 0.0;
-    if (delta * (M_irr - Man_end) > 0.0 && moved_past) {
+    if (delta * (M_irr - Man_end) > 0.0 && delta * (M_irr - state_.M_irr) > 0.0) {
       M = M_irr = Man_end;
     }
     // |Man| < Ms (Eq. 3), so no exact solution leaves [-Ms, Ms]; a guarded step might.

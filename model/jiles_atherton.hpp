@@ -55,7 +55,6 @@ struct MagneticState {
 // [M, M_irr]; expanding dMan/dt = Man'(He) (dH/dt + alpha dM/dt) in Eq. 10 gives
 //   dM_irr/dH = chi_irr = (Man - M_irr) / (k delta - alpha (Man - M_irr))
 //   dM/dH     = ((1 - c) chi_irr + c Man') / (1 - alpha c Man')
-// In the textbook form (params.form) M takes M_irr's place in chi_irr and M_irr is M.
 // Nothing here allocates, reads a clock or throws.
 class JilesAtherton {
  public:
@@ -106,11 +105,9 @@ class JilesAtherton {
   };
   template <typename Langevin>
   [[nodiscard]] Slope slope(Langevin& langevin, double x, double M_irr, double delta) const;
-  template <bool kTotalPinning>
-  void integrate_in_form(double H_target);
-  template <Integrator kMethod, bool kTotalPinning, typename Langevin>
+  template <Integrator kMethod, typename Langevin>
   void integrate(double H_target, Langevin& langevin);
-  template <Integrator kMethod, bool kTotalPinning, typename Langevin>
+  template <Integrator kMethod, typename Langevin>
   void integrate_on_grid(double H_target, double max_step, Langevin& langevin);
   void settle_on_anhysteretic();
 
@@ -125,9 +122,6 @@ class JilesAtherton {
   double alpha_c_;
   double k_floor_;
   double max_field_step_;
-  // The textbook form (JilesAthertonForm::kTotalPinning): the pinned state is M itself, so the
-  // M_irr slot integrates dM/dH and stays equal to M.
-  bool total_pinning_;
 
   MagneticState state_;
   // Where the last tabulated Langevin evaluation was: only a hint, checked on every use.

@@ -4,26 +4,13 @@
 
 namespace mrd::model {
 
-// What the pinning of Eq. 10 pulls towards the anhysteretic curve. The paper's Eq. 10 integrates
-// the irreversible magnetisation, dM_irr/dH = (Man - M_irr) / (k delta - alpha (Man - M_irr)),
-// and M = M_irr + c (Man - M_irr). Jiles and Atherton's 1986 textbook form pins the total
-// magnetisation instead, (Man - M) in place of (Man - M_irr). The two trace the same major loop
-// shape within their parameters but part where the field comes back from saturation: at
-// remanence the same material gives a B some per cent apart (docs/MODEL.md, "Two forms of
-// Eq. 10"), so which one a core follows is for its data to say.
-enum class JilesAthertonForm {
-  kIrreversiblePinning,  // the paper's Eq. 10 (the default)
-  kTotalPinning,         // the textbook form
-};
-
-// The five Jiles-Atherton parameters (Eq. 1-7, 10) and the form of Eq. 10. SI units throughout.
+// The five Jiles-Atherton parameters (Eq. 1-7, 10). SI units throughout.
 struct JilesAthertonParams {
   double Ms = 1.3e6;    // saturation magnetisation [A/m]
   double a = 2000.0;    // Langevin shape parameter [A/m] (the paper's beta in Eq. 3)
   double alpha = 1e-3;  // domain-wall interaction coefficient [-] (Eq. 4)
   double k = 1500.0;    // pinning / hysteresis loss parameter [A/m] (Eq. 5-7)
   double c = 0.2;       // reversible magnetisation factor [-] (Eq. 2)
-  JilesAthertonForm form = JilesAthertonForm::kIrreversiblePinning;
 
   // alpha*Ms/(3a): the slope of alpha*Man at He = 0. At or above 1 the anhysteretic curve
   // folds back on itself and Eq. 10 can run away (see docs/MODEL.md).

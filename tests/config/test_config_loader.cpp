@@ -76,7 +76,6 @@ TEST(ConfigDefault, StatedValuesEqualTheCompiledDefaults) {
   EXPECT_EQ(a.safety.recovery_periods, b.safety.recovery_periods);
   EXPECT_EQ(a.safety.current_tolerance, b.safety.current_tolerance);
   EXPECT_EQ(a.law.damper.jiles_atherton.k, b.law.damper.jiles_atherton.k);
-  EXPECT_EQ(a.law.damper.jiles_atherton.form, b.law.damper.jiles_atherton.form);
   EXPECT_EQ(a.law.schedule.thresholds, b.law.schedule.thresholds);
   EXPECT_EQ(a.law.limits.max_current, b.law.limits.max_current);
   EXPECT_EQ(a.modbus.response_timeout, b.modbus.response_timeout);
@@ -169,18 +168,6 @@ enable = 3
       << lines_of(c);
   EXPECT_TRUE(has_error(c, "types.toml:10: gpio.enable: must be a table, got an integer")) << lines_of(c);
   EXPECT_EQ(c.errors.size(), 6u) << lines_of(c);
-}
-
-// The form of Eq. 10 (docs/MODEL.md): the textbook one by name, anything else refused with its line.
-TEST(ConfigGood, TheJilesAthertonFormIsReadByName) {
-  const LoadedConfig total = load_config_text("[damper.jiles_atherton]\nform = \"total\"\n", "form.toml");
-  ASSERT_TRUE(total.ok()) << lines_of(total);
-  EXPECT_EQ(total.config.law.damper.jiles_atherton.form, mrd::model::JilesAthertonForm::kTotalPinning);
-  const LoadedConfig paper = load_config_text("", "empty.toml");
-  EXPECT_EQ(paper.config.law.damper.jiles_atherton.form, mrd::model::JilesAthertonForm::kIrreversiblePinning);
-  const LoadedConfig bad = load_config_text("[damper.jiles_atherton]\nform = \"textbook\"\n", "form.toml");
-  EXPECT_TRUE(has_error(bad, "form.toml:2: damper.jiles_atherton.form: must be one of irreversible, total, got \"textbook\""))
-      << lines_of(bad);
 }
 
 TEST(ConfigBad, UnknownKeysAndTablesAreErrorsWithASuggestion) {

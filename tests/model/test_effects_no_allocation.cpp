@@ -33,7 +33,6 @@ mrd::model::DamperModel every_effect_on() {
 TEST(RealTimeEffects, EveryEffectOfTheListIsOnInTheseTests) {
   const mrd::model::DamperModel m = every_effect_on();
   for (const mrd::model::EffectInfo& info : mrd::model::effect_infos()) EXPECT_TRUE(info.enabled(m.effects)) << info.name;
-  EXPECT_EQ(mrd::model::effect_infos().size(), mrd::model::AllEffects::size);
 }
 
 double x_at(int k) { return 0.045 * std::sin(2.0 * std::numbers::pi * 0.5 * k * 1e-3); }

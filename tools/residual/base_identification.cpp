@@ -1,7 +1,6 @@
 #include "tools/residual/base_identification.hpp"
 
 #include <algorithm>
-#include <cmath>
 
 #include "tools/text_format.hpp"
 
@@ -37,7 +36,8 @@ LinearEffects linear_effects_of(const model::DamperModel& model) {
 
 }  // namespace
 
-FittedModel identify_base(Search& s, const model::DamperModel& origin, ParameterSpace& space, const BaseStarts& from) {
+FittedModel identify_base(Search& s, const model::DamperModel& origin, ParameterSpace& space, bool from_origin,
+                          int swarms, const Point* also_from) {
   const model::DamperModel& start = s.options.start;
   const FitSeries& openings = s.swarm_series;
   space = base_space(origin, start, s.scales, Magnetics::kMaterial);
@@ -45,43 +45,19 @@ FittedModel identify_base(Search& s, const model::DamperModel& origin, Parameter
   ParameterSpace exploring = space;
   exploring.origin.integration.max_substeps = std::min(exploring.origin.integration.max_substeps, 64);
   std::vector<Point> starts;
-  for (int k = 0; k < std::max(from.swarms, 1); ++k) {
+  for (int k = 0; k < std::max(swarms, 1); ++k) {
     const FittedModel swarm = fit_space(exploring, openings, &s.pool, s.seed++, 2 * s.options.evaluations_per_parameter);
     s.evaluations += swarm.evaluations;
     starts.push_back(swarm.theta);
   }
-  // The chains, each serial, side by side; with both_forms one more from the first swarm's best
-  // in the other form of Eq. 10 (only a varying current can tell them), the best chain's form kept.
-  if (from.from_origin) starts.push_back(base_coordinates(origin, start, s.scales, Magnetics::kMaterial));
-  if (from.also_from != nullptr) starts.push_back(*from.also_from);
-  std::vector<const ParameterSpace*> spaces(starts.size(), &space);
-  ParameterSpace other_form = space;
-  other_form.origin.jiles_atherton.form = origin.jiles_atherton.form == model::JilesAthertonForm::kTotalPinning
-                                              ? model::JilesAthertonForm::kIrreversiblePinning
-                                              : model::JilesAthertonForm::kTotalPinning;
-  if (from.both_forms && free_magnetics(s.scales, Magnetics::kMaterial) == Magnetics::kMaterial) {
-    starts.push_back(starts.front());
-    spaces.push_back(&other_form);
-  }
+  // The chains, each serial, side by side.
+  if (from_origin) starts.push_back(base_coordinates(origin, start, s.scales, Magnetics::kMaterial));
+  if (also_from != nullptr) starts.push_back(*also_from);
   std::vector<FittedModel> refined(starts.size());
   s.pool.run(starts.size(), [&](std::size_t k, unsigned /*worker*/) {
-    refined[k] = refine_with_restarts(s, *spaces[k], openings, starts[k]);
+    refined[k] = refine_with_restarts(s, space, openings, starts[k]);
   });
-  s.form_fitting_rms = {std::nan(""), std::nan("")};
-  for (std::size_t k = 0; k < refined.size(); ++k) {
-    double& best_in_form = s.form_fitting_rms[static_cast<std::size_t>(spaces[k]->origin.jiles_atherton.form)];
-    if (!(best_in_form <= refined[k].fitting_rms)) best_in_form = refined[k].fitting_rms;
-  }
-  std::size_t chosen = refined.size();
-  for (std::size_t k = 0; k < refined.size(); ++k) {
-    if (spaces[k] != &space) continue;
-    if (chosen == refined.size() || refined[k].fitting_rms < refined[chosen].fitting_rms) chosen = k;
-  }
-  if (kept_form(origin.jiles_atherton.form, s.form_fitting_rms) != origin.jiles_atherton.form) {
-    chosen = refined.size() - 1;
-    space = other_form;
-  }
-  FittedModel best = refined[chosen];
+  FittedModel best = *std::ranges::min_element(refined, {}, &FittedModel::fitting_rms);
   if (openings.size() == s.fit_series.size()) return best;
   const auto dimension = static_cast<int>(space.bounds.dimension());
   const FittedModel whole = refine_space(space, s.fit_series, best.theta, 20 + 15 * dimension, 0.01);
@@ -89,15 +65,9 @@ FittedModel identify_base(Search& s, const model::DamperModel& origin, Parameter
   return whole;
 }
 
-model::JilesAthertonForm kept_form(model::JilesAthertonForm origin, const std::array<double, 2>& form_fitting_rms) {
-  const auto own = static_cast<std::size_t>(origin);
-  const bool other_better = form_fitting_rms[1 - own] < (1.0 - kFormMargin) * form_fitting_rms[own];
-  return other_better ? static_cast<model::JilesAthertonForm>(1 - own) : origin;
-}
-
 FittedModel fit_base_model(Search& s, ParameterSpace& space) {
   if (s.options.progress != nullptr) s.options.progress->report({.stage = "base fit"});
-  return identify_base(s, s.options.start, space, {.swarms = 2, .both_forms = true});
+  return identify_base(s, s.options.start, space, true, 2);
 }
 
 FittedModel refit_robustly(Search& s, ParameterSpace& space, FittedModel base, int& refits) {
@@ -114,7 +84,7 @@ FittedModel refit_robustly(Search& s, ParameterSpace& space, FittedModel base, i
   const RobustWeights least_squares = sigma_of(base.model);
   if (least_squares.down_weighted_share < loss.refit_share) return base;
   set_loss(FitLoss::Kind::kCauchy, least_squares.sigma);
-  base = identify_base(s, s.options.start, space, {.swarms = 2, .also_from = &base.theta, .both_forms = true});
+  base = identify_base(s, s.options.start, space, true, 2, &base.theta);
   const double sigma = sigma_of(base.model).sigma;
   set_loss(FitLoss::Kind::kCauchy, sigma);
   base = refine_with_restarts(s, space, s.fit_series, base.theta);
@@ -124,8 +94,7 @@ FittedModel refit_robustly(Search& s, ParameterSpace& space, FittedModel base, i
 }
 
 std::vector<std::string> describe_base(const ParameterSpace& space, const FittedModel& fit,
-                                       const model::DamperModel& start, const SeriesScales& scales,
-                                       const std::array<double, 2>& form_fitting_rms) {
+                                       const model::DamperModel& start, const SeriesScales& scales) {
   std::vector<std::string> lines;
   const model::DamperModel& m = fit.model;
   const model::BinghamDamper damper = fluid_of(m);
@@ -149,15 +118,8 @@ std::vector<std::string> describe_base(const ParameterSpace& space, const Fitted
   if (material) {
     const model::JilesAthertonParams& ja = m.jiles_atherton;
     lines.push_back(format("J-A material: k %.4g A/m, c %.3g, alpha %.4g (alpha Ms/3a %.3g); a %.4g A/m and Ms %.4g A/m "
-                           "kept from the start (a force record fixes only H/a and the force scale); Eq. 10 in %s",
-                           ja.k, ja.c, ja.alpha, ja.mean_field_gain(), ja.a, ja.Ms,
-                           ja.form == model::JilesAthertonForm::kTotalPinning ? "the textbook form (pinning M)"
-                                                                               : "the paper's form (pinning M_irr)"));
-    const auto form = static_cast<std::size_t>(ja.form);
-    if (std::isfinite(form_fitting_rms[1 - form]))
-      lines.push_back(format("Eq. 10's form: fitting RMS %.4g N in this one, %.4g N in the other (%+.2f %%)",
-                             form_fitting_rms[form], form_fitting_rms[1 - form],
-                             100.0 * (form_fitting_rms[1 - form] / form_fitting_rms[form] - 1.0)));
+                           "kept from the start (a force record fixes only H/a and the force scale)",
+                           ja.k, ja.c, ja.alpha, ja.mean_field_gain(), ja.a, ja.Ms));
     if (!(start.jiles_atherton == model::JilesAthertonParams{}))
       lines.push_back(format("the config's J-A material (a prior): k %.4g A/m, c %.3g, alpha %.4g",
                              start.jiles_atherton.k, start.jiles_atherton.c, start.jiles_atherton.alpha));

@@ -121,7 +121,8 @@ ClaimEvidence weigh_claim(const FitSeries& s, const ValidationBlocks& pieces, co
                           const ClaimCriterion& criterion) {
   ClaimEvidence e;
   e.noise_floor = noise_floor;
-  if (simpler.size() != s.size() || richer.size() != s.size()) return e;
+  // Pieces of another series (the fitting series' against the full one) weigh nothing.
+  if (simpler.size() != s.size() || richer.size() != s.size() || pieces.of_sample.size() != s.size()) return e;
   const auto count = static_cast<std::size_t>(pieces.count);
   std::vector<double> simpler_loss(count, 0.0), richer_loss(count, 0.0), samples(count, 0.0);
   double change = 0.0;  // sum of d^2 [N^2]

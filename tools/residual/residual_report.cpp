@@ -279,8 +279,6 @@ std::string updated_config(std::string_view config_text, const ResidualResult& r
   set("jiles_atherton", "alpha", m.jiles_atherton.alpha);
   set("jiles_atherton", "k", m.jiles_atherton.k);
   set("jiles_atherton", "c", m.jiles_atherton.c);
-  damper["jiles_atherton"].as_table()->insert_or_assign(
-      "form", m.jiles_atherton.form == model::JilesAthertonForm::kTotalPinning ? "total" : "irreversible");
   set("circuit", "turns", m.circuit.turns);
   set("circuit", "effective_length", m.circuit.effective_length);
   set("fluid", "viscosity", m.fluid.viscosity);

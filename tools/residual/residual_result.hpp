@@ -1,7 +1,5 @@
 #pragma once
 
-#include <array>
-#include <cmath>
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -102,9 +100,6 @@ struct ResidualResult {
   std::vector<std::pair<std::string, Screening>> screenings;
   bool screened = false;
   std::vector<std::string> base_parameters;  // what the base fit found, one line each
-  // The base fit's best fitting RMS [N] in each form of Eq. 10 (indexed by
-  // model::JilesAthertonForm; nan where the run's current did not let it try the other).
-  std::array<double, 2> form_fitting_rms{std::nan(""), std::nan("")};
   model::DamperModel base;
   model::DamperModel final_model;
   ResidualRms before;  // base model, whole run

@@ -97,13 +97,11 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   // 1-3. The base model (3b: under the robust loss, with --robust-fit) and its residual.
   ParameterSpace base_fit_space;
   const FittedModel identified = search::fit_base_model(s, base_fit_space);
-  result.form_fitting_rms = s.form_fitting_rms;
   step_done("base fit");
   const FittedModel base = search::refit_robustly(s, base_fit_space, identified, result.robust_refits);
   if (result.robust_refits > 0) step_done("robust base fit");
   result.base = reported(base.model);
-  result.base_parameters =
-      search::describe_base(base_fit_space, base, options.start, s.scales, result.form_fitting_rms);
+  result.base_parameters = search::describe_base(base_fit_space, base, options.start, s.scales);
   predict_force(result.base, full, result.predicted_before);
   result.before = residual_rms(full, result.predicted_before);
   result.structure_before = structure_of(full, result.predicted_before);

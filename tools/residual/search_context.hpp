@@ -1,8 +1,6 @@
 #pragma once
 
-#include <array>
 #include <atomic>
-#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -43,9 +41,6 @@ struct Search {
   // [N] the load cell's white noise as the base model's residual shows it: what a claim's
   // materiality is measured against. Set once the base is identified.
   double noise_floor = 0.0;
-  // The last identification's best fitting RMS [N] in each form of Eq. 10 (indexed by
-  // model::JilesAthertonForm; nan where that form was not tried).
-  std::array<double, 2> form_fitting_rms{std::nan(""), std::nan("")};
   WorkerPool pool;
   std::uint64_t seed;
   std::atomic<std::int64_t> evaluations{0};

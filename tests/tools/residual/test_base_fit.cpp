@@ -6,12 +6,10 @@
 // study, tests/generator/random-damper-study.sh, checks the forms.)
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <sstream>
 #include <string>
 
 #include "tests/tools/residual/residual_test_support.hpp"
-#include "tools/residual/base_identification.hpp"
 #include "tools/residual/candidate_effects.hpp"
 #include "tools/residual/residual_report.hpp"
 
@@ -80,47 +78,6 @@ TEST(BaseFit, ALongRunsSwarmExploresItsOpeningAndTheFitStillReachesTheNoise) {
   EXPECT_TRUE(r.accepted.empty()) << residual_summary({run}, r);
 }
 
-// A soft core in either form of Eq. 10 (docs/MODEL.md) on a telegraph current: the base fit,
-// started in the paper's form, identifies it in both forms and keeps the paper's unless the other
-// fits the openings better by the margin; either reaches the noise, and the summary gives both. (On a run like
-// this the forms trade their parameters and stay within a per cent of each other; on the random
-// dampers' runs, with steps back to 0 A from saturation, they part: docs/CLOSING-THE-LOOP.md.)
-DamperClass soft_core(mrd::model::JilesAthertonForm form) {
-  DamperClass d = *find_damper_class("1kN");
-  d.model.jiles_atherton = {.Ms = 1.5e6, .a = 700.0, .alpha = 4e-4, .k = 900.0, .c = 0.17, .form = form};
-  return d;
-}
-
-TEST(BaseFit, BothFormsOfEq10AreTriedAndTheRuleKeepsOne) {
-  for (const auto form : {mrd::model::JilesAthertonForm::kTotalPinning, mrd::model::JilesAthertonForm::kIrreversiblePinning}) {
-    const DamperClass truth = soft_core(form);
-    const mrd::record::RecordedRun run = run_of(truth, RunProfile::kTelegraph, 6.0);
-    const ResidualResult r = base_only(run, 2000);  // then refined on the whole run in the kept form
-    const std::string summary = residual_summary({run}, r);
-    ASSERT_TRUE(std::isfinite(r.form_fitting_rms[0]) && std::isfinite(r.form_fitting_rms[1])) << summary;
-    EXPECT_EQ(r.base.jiles_atherton.form,
-              search::kept_form(mrd::model::JilesAthertonForm::kIrreversiblePinning, r.form_fitting_rms))
-        << summary;
-    EXPECT_LT(r.before.all, 1.3 * truth.force_noise) << summary;
-    const bool textbook = r.base.jiles_atherton.form == mrd::model::JilesAthertonForm::kTotalPinning;
-    EXPECT_NE(summary.find(textbook ? "the textbook form (pinning M)" : "the paper's form (pinning M_irr)"),
-              std::string::npos) << summary;
-    EXPECT_NE(summary.find("Eq. 10's form: fitting RMS"), std::string::npos) << summary;
-  }
-}
-
-// The rule alone: the origin's form stays unless the other fits better by kFormMargin (1 %).
-TEST(BaseFit, TheOtherFormReplacesTheOriginsOnlyWhenItFitsBetterByTheMargin) {
-  using mrd::model::JilesAthertonForm;
-  const JilesAthertonForm paper = JilesAthertonForm::kIrreversiblePinning;
-  const JilesAthertonForm textbook = JilesAthertonForm::kTotalPinning;
-  EXPECT_EQ(search::kept_form(paper, {10.0, 9.95}), paper);      // 0.5 % better: chance
-  EXPECT_EQ(search::kept_form(paper, {10.0, 9.8}), textbook);    // 2 % better
-  EXPECT_EQ(search::kept_form(paper, {10.0, std::nan("")}), paper);  // not tried
-  EXPECT_EQ(search::kept_form(textbook, {9.95, 10.0}), textbook);
-  EXPECT_EQ(search::kept_form(textbook, {9.8, 10.0}), paper);
-}
-
 TEST(BaseFit, EveryParameterComesWithItsUncertainty) {
   const DamperClass truth = another_damper();
   const ResidualResult r = base_only(run_of(truth, RunProfile::kTable4, 6.0));
@@ -143,8 +100,7 @@ TEST(BaseFit, AConstantCurrentRunKeepsTheMagneticsItCannotSee) {
   const mrd::record::RecordedRun run = run_of(truth, RunProfile::kSine, 6.0);
   const ResidualResult r = base_only(run);
   const mrd::model::DamperModel start = find_damper_class("1kN")->model;
-  EXPECT_EQ(r.base.jiles_atherton, start.jiles_atherton);  // the form of Eq. 10 too: not tried
-  EXPECT_TRUE(std::isnan(r.form_fitting_rms[1]));
+  EXPECT_EQ(r.base.jiles_atherton, start.jiles_atherton);
   EXPECT_EQ(r.base.circuit, start.circuit);
   EXPECT_EQ(r.base.fluid.field_exponent, start.fluid.field_exponent);
   // At a constant current the friction and the force scale are one direction: the friction

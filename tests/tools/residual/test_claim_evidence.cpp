@@ -143,6 +143,9 @@ TEST(ClaimCriterion, FiguresWorkedByHand) {
   EXPECT_FALSE(too_few.weighable());
   EXPECT_FALSE(too_few.significant());
   EXPECT_FALSE(too_few.material());
+  // Pieces cut from another series weigh nothing (and read nothing past its end).
+  const ClaimEvidence other_series = weigh_claim(s, validation_blocks(single), simpler, richer, 2.0, 1, {});
+  EXPECT_FALSE(other_series.weighable());
 }
 
 TEST(ClaimCriterion, AnEffectOfSixTenthsOfTheNoiseIsNamed) {
