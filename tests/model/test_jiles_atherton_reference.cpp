@@ -168,14 +168,20 @@ TEST(JilesAthertonReference, ReferenceConvergesFarBelowTheComparisonBound) {
   }
 }
 
-// With sub-steps 100 times finer than the default and the closed-form Langevin function, the
-// model's B is the reference's along every history, for both materials, to 1e-7 T (measured:
-// 5e-8 T): the model integrates Eq. 10 and nothing else.
-TEST(JilesAthertonReference, BFollowsEq10AlongMajorAndMinorLoopsAndReversals) {
+// Sub-steps 100 times finer than the default and the closed-form Langevin function.
+mrd::model::JilesAthertonSettings fine_settings() {
   mrd::model::JilesAthertonSettings fine;
   fine.max_field_step_fraction = 0.0025;
   fine.max_substeps = 1 << 20;
   fine.langevin = mrd::model::LangevinEvaluation::kExact;
+  return fine;
+}
+
+// With sub-steps 100 times finer than the default and the closed-form Langevin function, the
+// model's B is the reference's along every history, for both materials, to 1e-7 T (measured:
+// 5e-8 T): the model integrates Eq. 10 and nothing else.
+TEST(JilesAthertonReference, BFollowsEq10AlongMajorAndMinorLoopsAndReversals) {
+  const mrd::model::JilesAthertonSettings fine = fine_settings();
   for (const Material& m : {kDefault, kStrongMeanField}) {
     for (const auto& h : histories()) {
       const Comparison c = compare(m, h, fine, 20);
@@ -190,10 +196,7 @@ TEST(JilesAthertonReference, BFollowsEq10AlongMajorAndMinorLoopsAndReversals) {
 // integrates the textbook form with the material's k; the model, with k / (1 - c), follows it
 // within the same bound on every history, and with k itself it does not (0.01 T or more apart).
 TEST(JilesAthertonReference, TheTextbookFormIsThisOneWithKOverOneMinusC) {
-  mrd::model::JilesAthertonSettings fine;
-  fine.max_field_step_fraction = 0.0025;
-  fine.max_substeps = 1 << 20;
-  fine.langevin = mrd::model::LangevinEvaluation::kExact;
+  const mrd::model::JilesAthertonSettings fine = fine_settings();
   for (const Material& m : {kDefault, kStrongMeanField}) {
     Material textbook = m;
     textbook.pins_total = true;

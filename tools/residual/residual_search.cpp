@@ -60,10 +60,47 @@ double kept_noise_floor(const FitSeries& series, const std::vector<double>& pred
   return noise_floor(residual);
 }
 
+// Where the time went: each step's wall time and observer passes since the step before.
+class StepClock {
+ public:
+  StepClock(const search::Search& s, std::vector<ResidualResult::StepCost>& steps)
+      : search_(s), steps_(steps), started_(std::chrono::steady_clock::now()), step_started_(started_) {}
+  void done(const char* step) {
+    const auto now = std::chrono::steady_clock::now();
+    const std::int64_t evaluations = search_.evaluations;
+    steps_.push_back({step, std::chrono::duration<double>(now - step_started_).count(), evaluations - evaluations_});
+    step_started_ = now;
+    evaluations_ = evaluations;
+  }
+  [[nodiscard]] double total_seconds() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+  }
+
+ private:
+  const search::Search& search_;
+  std::vector<ResidualResult::StepCost>& steps_;
+  std::chrono::steady_clock::time_point started_;
+  std::chrono::steady_clock::time_point step_started_;
+  std::int64_t evaluations_ = 0;
+};
+
+// The final model's figures on the full series' kept samples: its error, the residual's
+// structure, what the robust loss says of it, and both models' NRMSE fit.
+void describe_final_residual(const FitSeries& full, const ResidualOptions& options, ResidualResult& result) {
+  result.after = residual_rms(full, result.predicted_after);
+  result.structure_after = structure_of(full, result.predicted_after);
+  result.robust_after = huber_weights(full, result.predicted_after, options.robust);
+  result.down_weighted = down_weighted_spans(full, result.predicted_after, result.robust_after);
+  std::vector<bool> kept(full.size());
+  for (std::size_t i = 0; i < full.size(); ++i) kept[i] = full.role[i] != SampleRole::kExcluded;
+  result.fit_before_percent = nrmse_fit_percent(full.force, result.predicted_before, kept);
+  result.fit_after_percent = nrmse_fit_percent(full.force, result.predicted_after, kept);
+  result.unexplained = describe(result.structure_after);
+}
+
 }  // namespace
 
 ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions& given) {
-  const auto started = std::chrono::steady_clock::now();
   // The searches integrate J-A with sub-steps that grow in saturation; what the result reports
   // of its models comes from the models' own integration (the start's).
   ResidualOptions options = given;
@@ -75,15 +112,7 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   };
   search::Search s(full, options);
   ResidualResult result;
-  auto step_started = started;
-  std::int64_t step_evaluations = 0;
-  const auto step_done = [&](const char* step) {
-    const auto now = std::chrono::steady_clock::now();
-    result.steps.push_back({step, std::chrono::duration<double>(now - step_started).count(),
-                            s.evaluations - step_evaluations});
-    step_started = now;
-    step_evaluations = s.evaluations;
-  };
+  StepClock clock(s, result.steps);
   result.samples = full.size();
   result.notes = full.notes;
   result.screenings = full.screenings;
@@ -97,9 +126,9 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   // 1-3. The base model (3b: under the robust loss, with --robust-fit) and its residual.
   ParameterSpace base_fit_space;
   const FittedModel identified = search::fit_base_model(s, base_fit_space);
-  step_done("base fit");
+  clock.done("base fit");
   const FittedModel base = search::refit_robustly(s, base_fit_space, identified, result.robust_refits);
-  if (result.robust_refits > 0) step_done("robust base fit");
+  if (result.robust_refits > 0) clock.done("robust base fit");
   result.base = reported(base.model);
   result.base_parameters = search::describe_base(base_fit_space, base, options.start, s.scales);
   predict_force(result.base, full, result.predicted_before);
@@ -114,37 +143,29 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   // cannot decide.
   std::vector<search::Effects> ambiguous_groups;
   search::AcceptedSet set = search::greedy_rounds(s, base.model, result, ambiguous_groups);
-  step_done("greedy rounds");
+  clock.done("greedy rounds");
   search::revise_set(s, set, result);
-  step_done("set revision");
+  clock.done("set revision");
   search::weigh_effects_against_terms(s, set, base.model, result);
   search::name_ambiguities(set, ambiguous_groups, result);
   for (const model::EffectInfo* e : set.effects) result.accepted.emplace_back(e->name);
   search::mark_final_set(result);
   search::name_unplaced_thresholds(s, set, result);
-  step_done("effects against terms");
+  clock.done("effects against terms");
   // 7. Discovery on what the named effects left.
   model::DamperModel current = reported(set.model);
   search::discover(s, current, result);
-  step_done("discovery");
+  clock.done("discovery");
   result.final_model = current;
   result.evaluations = s.evaluations;
-  result.after = residual_rms(full, result.predicted_after);
-  result.structure_after = structure_of(full, result.predicted_after);
-  result.robust_after = huber_weights(full, result.predicted_after, options.robust);
-  result.down_weighted = down_weighted_spans(full, result.predicted_after, result.robust_after);
-  std::vector<bool> kept(full.size());
-  for (std::size_t i = 0; i < full.size(); ++i) kept[i] = full.role[i] != SampleRole::kExcluded;
-  result.fit_before_percent = nrmse_fit_percent(full.force, result.predicted_before, kept);
-  result.fit_after_percent = nrmse_fit_percent(full.force, result.predicted_after, kept);
+  describe_final_residual(full, options, result);
   // Its Jacobian with the searches' J-A sub-steps: a difference quotient, not a reported figure.
   model::DamperModel linearised = result.final_model;
   linearised.integration = options.start.integration;
   result.parameters = model_uncertainty(linearised, s.fit_series, free_magnetics(s.scales, Magnetics::kMaterial));
-  result.unexplained = describe(result.structure_after);
   result.unphysical = unphysical_parameters(result.final_model, options.start, s.scales);
-  step_done("uncertainty");
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  clock.done("uncertainty");
+  result.seconds = clock.total_seconds();
   return result;
 }
 

@@ -245,76 +245,121 @@ std::vector<double> subset_force(const LibraryRows& rows, const std::vector<std:
 
 }  // namespace
 
+namespace {
+
+// The regression's sufficient statistics and scaling, and its fits of a subset of terms.
+struct Regression {
+  const Library& lib;
+  Moments moments[2];
+  Eigen::VectorXd scale;  // columns to unit RMS on the fitting samples, for the solve's conditioning
+  double viscous_coefficient;
+
+  [[nodiscard]] SubsetFit fit(const std::vector<std::size_t>& subset) const {
+    return fit_subset(lib, subset, moments[0], moments[1], scale, viscous_coefficient);
+  }
+};
+
+std::vector<std::size_t> with(std::vector<std::size_t> subset, std::size_t term) {
+  subset.push_back(term);
+  return subset;
+}
+
+// The term that, joined to `chosen`, validates best with every coefficient's sign physical, and
+// how many terms were tried (the claim's family).
+struct NextTerm {
+  std::size_t term;  // lib.terms.size(): none
+  SubsetFit fit;
+  int tried = 0;
+};
+NextTerm best_next_term(const Regression& r, const std::vector<std::size_t>& chosen) {
+  NextTerm next{r.lib.terms.size(), {}, 0};
+  for (std::size_t t = 0; t < r.lib.terms.size(); ++t) {
+    if (std::ranges::find(chosen, t) != chosen.end()) continue;
+    if (r.moments[0].gram(r.lib.terms[t].first_column, r.lib.terms[t].first_column) <= 0.0) continue;  // all zero
+    ++next.tried;
+    SubsetFit fit = r.fit(with(chosen, t));
+    if (!fit.physical) continue;
+    if (next.term == r.lib.terms.size() || fit.validation_rms < next.fit.validation_rms) {
+      next.term = t;
+      next.fit = std::move(fit);
+    }
+  }
+  return next;
+}
+
+// Terms that would have done as well as `next`: the run cannot tell them from it (on a single
+// sine, a mass and a negative stiffness are the same column). Led by `next`'s own name.
+std::vector<std::string> look_alike_terms(const Regression& r, const std::vector<std::size_t>& chosen,
+                                          const NextTerm& next, double current, double threshold) {
+  std::vector<std::string> alike{r.lib.terms[next.term].name};
+  for (std::size_t t = 0; t < r.lib.terms.size(); ++t) {
+    if (t == next.term || std::ranges::find(chosen, t) != chosen.end()) continue;
+    const SubsetFit other = r.fit(with(chosen, t));
+    const bool passes = other.physical && 1.0 - other.validation_rms / std::max(current, 1e-300) >= threshold;
+    if (passes && 1.0 - next.fit.validation_rms / std::max(other.validation_rms, 1e-300) < threshold)
+      alike.push_back(r.lib.terms[t].name);
+  }
+  return alike;
+}
+
+// A mains line's fitted sine and cosine (its columns from `c`) added to `interference` per sample;
+// returns its amplitude.
+double add_mains_line(const Library& lib, const LibraryTerm& term, const SubsetFit& fit, Eigen::Index c,
+                      const FitSeries& s, std::vector<double>& interference) {
+  const double sine = fit.coefficients[c], cosine = fit.coefficients[c + 1];
+  const double f =
+      lib.lines[static_cast<std::size_t>(term.first_column - kBaseColumns - static_cast<int>(model::kLearnedTermCount)) / 2]
+          .frequency;
+  std::size_t run = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const double phase = 2.0 * std::numbers::pi * f * time_of(s, i, run);
+    interference[i] += sine * std::sin(phase) + cosine * std::cos(phase);
+  }
+  return std::hypot(sine, cosine);
+}
+
+}  // namespace
+
 TermDiscovery discover_terms(const FitSeries& s, const std::vector<double>& predicted, const std::vector<double>& B,
                              const model::BinghamDamper& fluid, double threshold, const TermClaim& claim,
                              std::size_t max_terms) {
-  const double viscous_coefficient = fluid.viscous_coefficient();
   TermDiscovery out;
   out.interference.assign(s.size(), 0.0);
   if (s.size() < 16 || s.run_periods.empty()) return out;
   const Library lib = make_library(1.0 / s.sample_period);
   const std::vector<double> a = zero_phase_acceleration(s);
   const LibraryRows rows{lib, s, predicted, B, a, fluid};
-  Moments moments[2];
-  accumulate_moments(rows, moments);
-  if (moments[0].count < 8 || moments[1].count < 8) return out;
-  // Columns scaled to unit RMS on the fitting samples, for the conditioning of the solve.
-  Eigen::VectorXd scale(lib.columns);
+  Regression r{lib, {}, Eigen::VectorXd(lib.columns), fluid.viscous_coefficient()};
+  accumulate_moments(rows, r.moments);
+  if (r.moments[0].count < 8 || r.moments[1].count < 8) return out;
   for (Eigen::Index c = 0; c < lib.columns; ++c)
-    scale[c] = std::max(std::sqrt(moments[0].gram(c, c) / static_cast<double>(moments[0].count)), 1e-300);
+    r.scale[c] = std::max(std::sqrt(r.moments[0].gram(c, c) / static_cast<double>(r.moments[0].count)), 1e-300);
 
   std::vector<std::size_t> chosen;
   std::vector<double> gains;
   std::vector<ClaimEvidence> claims;
-  SubsetFit accepted_fit = fit_subset(lib, chosen, moments[0], moments[1], scale, viscous_coefficient);
+  SubsetFit accepted_fit = r.fit(chosen);
   double current = accepted_fit.validation_rms;
   while (chosen.size() < max_terms) {
-    std::size_t best = lib.terms.size();
-    SubsetFit best_fit;
-    int tried = 0;
-    for (std::size_t t = 0; t < lib.terms.size(); ++t) {
-      if (std::ranges::find(chosen, t) != chosen.end()) continue;
-      if (moments[0].gram(lib.terms[t].first_column, lib.terms[t].first_column) <= 0.0) continue;  // all zero
-      ++tried;
-      std::vector<std::size_t> trial = chosen;
-      trial.push_back(t);
-      SubsetFit fit = fit_subset(lib, trial, moments[0], moments[1], scale, viscous_coefficient);
-      if (!fit.physical) continue;
-      if (best == lib.terms.size() || fit.validation_rms < best_fit.validation_rms) {
-        best = t;
-        best_fit = std::move(fit);
-      }
-    }
-    if (best == lib.terms.size()) break;
-    const double gain = 1.0 - best_fit.validation_rms / std::max(current, 1e-300);
+    NextTerm next = best_next_term(r, chosen);
+    if (next.term == lib.terms.size()) break;
+    const double gain = 1.0 - next.fit.validation_rms / std::max(current, 1e-300);
     ClaimEvidence evidence;
     if (claim.pieces != nullptr) {
-      std::vector<std::size_t> with_best = chosen;
-      with_best.push_back(best);
       evidence = weigh_claim(s, *claim.pieces, subset_force(rows, chosen, accepted_fit),
-                             subset_force(rows, with_best, best_fit), claim.noise_floor, tried, claim.criterion);
+                             subset_force(rows, with(chosen, next.term), next.fit), claim.noise_floor, next.tried,
+                             claim.criterion);
       if (!evidence.passes()) break;
     } else if (gain < threshold) {
       break;
     }
-    // Terms that would have done as well: the run cannot tell them from the one chosen (on a
-    // single sine, a mass and a negative stiffness are the same column).
-    std::vector<std::string> alike{lib.terms[best].name};
-    for (std::size_t t = 0; t < lib.terms.size(); ++t) {
-      if (t == best || std::ranges::find(chosen, t) != chosen.end()) continue;
-      std::vector<std::size_t> trial = chosen;
-      trial.push_back(t);
-      const SubsetFit other = fit_subset(lib, trial, moments[0], moments[1], scale, viscous_coefficient);
-      const bool passes = other.physical && 1.0 - other.validation_rms / std::max(current, 1e-300) >= threshold;
-      if (passes && 1.0 - best_fit.validation_rms / std::max(other.validation_rms, 1e-300) < threshold)
-        alike.push_back(lib.terms[t].name);
-    }
+    std::vector<std::string> alike = look_alike_terms(r, chosen, next, current, threshold);
     if (alike.size() > 1) out.ambiguous.push_back(std::move(alike));
-    chosen.push_back(best);
+    chosen.push_back(next.term);
     gains.push_back(gain);
     claims.push_back(evidence);
-    current = best_fit.validation_rms;
-    accepted_fit = std::move(best_fit);
+    current = next.fit.validation_rms;
+    accepted_fit = std::move(next.fit);
   }
 
   if (chosen.empty()) return out;
@@ -324,18 +369,7 @@ TermDiscovery discover_terms(const FitSeries& s, const std::vector<double>& pred
   for (std::size_t k = 0; k < chosen.size(); ++k) {
     const LibraryTerm& term = lib.terms[chosen[k]];
     DiscoveredTerm d{term.name, accepted_fit.coefficients[c], term.unit, term.interference, gains[k], claims[k]};
-    if (term.interference) {
-      const double sine = accepted_fit.coefficients[c], cosine = accepted_fit.coefficients[c + 1];
-      d.coefficient = std::hypot(sine, cosine);
-      const double f =
-          lib.lines[static_cast<std::size_t>(term.first_column - kBaseColumns - static_cast<int>(model::kLearnedTermCount)) / 2]
-              .frequency;
-      std::size_t line_run = 0;
-      for (std::size_t i = 0; i < s.size(); ++i) {
-        const double phase = 2.0 * std::numbers::pi * f * time_of(s, i, line_run);
-        out.interference[i] += sine * std::sin(phase) + cosine * std::cos(phase);
-      }
-    }
+    if (term.interference) d.coefficient = add_mains_line(lib, term, accepted_fit, c, s, out.interference);
     out.terms.push_back(std::move(d));
     c += term.columns;
   }
