@@ -106,22 +106,38 @@ DemandProfile structure_demand(double duration, double dt, std::uint64_t seed, c
   return p;
 }
 
+namespace {
+
+// Which scored demands (from sample `first` on) the plant can deliver at all, and how many.
+struct ScoredDemands {
+  std::vector<bool> reachable;
+  std::size_t scored = 0;
+  std::size_t reachable_scored = 0;
+};
+ScoredDemands score_demands(const DemandProfile& profile, const ForceRunOptions& options, std::size_t first,
+                            ForceRunResult& result) {
+  const auto [tau_min, tau_max] = yield_stress_range(options.plant, options.limits.max_current);
+  ScoredDemands d{std::vector<bool>(profile.size()), 0, 0};
+  double sum_demand = 0.0;
+  for (std::size_t i = first; i < profile.size(); ++i) {
+    d.reachable[i] = reachable_force(options.plant, tau_min, tau_max, profile.force[i], profile.velocity[i]).reachable;
+    sum_demand += profile.force[i] * profile.force[i];
+    ++d.scored;
+    d.reachable_scored += d.reachable[i];
+  }
+  const auto n = static_cast<double>(d.scored);
+  result.desired_rms = d.scored ? std::sqrt(sum_demand / n) : 0.0;
+  result.reachable_fraction = d.scored ? static_cast<double>(d.reachable_scored) / n : 0.0;
+  return d;
+}
+
+}  // namespace
+
 ForceRunResult run_force_tracking(const DemandProfile& profile, const ForceRunOptions& options) {
   const double dt = profile.sample_period;
   const auto first = static_cast<std::size_t>(std::llround(options.settle / dt));
-  const auto [tau_min, tau_max] = yield_stress_range(options.plant, options.limits.max_current);
   ForceRunResult result;
-  std::vector<bool> reachable(profile.size());
-  double sum_demand = 0.0;
-  std::size_t scored = 0, reachable_scored = 0;
-  for (std::size_t i = first; i < profile.size(); ++i) {
-    reachable[i] = reachable_force(options.plant, tau_min, tau_max, profile.force[i], profile.velocity[i]).reachable;
-    sum_demand += profile.force[i] * profile.force[i];
-    ++scored;
-    reachable_scored += reachable[i];
-  }
-  result.desired_rms = scored ? std::sqrt(sum_demand / static_cast<double>(scored)) : 0.0;
-  result.reachable_fraction = scored ? static_cast<double>(reachable_scored) / static_cast<double>(scored) : 0.0;
+  const auto [reachable, scored, reachable_scored] = score_demands(profile, options, first, result);
 
   const model::DamperModel truth = with_yield_drift(options.plant, options.yield_drift);
   const double reference = truth.effects.get<model::ThermalDriftEffect>().reference_temperature;
