@@ -52,6 +52,20 @@ double interpolate(const std::vector<double>& time, const std::vector<double>& y
   return y[i] + (t - time[i]) / (time[i + 1] - time[i]) * (y[i + 1] - y[i]);
 }
 
+struct Stall {
+  double start, end;  // [s], plant log time
+};
+
+// Gaps in the plant's log longer than a poll period: the plant process did not run then, and
+// a sample read meanwhile is older than the loop allows for.
+std::vector<Stall> plant_stalls(const std::vector<double>& time) {
+  std::vector<Stall> stalls;
+  for (std::size_t i = 1; i < time.size(); ++i) {
+    if (time[i] - time[i - 1] > kPoll) stalls.push_back({time[i - 1], time[i]});
+  }
+  return stalls;
+}
+
 const mrd::control::SupervisorConfig& safety() {
   static const auto config = mrd::config::load_config_text(controller_toml(), "hil").config.safety;
   return config;
@@ -96,7 +110,13 @@ TEST(HilModbus, Table4SineRunsWithTheScheduleFollowedAndNoRecordLost) {
   //   which on a shared machine can be more than a period (every level change one period off in
   //   1 run of 20, an RMS of 8 %);
   // - rows within 4 mm of a stroke end: the true force flips sign there in a fraction of a
-  //   millisecond (Eq. 11's sign term), and a row that lands there measures its own timing.
+  //   millisecond (Eq. 11's sign term), and a row that lands there measures its own timing;
+  // - rows within two periods after the plant itself stalled (a gap in its log): its register
+  //   held a value the bus thread then stamped as fresh, and the velocity from it had the wrong
+  //   sign for a period (a 20 ms stall of the plant right after the QEMU VM's test exits: one
+  //   row at 110 % of the peak force, an RMS of 14 %). A real LVDT does not stall.
+  const std::vector<Stall> stalls = plant_stalls(r.plant_log.time);
+  std::size_t after_stall = 0;
   double force_sum = 0.0;
   double displacement_sum = 0.0;
   std::size_t judged = 0;
@@ -111,12 +131,16 @@ TEST(HilModbus, Table4SineRunsWithTheScheduleFollowedAndNoRecordLost) {
     }
     const double x = interpolate(plant.time, plant.displacement, at);
     if (std::fabs(x) > 0.036) continue;
+    if (std::any_of(stalls.begin(), stalls.end(), [&](const Stall& s) { return at > s.start && at < s.end + 2.0 * kPeriod; })) {
+      ++after_stall;
+      continue;
+    }
     const double e = row.force - interpolate(plant.time, plant.force, at);
     force_sum += e * e;
     displacement_sum += (row.displacement - x) * (row.displacement - x);
     ++judged;
   }
-  ASSERT_GE(judged, 30u) << transitions(r);  // about 60 of the 4 s run's 200 rows
+  ASSERT_GE(judged, 30u) << transitions(r) << after_stall << " rows after a plant stall";  // about 60 of 200
   const double rms = std::sqrt(force_sum / static_cast<double>(judged));
   // A sample is up to a poll period old when the loop takes it.
   EXPECT_LT(std::sqrt(displacement_sum / static_cast<double>(judged)), 2e-4 + kPeakSpeed * kPoll / std::sqrt(3.0))
@@ -126,6 +150,7 @@ TEST(HilModbus, Table4SineRunsWithTheScheduleFollowedAndNoRecordLost) {
   RecordProperty("force_rms_N", std::to_string(j.rms_error));
   RecordProperty("force_rms_judged_N", std::to_string(rms));
   RecordProperty("lag_ms", std::to_string(j.lag * 1e3));
+  RecordProperty("rows_after_a_plant_stall", std::to_string(after_stall));
 }
 
 // The plant (the Modbus device) started after the controller. The back-off is capped at 0.1 s
