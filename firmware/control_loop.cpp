@@ -15,6 +15,13 @@ constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
 hal::Timestamp to_period(double seconds) {
   return std::chrono::duration_cast<hal::Timestamp>(std::chrono::duration<double>(seconds));
 }
+
+// Periods the load cell was stale or bad so far, saturated (0 without a correction).
+std::uint32_t load_cell_frozen(const control::ForceScaleCorrection* correction) {
+  if (correction == nullptr) return 0;
+  const std::uint64_t n = correction->stale_periods() + correction->bad_samples();
+  return static_cast<std::uint32_t>(std::min<std::uint64_t>(n, std::numeric_limits<std::uint32_t>::max()));
+}
 }  // namespace
 
 ControlLoop::ControlLoop(const control::ControlLawConfig& law, const control::SupervisorConfig& safety,
@@ -79,91 +86,102 @@ const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
   const std::uint32_t skipped = skipped_periods(now);
   overruns_ += skipped;
   last_release_ = now;
-
-  // 1-2. The newest sample, judged.
   if (clear_requested_.exchange(false, std::memory_order_relaxed)) supervisor_.clear_latch(now);
-  const control::SampleCheck check = checker_.check(hal_.lvdt.latest(), now);
-  const bool force_mode = law_.mode() == control::ControlMode::kForce;
-  const control::SampleCheck demand_check =
-      force_mode ? demand_checker_.check(hal_.demand->latest(), now) : control::SampleCheck::kFresh;
-  double load_cell_force = 0.0;
-  const control::LoadCellStatus load_cell = read_load_cell(load_cell_force);
-  const std::optional<bool> fault = hal_.lines.driver_fault();
-  const std::optional<hal::CurrentReading> measured = hal_.driver.measured();
-  double coil = last_setpoint_;
-  bool disagrees = false;
-  if (measured) {
-    disagrees = !std::isfinite(measured->value) ||
-                std::fabs(measured->value - last_setpoint_) > current_tolerance_;
-    if (std::isfinite(measured->value)) coil = measured->value;
-  }
 
+  const PeriodInputs in = read_inputs(now, skipped);
   // 3. Schedule and observer, on the last good displacement, whoever drives the coil.
   const control::ControlLaw::Observation& seen = law_.observe(
-      {.displacement = checker_.held_value(), .timing = checker_.timing(check, now), .coil_current = coil});
+      {.displacement = checker_.held_value(), .timing = checker_.timing(in.sample, now), .coil_current = in.coil_current});
+  control::SupervisorDecision d = supervise(in);
+  const control::ControlLaw::Command command = compensate(in, d);
+  const double setpoint = d.in_control ? command.current : fail_safe_current_;
+  write_outputs(d, setpoint, now);
+  publish_telemetry(in, seen, command, d, setpoint);
+  ++cycles_;
+  return record_;
+}
 
-  // 4. The supervisor.
-  const bool stalled = bus_.stalled(now);
+// 1-2. The newest samples, judged, and what the driver reports.
+ControlLoop::PeriodInputs ControlLoop::read_inputs(hal::Timestamp now, std::uint32_t skipped) {
+  PeriodInputs in{.now = now, .skipped = skipped};
+  in.sample = checker_.check(hal_.lvdt.latest(), now);
+  in.demand = force_mode() ? demand_checker_.check(hal_.demand->latest(), now) : control::SampleCheck::kFresh;
+  in.load_cell = read_load_cell(in.load_cell_force);
+  in.driver_fault = hal_.lines.driver_fault();
+  in.measured = hal_.driver.measured();
+  in.coil_current = last_setpoint_;
+  if (in.measured) {
+    in.current_disagrees = !std::isfinite(in.measured->value) ||
+                           std::fabs(in.measured->value - last_setpoint_) > current_tolerance_;
+    if (std::isfinite(in.measured->value)) in.coil_current = in.measured->value;
+  }
+  return in;
+}
+
+// 4. The supervisor, on this period's inputs and what the previous period's writes did.
+control::SupervisorDecision ControlLoop::supervise(const PeriodInputs& in) {
+  const bool stalled = bus_.stalled(in.now);
   bus_stalled_.store(stalled, std::memory_order_relaxed);
   const hal::SetpointAcks acks = hal_.driver.setpoint_acks();
   const std::uint64_t recoveries = law_.observer().magnetics().recoveries();
-  control::SupervisorDecision d = supervisor_.step(
-      {.sample = check,
-       .demand = demand_check,
-       .driver_fault = fault,
-       .current_disagrees = disagrees,
+  const control::SupervisorDecision d = supervisor_.step(
+      {.sample = in.sample,
+       .demand = in.demand,
+       .driver_fault = in.driver_fault,
+       .current_disagrees = in.current_disagrees,
        .setpoint_write_failed = write_failed_,
        .link_down = link_down_,
        .setpoints_refused = static_cast<std::uint32_t>(std::min<std::uint64_t>(acks.refused - acks_.refused, 1u << 16)),
        .setpoint_accepted = acks.accepted != acks_.accepted,
-       .readback_lost = readback_lost(measured, now),
+       .readback_lost = readback_lost(in.measured, in.now),
        .line_write_failed = line_failed_,
        .disable_failed = disable_failed_,
        .observer_recovered = recoveries != recoveries_,
        .bus_stalled = stalled,
-       .overruns = skipped},
-      now);
+       .overruns = in.skipped},
+      in.now);
   acks_ = acks;
   recoveries_ = recoveries;
+  return d;
+}
 
-  // 5. The compensated command, only while the law drives the coil, and only a finite one.
+// 5. The compensated command, only while the law drives the coil, and only a finite one: a
+// non-finite command is vetoed into `d`. Otherwise the law holds the fail-safe current.
+control::ControlLaw::Command ControlLoop::compensate(const PeriodInputs& in, control::SupervisorDecision& d) {
   control::ControlLaw::Command command{kNotComputed, kNotComputed};
-  // Force mode's demand: the last good one, held while demands are missing or bad.
-  const double demand = force_mode ? demand_checker_.held_value() : kNotComputed;
   if (d.in_control) {
     // The load cell corrects the model's yield force scale only while the law drives the coil,
     // and only against an estimate made on this period's fresh LVDT sample: on a held or
     // extrapolated displacement the model's force is not the damper's, and the scale would
     // learn the sensor's fault.
-    law_.correct_force_scale(check == control::SampleCheck::kFresh ? load_cell : control::LoadCellStatus::kNone,
-                             load_cell_force);
-    command = law_.command(demand);
+    law_.correct_force_scale(in.sample == control::SampleCheck::kFresh ? in.load_cell : control::LoadCellStatus::kNone,
+                             in.load_cell_force);
+    command = law_.command(held_demand());
     // A non-finite target is control lost as surely as a non-finite current (a finite 0 A beside
     // target_B = NaN drives nothing): the same veto. The observer's J-A state resets itself
     // (observer_recovered above).
     if (!std::isfinite(command.current) || !std::isfinite(command.target_B)) {
-      d = supervisor_.veto(control::Trigger::kCommandNotFinite, now);
+      d = supervisor_.veto(control::Trigger::kCommandNotFinite, in.now);
     }
   }
   if (!d.in_control) law_.hold(fail_safe_current_);
-  const double setpoint = d.in_control ? command.current : fail_safe_current_;
+  return command;
+}
 
-  // 6. Setpoint and lines.
-  write_outputs(d, setpoint, now);
+// Force mode's demand: the last good one, held while demands are missing or bad.
+double ControlLoop::held_demand() const { return force_mode() ? demand_checker_.held_value() : kNotComputed; }
 
-  // 7. Telemetry.
+// 7. The period's record, into the ring every `decimation_` cycles.
+void ControlLoop::publish_telemetry(const PeriodInputs& in, const control::ControlLaw::Observation& seen,
+                                    const control::ControlLaw::Command& command, const control::SupervisorDecision& d,
+                                    double setpoint) {
   const control::ForceScaleCorrection* correction = law_.force_scale_correction();
-  const auto load_cell_frozen = [&] {
-    if (correction == nullptr) return std::uint32_t{0};
-    const std::uint64_t n = correction->stale_periods() + correction->bad_samples();
-    return static_cast<std::uint32_t>(std::min<std::uint64_t>(n, std::numeric_limits<std::uint32_t>::max()));
-  };
   // By name: a positional list of twelve doubles would compile with two of them swapped.
   record_ = runtime::TelemetryRecord{
       .cycle = cycles_,
-      .time = now,
+      .time = in.now,
       .displacement = checker_.held_value(),
-      .measured_current = measured ? measured->value : std::numeric_limits<double>::quiet_NaN(),
+      .measured_current = in.measured ? in.measured->value : std::numeric_limits<double>::quiet_NaN(),
       .scheduled_current = seen.scheduled_current,
       .law_current = command.current,
       .setpoint = setpoint,
@@ -171,26 +189,25 @@ const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
       .B = seen.estimate.B,
       .velocity = seen.estimate.velocity,
       .force = seen.estimate.force,
-      .overruns = skipped,
-      .sample = static_cast<std::uint8_t>(check),
+      .overruns = in.skipped,
+      .sample = static_cast<std::uint8_t>(in.sample),
       .state = static_cast<std::uint8_t>(d.state),
       .trigger = static_cast<std::uint8_t>(d.trigger),
       .enable = d.enable,
       .latched = d.latched,
-      .recoveries = recoveries,
-      .demand = demand,
+      .recoveries = recoveries_,
+      .demand = held_demand(),
       .yield_force = command.yield_force,
-      .demand_check = static_cast<std::uint8_t>(demand_check),
+      .demand_check = static_cast<std::uint8_t>(in.demand),
       .clipped = command.clipped,
       .reached = command.reached,
-      .force_scale = force_mode ? law_.force_scale() : kNotComputed,
-      .load_cell_frozen = load_cell_frozen(),
+      .force_scale = force_mode() ? law_.force_scale() : kNotComputed,
+      .load_cell_frozen = load_cell_frozen(correction),
       .force_scale_at_bound = d.in_control && correction != nullptr && correction->reached_bound()};
   if (telemetry_ != nullptr && cycles_ % decimation_ == 0) telemetry_->offer(record_);
-  ++cycles_;
-  return record_;
 }
 
+// 6. The setpoint and the lines.
 void ControlLoop::write_outputs(const control::SupervisorDecision& d, double setpoint, hal::Timestamp now) {
   const hal::IoStatus written = hal_.driver.write_setpoint(setpoint);
   const bool queued = written == hal::IoStatus::kOk;

@@ -55,12 +55,36 @@ class ControlLoop {
   [[nodiscard]] bool bus_stalled() const { return bus_stalled_.load(std::memory_order_relaxed); }
 
  private:
+  // What one period read, judged (steps 1-2), for the steps after it.
+  struct PeriodInputs {
+    hal::Timestamp now{};
+    std::uint32_t skipped = 0;  // periods lost before this one
+    control::SampleCheck sample = control::SampleCheck::kFresh;
+    control::SampleCheck demand = control::SampleCheck::kFresh;  // kFresh in table4 mode
+    control::LoadCellStatus load_cell = control::LoadCellStatus::kNone;
+    double load_cell_force = 0.0;  // [N], when load_cell is kFresh
+    std::optional<bool> driver_fault;
+    std::optional<hal::CurrentReading> measured;
+    double coil_current = 0.0;  // measured when finite, else the last accepted setpoint [A]
+    bool current_disagrees = false;
+  };
+
+  // The cycle's steps, in order.
+  PeriodInputs read_inputs(hal::Timestamp now, std::uint32_t skipped);
+  control::SupervisorDecision supervise(const PeriodInputs& in);
+  control::ControlLaw::Command compensate(const PeriodInputs& in, control::SupervisorDecision& d);
+  void write_outputs(const control::SupervisorDecision& d, double setpoint, hal::Timestamp now);
+  void publish_telemetry(const PeriodInputs& in, const control::ControlLaw::Observation& seen,
+                         const control::ControlLaw::Command& command, const control::SupervisorDecision& d,
+                         double setpoint);
+
   std::uint32_t skipped_periods(hal::Timestamp now) const;
   // Force mode's load cell this period: nothing new (also a repeated sample), a fresh usable
   // one (its value in `newtons`), or a bad one.
   control::LoadCellStatus read_load_cell(double& newtons);
   [[nodiscard]] bool readback_lost(const std::optional<hal::CurrentReading>& measured, hal::Timestamp now);
-  void write_outputs(const control::SupervisorDecision& d, double setpoint, hal::Timestamp now);
+  [[nodiscard]] bool force_mode() const { return law_.mode() == control::ControlMode::kForce; }
+  [[nodiscard]] double held_demand() const;
 
   control::ControlLaw law_;
   control::Supervisor supervisor_;

@@ -22,13 +22,15 @@ struct RunOptions {
   const ConfigReload* reload = nullptr;
 };
 
-// mrd-controller's run: builds the back ends, the loop and the telemetry writer, runs the loop
-// on its own real-time thread, prints statistics on request and at exit, and on stop drives the
-// fail-safe current before anything is torn down. Under systemd it reports readiness, feeds the
-// watchdog while the loop's cycles advance and keeps STATUS= current (runtime::ServiceNotifier);
-// supervisor transitions reach the log as they happen. Returns the process exit code.
-// `unblock`, if given, is the set of signals the caller blocked so that the threads started
-// here inherit it; it is unblocked on the calling thread once they run.
+// mrd-controller's run, in the steps of a lifecycle (ros2_control's): configure (the back ends,
+// the telemetry writer and the loop built and started), activate (what runs printed), run (the
+// loop on its own real-time thread; statistics on request, the config file re-checked on
+// SIGHUP), deactivate (after the final cycle drove the fail-safe current: the stop logged, the
+// writer and the buses down) and report (statistics, the run's verdict). Under systemd it
+// reports readiness, feeds the watchdog while the loop's cycles advance and keeps STATUS=
+// current (runtime::ServiceNotifier); supervisor transitions reach the log as they happen.
+// Returns the process exit code. `unblock`, if given, is the set of signals the caller blocked
+// so that the threads started here inherit it; it is unblocked on the calling thread once they run.
 int run_controller(const config::ControllerConfig& config, const RunOptions& options,
                    runtime::ProcessSignals& signals, std::FILE* out, const sigset_t* unblock = nullptr);
 

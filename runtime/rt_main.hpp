@@ -5,7 +5,6 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
-#include <functional>
 #include <span>
 #include <string>
 #include <thread>
@@ -21,7 +20,7 @@ namespace mrd::runtime {
 struct ProcessSignals {
   std::atomic<bool> stop{false};         // SIGTERM, SIGINT: end the run through the final cycle
   std::atomic<int> stop_signal{0};       // which of them came first (0: none yet)
-  std::atomic<bool> reload{false};       // SIGHUP: the hooks' reload, or a stop where there is none
+  std::atomic<bool> reload{false};       // SIGHUP: the hooks' reload(), or a stop where it declines
   std::atomic<bool> print_stats{false};  // SIGUSR1
   std::atomic<bool> clear_latch{false};  // SIGUSR2: an operator clears a latched SAFE
 };
@@ -44,26 +43,29 @@ struct RealTimeRun {
   std::chrono::milliseconds poll_period{20};    // how often the main thread looks at the flags
 };
 
-// The parts of a real-time program that are not its cycle; all but `finish` run on the
-// calling (non-real-time) thread.
-struct RealTimeHooks {
-  std::function<void(hal::Timestamp next_release)> finish;  // on the loop thread, after the stop
-  std::function<void(const RtSetupResult&)> ready;          // once the loop thread is set up
-  std::function<void()> print_stats;                        // on SIGUSR1
-  std::function<void()> clear_latch;                        // on SIGUSR2
-  std::function<void()> reload;                             // on SIGHUP; none: SIGHUP stops the run
-  std::function<void(hal::Timestamp now)> tick;             // every poll period, while the loop runs
+// What a real-time program does besides its cycle, as methods it overrides (each a no-op
+// otherwise). All but finish() run on the calling (non-real-time) thread.
+class RealTimeHooks {
+ public:
+  virtual ~RealTimeHooks() = default;
+
+  virtual void finish(hal::Timestamp /*next_release*/) {}  // on the loop thread, after the stop
+  virtual void ready(const RtSetupResult& /*rt*/) {}        // once the loop thread is set up
+  virtual void print_stats() {}                             // on SIGUSR1
+  virtual void clear_latch() {}                             // on SIGUSR2
+  virtual bool reload() { return false; }                   // on SIGHUP; false: SIGHUP stops the run
+  virtual void tick(hal::Timestamp /*now*/) {}              // every poll period, while the loop runs
 };
 
 // The one skeleton of mrd-controller and mrd-plant: the bus threads at their priority, the
 // loop on its own thread (SCHED_FIFO, pinned, pre-faulted stack) releasing `cycle` on a fixed
-// period, the calling thread polling the signal flags; on stop, `finish` runs one last time on
+// period, the calling thread polling the signal flags; on stop, finish() runs one last time on
 // the loop thread (the controller drives the fail-safe current there) before it ends.
 // lock_memory() is the caller's, before it allocates the run's buffers; the CPU wake-up latency
 // limit is held here, in `rt`, until the caller destroys it.
 template <typename Cycle>
 void run_real_time(const RealTimeRun& run, ProcessSignals& signals, const sigset_t* unblock,
-                   RtSetupResult& rt, LoopStatistics& stats, Cycle&& cycle, const RealTimeHooks& hooks) {
+                   RtSetupResult& rt, LoopStatistics& stats, Cycle&& cycle, RealTimeHooks& hooks) {
   hold_cpu_dma_latency(run.realtime, rt);
   make_io_threads_realtime(run.realtime, run.io_threads, rt);
   std::atomic<bool> stop{false};
@@ -74,27 +76,23 @@ void run_real_time(const RealTimeRun& run, ProcessSignals& signals, const sigset
     setup_done.store(true);
     RealTimeRunner runner(run.period);
     const hal::Timestamp next = runner.run(cycle, stop, run.max_cycles, stats);
-    if (hooks.finish) hooks.finish(next);
+    hooks.finish(next);
     finished.store(true);
   });
   if (unblock != nullptr) pthread_sigmask(SIG_UNBLOCK, unblock, nullptr);
   while (!setup_done.load()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  if (hooks.ready) hooks.ready(rt);
+  hooks.ready(rt);
   while (!finished.load()) {
     std::this_thread::sleep_for(run.poll_period);
-    if (signals.reload.exchange(false)) {
-      if (hooks.reload) {
-        hooks.reload();
-      } else {
-        int none = 0;
-        signals.stop_signal.compare_exchange_strong(none, SIGHUP);
-        signals.stop.store(true);
-      }
+    if (signals.reload.exchange(false) && !hooks.reload()) {
+      int none = 0;
+      signals.stop_signal.compare_exchange_strong(none, SIGHUP);
+      signals.stop.store(true);
     }
     if (signals.stop.load()) stop.store(true);
-    if (signals.print_stats.exchange(false) && hooks.print_stats) hooks.print_stats();
-    if (signals.clear_latch.exchange(false) && hooks.clear_latch) hooks.clear_latch();
-    if (hooks.tick) hooks.tick(monotonic_now());
+    if (signals.print_stats.exchange(false)) hooks.print_stats();
+    if (signals.clear_latch.exchange(false)) hooks.clear_latch();
+    hooks.tick(monotonic_now());
   }
   loop_thread.join();
 }
