@@ -43,7 +43,7 @@ FittedModel identify_base(Search& s, const model::DamperModel& origin, Parameter
   space = base_space(origin, start, s.scales, Magnetics::kMaterial);
   space.linear = linear_effects_of(origin);
   ParameterSpace exploring = space;
-  exploring.origin.integration.max_substeps = std::min(exploring.origin.integration.max_substeps, 64);
+  exploring.origin.integration.max_substeps = std::min(exploring.origin.integration.max_substeps, kExploringSubsteps);
   std::vector<Point> starts;
   for (int k = 0; k < std::max(swarms, 1); ++k) {
     const FittedModel swarm = fit_space(exploring, openings, &s.pool, s.seed++, 2 * s.options.evaluations_per_parameter);
@@ -65,9 +65,20 @@ FittedModel identify_base(Search& s, const model::DamperModel& origin, Parameter
   return whole;
 }
 
+FittedModel identify_base_twice_if_short(Search& s, const model::DamperModel& origin, ParameterSpace& space,
+                                         int swarms) {
+  FittedModel first = identify_base(s, origin, space, true, swarms);
+  if (!(first.fitting_rms > kSecondStartRatio * s.white_noise_of(s.predicted(first.model)))) return first;
+  ParameterSpace again;
+  FittedModel second = identify_base(s, origin, again, false, 2);
+  if (!(second.fitting_rms < first.fitting_rms)) return first;
+  space = std::move(again);
+  return second;
+}
+
 FittedModel fit_base_model(Search& s, ParameterSpace& space) {
   if (s.options.progress != nullptr) s.options.progress->report({.stage = "base fit"});
-  return identify_base(s, s.options.start, space, true, 2);
+  return identify_base_twice_if_short(s, s.options.start, space, 2);
 }
 
 FittedModel refit_robustly(Search& s, ParameterSpace& space, FittedModel base, int& refits) {

@@ -129,8 +129,11 @@ std::vector<BaseCoordinate> base_coordinate_table(const model::DamperModel& star
   }
   // The sign velocity: from 0.1 % of the run's speed to 15 % of it and at most 50 mm/s, so that
   // the yield term cannot take the viscous term's place (a v_s near the speed makes s(v) linear).
+  // A slow run still reaches 10 mm/s or half its speed: dampers smooth their sign over up to
+  // that whatever the motion (on a run at 24 mm/s, 15 % stopped a damper's 4 mm/s short).
   const double v_lo = std::log10(std::max(1e-3 * scales.speed, 1e-6));
-  const double v_hi = std::log10(std::max(std::min(0.15 * scales.speed, model::kTypicalSignVelocity.hi), 2e-6));
+  const double v_top = std::max(0.15 * scales.speed, std::min(0.01, 0.5 * scales.speed));
+  const double v_hi = std::log10(std::max(std::min(v_top, model::kTypicalSignVelocity.hi), 2e-6));
   out.push_back({"log10 sign velocity [m/s]", {v_lo, v_hi},
                  [](const model::DamperModel& m) { return std::log10(m.geometry.sign_velocity_scale); },
                  [](model::DamperModel& m, double v) { m.geometry.sign_velocity_scale = std::pow(10.0, v); }});

@@ -28,7 +28,7 @@ Effects candidate_effects(const ResidualOptions& options) {
 model::DamperModel polish_accepted(Search& s, const model::DamperModel& accepted, const Effects& effects,
                                    double& validation) {
   ParameterSpace space;
-  const model::DamperModel rebased = identify_base(s, accepted, space, true, 1).model;
+  const model::DamperModel rebased = identify_base_twice_if_short(s, accepted, space, 1).model;
   std::int64_t spent = 0;
   const model::DamperModel polished =
       refine_jointly(s, rebased, effects, effect_coordinates(effects, rebased, s.scales),

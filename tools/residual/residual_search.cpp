@@ -50,16 +50,6 @@ std::vector<std::string> unphysical_parameters(const model::DamperModel& m, cons
   return out;
 }
 
-// The white noise of the kept samples' residual (noise_floor: from the sample-to-sample
-// differences, which the model's smooth form error barely moves).
-double kept_noise_floor(const FitSeries& series, const std::vector<double>& predicted) {
-  std::vector<double> residual;
-  residual.reserve(series.size());
-  for (std::size_t i = 0; i < series.size(); ++i)
-    if (series.role[i] != SampleRole::kExcluded) residual.push_back(series.force[i] - predicted[i]);
-  return noise_floor(residual);
-}
-
 // Where the time went: each step's wall time and observer passes since the step before.
 class StepClock {
  public:
@@ -136,7 +126,7 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   result.structure_before = structure_of(full, result.predicted_before);
   // On the series the claims are weighed on: a load cell's filter ties neighbouring samples of
   // the full rate, and their differences would understate the noise of the decimated samples.
-  s.noise_floor = kept_noise_floor(s.fit_series, s.predicted(base.model));
+  s.noise_floor = s.white_noise_of(s.predicted(base.model));
   result.noise_floor = s.noise_floor;
 
   // 4-5. Greedy rounds over the candidates; 6. the set revised as a whole, and what the run

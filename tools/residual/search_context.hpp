@@ -49,6 +49,9 @@ struct Search {
   [[nodiscard]] double validation_rms(const model::DamperModel& m) const;
   // The model's force on the fitting series.
   [[nodiscard]] std::vector<double> predicted(const model::DamperModel& m) const;
+  // The white noise of the kept samples' residual against `predicted` (on the fitting series:
+  // from the sample-to-sample differences, which a model's smooth form error barely moves).
+  [[nodiscard]] double white_noise_of(const std::vector<double>& predicted) const;
   // Whether the model predicting `richer` has earned its claim over the one predicting `simpler`
   // (on the fitting series), among `comparisons`.
   [[nodiscard]] ClaimEvidence weigh(const std::vector<double>& simpler, const std::vector<double>& richer,

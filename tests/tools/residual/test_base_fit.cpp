@@ -6,12 +6,16 @@
 // study, tests/generator/random-damper-study.sh, checks the forms.)
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <sstream>
 #include <string>
 
+#include "model/jiles_atherton.hpp"
 #include "tests/tools/residual/residual_test_support.hpp"
+#include "tools/residual/base_identification.hpp"
 #include "tools/residual/candidate_effects.hpp"
 #include "tools/residual/residual_report.hpp"
+#include "tools/residual/residual_search.hpp"
 
 namespace {
 
@@ -127,6 +131,49 @@ TEST(BaseFit, CoordinatesStayInsideTheirPhysicalRanges) {
   EXPECT_LT(high.jiles_atherton.mean_field_gain(), 1.0);
   scales.current_varies = false;
   EXPECT_EQ(base_space(start, start, scales, Magnetics::kMaterial).parameters.size(), 3u);
+}
+
+// The swarms' J-A, capped at kExploringSubsteps a sample, against the model's own grid on the
+// hardest corner they explore: a narrow pinning (k 110 A/m) at a strong coil (10,000 turns/m),
+// the current jumping between 0 and 1 A at every sample as a telegraph run decimated to the
+// fitting series does. A cap of 64 leaves B 1.1 T RMS off here.
+TEST(BaseFit, TheSwarmsCappedSubStepsKeepBOnTheGridAtANarrowPinning) {
+  mrd::model::JilesAthertonParams material;
+  material.k = 110.0;
+  const mrd::model::MagneticCircuit coil{.turns = 600.0, .effective_length = 0.06};
+  mrd::model::JilesAthertonSettings exploring;
+  exploring.field_step_growth = kSearchFieldStepGrowth;
+  exploring.max_substeps = search::kExploringSubsteps;
+  mrd::model::JilesAthertonSettings grid;
+  grid.max_substeps = 1 << 20;
+  mrd::model::JilesAtherton capped(material, coil, exploring);
+  mrd::model::JilesAtherton reference(material, coil, grid);
+  double sum = 0.0;
+  constexpr int kJumps = 400;
+  for (int i = 0; i < kJumps; ++i) {
+    const double current = (i % 2 == 0) ? 1.0 : (i % 6 == 1 ? 0.0 : 0.3);
+    const double error = capped.apply_current(current) - reference.apply_current(current);
+    sum += error * error;
+  }
+  EXPECT_LT(std::sqrt(sum / kJumps), 0.01);
+}
+
+// The sign velocity's top: 15 % of the run's speed on a fast run; on a slow one 10 mm/s (a
+// random damper of the independent generator smooths over 4 mm/s on a run at 24 mm/s), but
+// never past half the speed, where the yield term would be a second viscous one.
+TEST(BaseFit, TheSignVelocitysTopFollowsTheRunOnlyWhereTheRunIsFast) {
+  const auto top = [](double speed) {
+    SeriesScales scales;
+    scales.speed = speed;
+    scales.current_varies = true;
+    const mrd::model::DamperModel start;
+    const ParameterSpace space = base_space(start, start, scales, Magnetics::kMaterial);
+    return space.build(space.bounds.upper).geometry.sign_velocity_scale;
+  };
+  EXPECT_NEAR(top(0.2), 0.03, 1e-9);
+  EXPECT_NEAR(top(0.024), 0.01, 1e-9);
+  EXPECT_NEAR(top(0.01), 0.005, 1e-9);
+  EXPECT_NEAR(top(2.0), 0.05, 1e-9);
 }
 
 // What --write-config refuses: a coordinate on (or past) its range's edge is named with its
