@@ -35,7 +35,7 @@ void run_control_law(benchmark::State& state, mrd::control::ControlMode mode, bo
     const mrd::hal::Sample demand{250e3 * kAmplitude * kOmega * std::cos(kOmega * t), now, ++i, mrd::hal::kSampleValid};
     benchmark::DoNotOptimize(demands.check(demand, now));
     law.observe({.displacement = kAmplitude * std::sin(kOmega * t),
-                 .timing = mrd::model::SampleTiming{true, kPeriod, 0.0},
+                 .timing = mrd::model::SampleTiming{.fresh = true, .interval = kPeriod, .age = 0.0},
                  .coil_current = coil});
     if (load_cell) {
       benchmark::DoNotOptimize(law.correct_force_scale(mrd::control::LoadCellStatus::kFresh, 0.9 * demand.value));

@@ -60,12 +60,21 @@ const ControlLaw::Observation& ControlLaw::observe(const model::Measurement& m) 
 ControlLaw::Command ControlLaw::command(double demand) {
   if (force_) {
     // The velocity over the coming period is taken as the observer's now (docs/FORCE-CONTROL.md).
-    const model::ForceCommand f = force_->step({demand, observation_.estimate.velocity}, observer_);
-    return {f.current, f.target_B, demand, f.yield_force, f.clipped, f.reached};
+    const model::ForceCommand f =
+        force_->step({.force = demand, .velocity = observation_.estimate.velocity}, observer_);
+    return {.current = f.current,
+            .target_B = f.target_B,
+            .demand = demand,
+            .yield_force = f.yield_force,
+            .clipped = f.clipped,
+            .reached = f.reached};
   }
   const double scheduled = observation_.scheduled_current;
-  if (compensate_) return {compensator_.command(scheduled, observer_.magnetics()), compensator_.target_B()};
-  return {uncompensated_.update(scheduled), compensator_.target().B(scheduled)};
+  if (compensate_) {
+    const double current = compensator_.command(scheduled, observer_.magnetics());  // sets target_B()
+    return {.current = current, .target_B = compensator_.target_B()};
+  }
+  return {.current = uncompensated_.update(scheduled), .target_B = compensator_.target().B(scheduled)};
 }
 
 }  // namespace mrd::control

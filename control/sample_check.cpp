@@ -57,7 +57,9 @@ bool SampleChecker::jumps(const hal::Sample& s) {
 
 model::SampleTiming SampleChecker::timing(SampleCheck check, hal::Timestamp now) const {
   using Seconds = std::chrono::duration<double>;
-  return {check == SampleCheck::kFresh, Seconds(held_interval_).count(), Seconds(now - held_at_).count()};
+  return {.fresh = check == SampleCheck::kFresh,
+          .interval = Seconds(held_interval_).count(),
+          .age = Seconds(now - held_at_).count()};
 }
 
 }  // namespace mrd::control

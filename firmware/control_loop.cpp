@@ -148,7 +148,7 @@ control::SupervisorDecision ControlLoop::supervise(const PeriodInputs& in) {
 // 5. The compensated command, only while the law drives the coil, and only a finite one: a
 // non-finite command is vetoed into `d`. Otherwise the law holds the fail-safe current.
 control::ControlLaw::Command ControlLoop::compensate(const PeriodInputs& in, control::SupervisorDecision& d) {
-  control::ControlLaw::Command command{kNotComputed, kNotComputed};
+  control::ControlLaw::Command command{.current = kNotComputed, .target_B = kNotComputed};
   if (d.in_control) {
     // The load cell corrects the model's yield force scale only while the law drives the coil,
     // and only against an estimate made on this period's fresh LVDT sample: on a held or

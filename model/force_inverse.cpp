@@ -42,7 +42,7 @@ ForceCommand ForceInverse::step(const ForceDemand& demand, const Observer& obser
 
   // The currents that can flow by the end of the period, from the commands the driver allows
   // now; the J-A search picks one, and the command is what makes it flow.
-  const CurrentRange commands{driver_.lowest_next(), driver_.highest_next()};
+  const CurrentRange commands{.lowest = driver_.lowest_next(), .highest = driver_.highest_next()};
   const EffectChain& chain = observer.effects();
   const CurrentRange flowing = invert_coil_lag_ ? chain.reachable_current(commands, sample_period_) : commands;
   const InductionSearch found = compensator_.current_for(out.target_B, core, flowing);

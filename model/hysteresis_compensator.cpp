@@ -37,20 +37,30 @@ InductionSearch HysteresisCompensator::current_for(double target_B, const JilesA
   const double now = core.circuit().current_from_field(core.H());
   const bool inside = now > interval.lowest && now < interval.highest;
   const double f_now = core.B() - target_B;
-  if (inside && std::fabs(f_now) <= limits_.tolerance) return {now, core.B(), true, 0};
-  Bracket b{interval.lowest, f_now, interval.highest, f_now};
+  if (inside && std::fabs(f_now) <= limits_.tolerance) return {.current = now, .B = core.B(), .reached = true};
+  Bracket b{.lo = interval.lowest, .f_lo = f_now, .hi = interval.highest, .f_hi = f_now};
   int evaluations = 0;
   if (!inside || f_now >= 0.0) {
     b.f_lo = B_after(b.lo, core) - target_B;
     ++evaluations;
-    if (b.f_lo >= 0.0) return {b.lo, b.f_lo + target_B, b.f_lo <= limits_.tolerance, evaluations};
+    if (b.f_lo >= 0.0) {
+      return {.current = b.lo,
+              .B = b.f_lo + target_B,
+              .reached = b.f_lo <= limits_.tolerance,
+              .evaluations = evaluations};
+    }
   } else {
     b.lo = now;
   }
   if (!inside || f_now < 0.0) {
     b.f_hi = B_after(b.hi, core) - target_B;
     ++evaluations;
-    if (b.f_hi <= 0.0) return {b.hi, b.f_hi + target_B, -b.f_hi <= limits_.tolerance, evaluations};
+    if (b.f_hi <= 0.0) {
+      return {.current = b.hi,
+              .B = b.f_hi + target_B,
+              .reached = -b.f_hi <= limits_.tolerance,
+              .evaluations = evaluations};
+    }
   } else {
     b.hi = now;
   }
@@ -61,8 +71,9 @@ InductionSearch HysteresisCompensator::bracketed(double target_B, const JilesAth
                                                  int evaluations) {
   // Illinois: regula falsi that halves the stale end's residual, so it never stalls. Both
   // ends' residuals get scaled, so the best trial is kept apart from them.
-  InductionSearch best{b.lo, b.f_lo, false, evaluations};
-  if (-b.f_lo > b.f_hi) best = {b.hi, b.f_hi, false, evaluations};
+  // Here `B` holds the best trial's residual, B - target, until the end.
+  InductionSearch best{.current = b.lo, .B = b.f_lo, .evaluations = evaluations};
+  if (-b.f_lo > b.f_hi) best = {.current = b.hi, .B = b.f_hi, .evaluations = evaluations};
   int stale_side = 0;
   for (iterations_ = 1; iterations_ <= limits_.max_iterations; ++iterations_) {
     const double current = (b.lo * b.f_hi - b.hi * b.f_lo) / (b.f_hi - b.f_lo);

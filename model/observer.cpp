@@ -28,16 +28,17 @@ ObserverEstimate Observer::step_at_induction(const Measurement& m, double B) {
 }
 
 PredictedMotion Observer::track(const Measurement& m) {
-  const SampleTiming timing = m.timing.value_or(SampleTiming{true, sample_period_, 0.0});
+  const SampleTiming timing = m.timing.value_or(SampleTiming{.fresh = true, .interval = sample_period_, .age = 0.0});
   // Without a velocity sensor the tracker gives the velocity; with one, it runs only for an
   // effect that needs the acceleration.
   if ((!m.velocity || effects_.needs_acceleration()) && timing.fresh) {
     velocity_filter_.update(m.displacement, timing.interval);
   }
-  if (m.velocity) return {m.displacement, *m.velocity};
+  if (m.velocity) return {.displacement = m.displacement, .velocity = *m.velocity};
   // Carried to this step by the sample's age, at most two periods, so that a silent sensor
   // cannot extrapolate far.
-  return {m.displacement, velocity_filter_.velocity_after(std::clamp(timing.age, 0.0, 2.0 * sample_period_))};
+  return {.displacement = m.displacement,
+          .velocity = velocity_filter_.velocity_after(std::clamp(timing.age, 0.0, 2.0 * sample_period_))};
 }
 
 ObserverEstimate Observer::base_force(double velocity, double B) {

@@ -3,7 +3,7 @@
 namespace mrd::sim {
 
 DamperPlant::DamperPlant(const model::DamperModel& truth, double lvdt_noise_rms, unsigned seed)
-    : DamperPlant(truth, PlantSettings{1e-3, lvdt_noise_rms, 0.0, seed}) {}
+    : DamperPlant(truth, PlantSettings{.sample_period = 1e-3, .lvdt_noise_rms = lvdt_noise_rms, .seed = seed}) {}
 
 PlantReading DamperPlant::step(const PlantInput& in) {
   const model::ObserverEstimate truth =

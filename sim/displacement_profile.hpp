@@ -15,7 +15,8 @@ struct SineProfile {
 };
 
 // The paper's sine tests one after the other: whole cycles at each frequency in turn, every
-// segment starting at x = 0 moving up, so motion and velocity are continuous at the joins.
+// segment starting at x = 0 moving up, so the motion is continuous at the joins and keeps its
+// direction (the speed steps with the frequency).
 class SineSequenceProfile {
  public:
   SineSequenceProfile(double amplitude, std::vector<double> frequencies, int cycles_each);

@@ -41,7 +41,8 @@ double CoilLag::command_for(double target_current, double dt, const CurrentRange
 
 CurrentRange CoilLag::reachable(double dt, const CurrentRange& driver) const {
   const double gain = gain_over(dt);
-  return {current_ + gain * (driver.lowest - current_), current_ + gain * (driver.highest - current_)};
+  return {.lowest = current_ + gain * (driver.lowest - current_),
+          .highest = current_ + gain * (driver.highest - current_)};
 }
 
 std::optional<std::string> CoilLagEffect::implausible(const Params& p, const RunScales& s) {

@@ -81,15 +81,14 @@ double EffectChain::fluid_force(const BinghamDamper& damper, double yield_stress
   for_each_enabled([&]<typename E>(const typename E::Element& e) {
     if constexpr (requires { E::viscosity_factor(e); }) viscosity_factor *= E::viscosity_factor(e);
   });
-  const double viscous_force = damper.viscous_force(velocity) * viscosity_factor;
   // The seal's friction slides with the fluid's yield: the effects shape both alike.
-  const double yield_force = damper.sliding_force(yield_stress);
-  const double sign_term = damper.sign_term(velocity);
-  double fluid = yield_force * sign_term + viscous_force;
+  const FluidForceParts parts{.yield_force = damper.sliding_force(yield_stress),
+                              .sign_term = damper.sign_term(velocity),
+                              .viscous_force = damper.viscous_force(velocity) * viscosity_factor,
+                              .velocity = velocity};
+  double fluid = parts.yield_force * parts.sign_term + parts.viscous_force;
   for_each_enabled([&]<typename E>(typename E::Element& e) {
-    if constexpr (requires { E::fluid_force(e, yield_force, sign_term, viscous_force, velocity); }) {
-      fluid = E::fluid_force(e, yield_force, sign_term, viscous_force, velocity);
-    }
+    if constexpr (requires { E::fluid_force(e, parts); }) fluid = E::fluid_force(e, parts);
   });
   return fluid;
 }

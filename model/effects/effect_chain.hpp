@@ -18,7 +18,7 @@ namespace mrd::model {
 //   2. coil_current(command): the current that flows, from the one commanded (coil_lag);
 //   -- J-A (Eq. 1-10) and Eq. 13 on that current --
 //   3. yield_factor(), viscosity_factor(): factors on tau_y and c0 (thermal_drift);
-//   4. fluid_force(F_y, sign, c0 v, v): the fluid force in place of Eq. 11-12's (preyield);
+//   4. fluid_force(FluidForceParts): the fluid force in place of Eq. 11-12's (preyield);
 //   5. force_factor(x): a factor on the fluid force (stroke_end_air);
 //   6. added_force(x) or state_force(x, v, a, I, B): a force added to the fluid's (gas_spring,
 //      learned_terms);

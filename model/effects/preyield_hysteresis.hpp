@@ -10,6 +10,15 @@
 
 namespace mrd::model {
 
+// Eq. 11-12's parts of the fluid force that hook 4 of the effect chain (effect_chain.hpp) may
+// reshape. Named, so that a swapped part does not compile.
+struct FluidForceParts {
+  double yield_force = 0.0;    // F_y + F_s, what the sign term carries [N]
+  double sign_term = 0.0;      // s(v / v_s) [-]
+  double viscous_force = 0.0;  // c0 v, after the effects' viscosity factor [N]
+  double velocity = 0.0;       // [m/s]
+};
+
 // Pre-yield force-velocity hysteresis: Bouc-Wen's evolutionary variable z (Bouc 1967, Wen 1976,
 // in the form Spencer et al. 1997 use for MR dampers),
 //   dz/dt = A v - beta |v| |z|^(n-1) z - gamma v |z|^n,
@@ -55,11 +64,10 @@ class PreyieldHysteresis {
 
   // Advances z over one period at `velocity` [m/s]; returns z [m].
   double step(double velocity);
-  // The fluid force [N] above, from the Bingham yield force F_y [N], its sign term
-  // tanh(v / v_s) and the viscous force c0 v [N].
-  [[nodiscard]] double fluid_force(double yield_force, double sign_term, double viscous_force) const {
-    return yield_force * (sign_term + fraction_ * (z_ * inv_z_max_ - sign_term)) + stiffness_ * z_ +
-           viscous_force;
+  // The fluid force [N] above, from Eq. 11-12's parts (the velocity is step()'s).
+  [[nodiscard]] double fluid_force(const FluidForceParts& f) const {
+    return f.yield_force * (f.sign_term + fraction_ * (z_ * inv_z_max_ - f.sign_term)) + stiffness_ * z_ +
+           f.viscous_force;
   }
   [[nodiscard]] double z() const { return z_; }
   [[nodiscard]] double z_max() const { return z_max_; }
@@ -91,10 +99,9 @@ struct PreyieldHysteresisEffect : EffectTraitsBase<PreyieldHysteresisParams> {
   static constexpr std::string_view kSeparatedBy =
       "small-amplitude motion that never reaches the stroke-end threshold (pre-yield acts at every reversal)";
   // Hook (effect_chain.hpp): the fluid force with z, in place of Eq. 11-12's.
-  static double fluid_force(Element& e, double yield_force, double sign_term, double viscous_force,
-                            double velocity) {
-    e.step(velocity);
-    return e.fluid_force(yield_force, sign_term, viscous_force);
+  static double fluid_force(Element& e, const FluidForceParts& parts) {
+    e.step(parts.velocity);
+    return e.fluid_force(parts);
   }
 
   template <typename Visitor>

@@ -63,8 +63,8 @@ struct PredictedMotion {
 
 [[nodiscard]] inline PredictedMotion predict_motion(const PredictedMotion& reading, double acceleration,
                                                     double delay) {
-  return {reading.displacement + delay * (reading.velocity + 0.5 * delay * acceleration),
-          reading.velocity + delay * acceleration};
+  return {.displacement = reading.displacement + delay * (reading.velocity + 0.5 * delay * acceleration),
+          .velocity = reading.velocity + delay * acceleration};
 }
 
 // The observer's side of the effect: the prediction above with the configured delay.

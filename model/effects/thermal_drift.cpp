@@ -8,9 +8,15 @@
 namespace mrd::model {
 
 namespace {
-double factor(TemperatureLaw law, double coefficient, double rise, double floor) {
-  const double f = law == TemperatureLaw::kLinear ? 1.0 - coefficient * rise : std::exp(-coefficient * rise);
-  return std::max(f, floor);
+// One property's law of the temperature rise, named so that its numbers cannot swap.
+struct DriftLaw {
+  TemperatureLaw law;
+  double coefficient;  // [1/degC]
+  double floor;        // the least factor [-]
+};
+double factor(const DriftLaw& d, double rise) {
+  const double f = d.law == TemperatureLaw::kLinear ? 1.0 - d.coefficient * rise : std::exp(-d.coefficient * rise);
+  return std::max(f, d.floor);
 }
 }  // namespace
 
@@ -60,8 +66,9 @@ void ThermalDrift::reset() {
 
 void ThermalDrift::update_factors() {
   const double rise = temperature() - p_.reference_temperature;
-  viscosity_factor_ = factor(p_.viscosity_law, p_.viscosity_coefficient, rise, p_.min_factor);
-  yield_factor_ = factor(p_.yield_law, p_.yield_coefficient, rise, p_.min_factor);
+  viscosity_factor_ =
+      factor({.law = p_.viscosity_law, .coefficient = p_.viscosity_coefficient, .floor = p_.min_factor}, rise);
+  yield_factor_ = factor({.law = p_.yield_law, .coefficient = p_.yield_coefficient, .floor = p_.min_factor}, rise);
 }
 
 void ThermalDriftEffect::apply(Params& p, std::span<const double> x, const RunScales& s) {

@@ -49,8 +49,10 @@ double motion_length(const Motion& motion) {
 
 Rig::Rig(const PlantConfig& config, Motion motion)
     : motion_(std::move(motion)),
-      plant_(config.truth(),
-             sim::PlantSettings{config.period(), config.lvdt_noise, config.force_noise, config.seed}),
+      plant_(config.truth(), sim::PlantSettings{.sample_period = config.period(),
+                                                .lvdt_noise_rms = config.lvdt_noise,
+                                                .force_noise_rms = config.force_noise,
+                                                .seed = config.seed}),
       faults_(config.faults) {}
 
 const RigSample& Rig::step(double t, double fault_t, double commanded) {

@@ -76,7 +76,7 @@ class SineRig {
  public:
   SineRig(const config::SimulationConfig& s, const model::DamperModel& truth, double period, hal::mock::MockHal& hal)
       : profile_{s.amplitude, s.frequency},
-        plant_(truth, sim::PlantSettings{period, s.lvdt_noise, 0.0, s.seed}),
+        plant_(truth, sim::PlantSettings{.sample_period = period, .lvdt_noise_rms = s.lvdt_noise, .seed = s.seed}),
         hal_(hal) {}
 
   void advance(hal::Timestamp now) {

@@ -54,7 +54,9 @@ TEST(RealTimeEffects, ObserverStepsWithEveryEffectDoNotAllocate) {
 }
 
 TEST(RealTimeEffects, PlantStepsWithEveryEffectDoNotAllocate) {
-  mrd::sim::DamperPlant plant(every_effect_on(), mrd::sim::PlantSettings{1e-3, 5e-6, 20.0, 3});
+  mrd::sim::DamperPlant plant(
+      every_effect_on(),
+      mrd::sim::PlantSettings{.sample_period = 1e-3, .lvdt_noise_rms = 5e-6, .force_noise_rms = 20.0, .seed = 3});
   double sink = 0.0;
   start_counting_allocations();
   for (int k = 0; k < kSteps; ++k) sink += plant.step({.displacement = x_at(k), .velocity = v_at(k), .coil_current = i_at(k)}).measured_force;

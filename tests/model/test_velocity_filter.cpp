@@ -65,18 +65,22 @@ TEST(VelocityFilter, IgnoresANonPositiveIntervalOnceItIsPrimed) {
 TEST(ObserverSampleTiming, CarriesTheVelocityByTheSampleAgeUpToTwoPeriods) {
   const double T = 1e-3, a = 2.0;
   mrd::model::Observer o(mrd::model::DamperModel{}, {T, 20.0});
-  EXPECT_EQ(o.step({.displacement = 0.0, .timing = mrd::model::SampleTiming{false, 0.0, 1e6}, .coil_current = 0.0}).velocity, 0.0);  // no sample yet: nothing to carry
+  // The step's velocity on a sample held from an earlier period, `age` old.
+  const auto held = [&o](double x, double age) {
+    return o.step({.displacement = x, .timing = mrd::model::SampleTiming{.fresh = false, .age = age}}).velocity;
+  };
+  EXPECT_EQ(held(0.0, 1e6), 0.0);  // no sample yet: nothing to carry
   double x = 0.0;
   for (int i = 0; i < 3000; ++i) {
     const double t = i * T;
     x = 0.5 * a * t * t;
-    o.step({.displacement = x, .timing = mrd::model::SampleTiming{true, T, 0.0}, .coil_current = 0.0});
+    o.step({.displacement = x, .timing = mrd::model::SampleTiming{.fresh = true, .interval = T, .age = 0.0}});
   }
   const double tracked = o.estimate().velocity;
   EXPECT_NEAR(tracked, a * 2999 * T, 1e-6);
-  EXPECT_NEAR(o.step({.displacement = x, .timing = mrd::model::SampleTiming{false, 0.0, 0.5 * T}, .coil_current = 0.0}).velocity, tracked + a * 0.5 * T, 1e-6);
-  EXPECT_NEAR(o.step({.displacement = x, .timing = mrd::model::SampleTiming{false, 0.0, 10.0 * T}, .coil_current = 0.0}).velocity, tracked + a * 2.0 * T, 1e-6);
-  EXPECT_NEAR(o.step({.displacement = x, .timing = mrd::model::SampleTiming{false, 0.0, -T}, .coil_current = 0.0}).velocity, tracked, 1e-6);  // stamped after the step
+  EXPECT_NEAR(held(x, 0.5 * T), tracked + a * 0.5 * T, 1e-6);
+  EXPECT_NEAR(held(x, 10.0 * T), tracked + a * 2.0 * T, 1e-6);
+  EXPECT_NEAR(held(x, -T), tracked, 1e-6);  // stamped after the step
 }
 
 TEST(VelocityFilter, TracksThePapersSineWithSmallErrorUnderLvdtNoise) {

@@ -57,7 +57,10 @@ std::vector<RunSample> run_plant(const RunOptions& o, const model::EffectSet& ef
   model::DamperModel truth = o.damper.model;
   truth.effects = effects;
   const double T = 1.0 / o.rate;
-  sim::DamperPlant plant(truth, sim::PlantSettings{T, o.lvdt_noise, o.force_noise, static_cast<unsigned>(o.seed)});
+  sim::DamperPlant plant(truth, sim::PlantSettings{.sample_period = T,
+                                                   .lvdt_noise_rms = o.lvdt_noise,
+                                                   .force_noise_rms = o.force_noise,
+                                                   .seed = static_cast<unsigned>(o.seed)});
   const Motion motion(o);
   model::CurrentSchedule schedule(o.damper.schedule);
   sim::RandomTelegraph telegraph(0.0, o.current, o.dwell, T, o.seed + 29);

@@ -95,11 +95,13 @@ TEST(PreyieldHysteresis, ForceLagsTheVelocityAfterAReversal) {
   p.enabled = true;
   PreyieldHysteresis h(p, 1e-3);
   const double yield_force = 1000.0;
+  const mrd::model::FluidForceParts at_20_mm_s{
+      .yield_force = yield_force, .sign_term = std::tanh(0.02 / 1e-3), .viscous_force = 0.0, .velocity = 0.02};
   for (int k = 0; k < 1000; ++k) h.step(-0.05);  // long travel down: z = -z_max
   h.step(0.02);                                   // reversed: 20 um up
-  const double just_reversed = h.fluid_force(yield_force, std::tanh(0.02 / 1e-3), 0.0);
+  const double just_reversed = h.fluid_force(at_20_mm_s);
   for (int k = 0; k < 1000; ++k) h.step(0.02);
-  const double steady = h.fluid_force(yield_force, std::tanh(0.02 / 1e-3), 0.0);
+  const double steady = h.fluid_force(at_20_mm_s);
   EXPECT_NEAR(steady, yield_force, 1.0);
   EXPECT_LT(just_reversed, 0.6 * steady);  // half of the yield force still points down
 }
