@@ -12,7 +12,7 @@ namespace mrd::record {
 namespace {
 
 constexpr std::uint32_t kInt32 = 5, kMatrix = 14, kCompressed = 15;
-constexpr std::uint32_t kCellClass = 1, kStructClass = 2, kObjectClass = 3;
+constexpr std::uint32_t kCellClass = 1, kStructClass = 2, kObjectClass = 3, kSparseClass = 5;
 constexpr std::size_t kHeader = 128, kMaxRank = 32, kMaxDepth = 16;
 
 class V5Checker {
@@ -98,8 +98,11 @@ class V5Checker {
     if (rank < 1 || rank > kMaxRank || dims_at + dims->size > body.size())
       return "a rank of " + std::to_string(rank) + " (1 to " + std::to_string(kMaxRank) + " fit)";
     std::size_t elements = 1;
+    std::string shape;
     for (std::size_t i = 0; i < rank; ++i) {
       const std::uint32_t d = u32(body, dims_at + 4 * i);
+      if (i > 0) shape.push_back('x');
+      shape.append(std::to_string(d));
       if (d != 0 && elements > body.size() / d) elements = body.size() + 1;  // only compared below
       else elements *= d;
     }
@@ -107,8 +110,13 @@ class V5Checker {
     const std::string_view rest = body.substr(std::min(at, body.size()));
     std::size_t holds = 0;
     if (const std::string why = check_elements(rest, depth + 1, &holds); !why.empty()) return why;
+    const bool holds_matrices = cls == kCellClass || cls == kStructClass || cls == kObjectClass;
+    // Any other array but a sparse one stores each element in at least one byte (MATLAB may store
+    // doubles as uint8), and libmatio allocates the full class size for every declared element.
+    if (!holds_matrices && cls != kSparseClass && elements > rest.size())
+      return "a " + shape + " array in " + std::to_string(rest.size()) + " bytes";
     // Each cell, and each field of each struct element, is a matrix element of its own.
-    if (cls == kCellClass || cls == kStructClass || cls == kObjectClass) {
+    if (holds_matrices) {
       const std::size_t per_element = cls == kCellClass ? 1 : fields_of(rest, cls == kObjectClass);
       if (per_element != 0 && elements > holds / per_element)
         return "a cell array or struct of " + std::to_string(elements) + " elements holds " + std::to_string(holds) +

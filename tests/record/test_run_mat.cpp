@@ -233,6 +233,16 @@ TEST(RunFormatsErrors, ATagLargerThanItsFileIsRefusedBeforeLibmatioAllocatesIt) 
   EXPECT_EQ(input_error_of([&] { (void)mrd::record::read_recorded_run(path); }),
             path + ": a damaged .mat file: element at byte 128: a rank of 1073741823 (1 to 32 fit)");
 
+  // Found by fuzz_run_mat in CI: dimensions 1 x 2^31-ish within a proper rank of 2 made libmatio
+  // allocate 16 GB for a variable of two doubles.
+  std::string wide = good;
+  wide.replace(dims_tag + 12, 4, std::string("\x00\x00\xf8\x7f", 4));
+  EXPECT_EQ(mrd::record::check_mat_v5_structure(wide, 1 << 20),
+            "element at byte 128: a 2x2146959360 array in 40 bytes");
+  wide[128 + 16] = '\x10';  // the class libmatio takes for a function handle
+  EXPECT_EQ(mrd::record::check_mat_v5_structure(wide, 1 << 20),
+            "element at byte 128: a 2x2146959360 array in 40 bytes");
+
   std::string cells = good;
   cells[128 + 16] = '\x01';  // the first variable's class: a cell array of 2 cells, holding none
   EXPECT_EQ(mrd::record::check_mat_v5_structure(cells, 1 << 20),
