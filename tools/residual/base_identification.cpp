@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "tools/residual/least_squares_refine.hpp"
 #include "tools/text_format.hpp"
 
 namespace mrd::tools::search {
@@ -54,13 +55,14 @@ FittedModel identify_base(Search& s, const model::DamperModel& origin, Parameter
   if (from_origin) starts.push_back(base_coordinates(origin, start, s.scales, Magnetics::kMaterial));
   if (also_from != nullptr) starts.push_back(*also_from);
   std::vector<FittedModel> refined(starts.size());
+  const auto dimension = static_cast<int>(space.bounds.dimension());
   s.pool.run(starts.size(), [&](std::size_t k, unsigned /*worker*/) {
-    refined[k] = refine_with_restarts(s, space, openings, starts[k]);
+    refined[k] = refine_least_squares(space, openings, starts[k], 20 + 30 * dimension);
+    s.evaluations += refined[k].evaluations;
   });
   FittedModel best = *std::ranges::min_element(refined, {}, &FittedModel::fitting_rms);
   if (openings.size() == s.fit_series.size()) return best;
-  const auto dimension = static_cast<int>(space.bounds.dimension());
-  const FittedModel whole = refine_space(space, s.fit_series, best.theta, 20 + 15 * dimension, 0.01);
+  const FittedModel whole = refine_least_squares(space, s.fit_series, best.theta, 20 + 15 * dimension, &s.pool);
   s.evaluations += whole.evaluations;
   return whole;
 }
@@ -70,7 +72,7 @@ FittedModel identify_base_twice_if_short(Search& s, const model::DamperModel& or
   FittedModel first = identify_base(s, origin, space, true, swarms);
   if (!(first.fitting_rms > kSecondStartRatio * s.white_noise_of(s.predicted(first.model)))) return first;
   ParameterSpace again;
-  FittedModel second = identify_base(s, origin, again, false, 2);
+  FittedModel second = identify_base(s, origin, again, false, kSecondStartSwarms);
   if (!(second.fitting_rms < first.fitting_rms)) return first;
   space = std::move(again);
   return second;
@@ -102,6 +104,25 @@ FittedModel refit_robustly(Search& s, ParameterSpace& space, FittedModel base, i
   set_loss(FitLoss::Kind::kHuber, sigma_of(base.model).sigma);
   refits = 1;
   return base;
+}
+
+FittedModel refit_on_every_sample(Search& s, const model::DamperModel& origin, const model::DamperModel& model) {
+  FitSeries every = s.fit_series;
+  for (SampleRole& role : every.role)
+    if (role == SampleRole::kValidation) role = SampleRole::kFitting;
+  ParameterSpace space = base_space(origin, s.options.start, s.scales, Magnetics::kMaterial);
+  space.linear = linear_effects_of(origin);
+  const Point from = base_coordinates(model, s.options.start, s.scales, Magnetics::kMaterial);
+  const auto dimension = static_cast<int>(space.bounds.dimension());
+  FittedModel refit = refine_least_squares(space, every, from, 20 + 15 * dimension, &s.pool);
+  s.evaluations += refit.evaluations;
+  std::vector<double> force;
+  predict_force(model, every, force);
+  if (!(refit.fitting_rms < residual_rms(every, force).fitting)) {
+    refit.model = model;
+    refit.fitting_rms = residual_rms(every, force).fitting;
+  }
+  return refit;
 }
 
 std::vector<std::string> describe_base(const ParameterSpace& space, const FittedModel& fit,

@@ -6,11 +6,131 @@
 #include <numeric>
 #include <string_view>
 
+#include "tools/residual/base_identification.hpp"
 #include "tools/residual/candidate_effects.hpp"
 #include "tools/residual/joint_refinement.hpp"
 #include "tools/text_format.hpp"
 
 namespace mrd::tools::search {
+
+namespace {
+
+// One candidate's fit from one seed: its swarm (on the round's B unless it changes B), its
+// reversal thresholds scanned, then the joint refinement; with its force and validation error.
+struct CandidateFit {
+  FittedModel fit;
+  std::vector<double> force;  // on the fitting series
+  double validation = 0.0;    // [N RMS]
+};
+
+// The candidates of one round on one round model: each fitted on its own (thread-safe: every
+// call works on its own copies), the results written into the round.
+class RoundFitter {
+ public:
+  RoundFitter(Search& s, const model::DamperModel& current, const Effects& candidates, Round& round)
+      : s_(s),
+        current_(current),
+        candidates_(candidates),
+        round_(round),
+        round_seed_(s.seed),
+        induction_(std::make_shared<const InductionTrace>(current, s.fit_series)) {}
+
+  // The round's model refined with no effect added: what each effect is weighed against.
+  void fit_null() {
+    std::int64_t spent = 0;
+    const FittedModel refined = refine({}, current_, Point(0), induction_, spent);
+    s_.evaluations += spent;
+    std::vector<double> force;
+    predict_force(refined.model, s_.fit_series, force);
+    round_.null_validation = residual_rms(s_.fit_series, force).validation;
+    round_.null_predicted = std::move(force);
+  }
+
+  [[nodiscard]] CandidateFit fit(std::size_t k, bool second) const {
+    const model::EffectInfo& effect = *candidates_[k];
+    const std::uint64_t seed = second ? (round_seed_ + k) ^ kSecondStartSeedMix : round_seed_ + k;
+    ParameterSpace space = effect_space(effect, current_, s_.scales);
+    // Those that change B explore on the runs' openings; the others need the whole history (a
+    // slow drift does) and cost little on the round's B.
+    if (!effect.changes_induction) space.induction = induction_;
+    CandidateFit out;
+    out.fit = fit_space(space, effect.changes_induction ? s_.swarm_series : s_.fit_series, nullptr, seed,
+                        s_.options.evaluations_per_parameter);
+    std::int64_t spent = out.fit.evaluations;
+    if (has_reversal_threshold(effect))
+      out.fit = scan_reversal_thresholds(effect, space, s_.fit_series, s_.scales, out.fit.theta, spent);
+    out.fit = refine({&effect}, current_, out.fit.theta, induction_, spent);
+    if (has_reversal_threshold(effect)) out.fit = rescan_thresholds(effect, std::move(out.fit), spent);
+    s_.evaluations += spent;
+    predict_force(out.fit.model, s_.fit_series, out.force);
+    out.validation = residual_rms(s_.fit_series, out.force).validation;
+    return out;
+  }
+
+  void record(std::size_t k, CandidateFit&& c, int round_number) const {
+    const model::EffectInfo& effect = *candidates_[k];
+    CandidateTrial& trial = round_.trials[k];
+    trial = CandidateTrial{};
+    trial.effect = std::string(effect.name);
+    trial.round = round_number;
+    trial.validation_rms = c.validation;
+    round_.predicted[k] = std::move(c.force);
+    std::vector<double> force;
+    predict_force(c.fit.model, s_.full, force);
+    const ResidualRms on_full = residual_rms(s_.full, force);
+    trial.rms_after = on_full.all;
+    trial.max_after = on_full.max;
+    trial.parameters = effect.report(c.fit.model.effects);
+    if (const auto why = effect.implausible(c.fit.model.effects, s_.scales)) {
+      trial.verdict = TrialVerdict::kNotPhysical;
+      trial.explanation = "not physical: " + *why;
+    }
+    round_.fits[k] = std::move(c.fit);
+  }
+
+ private:
+  // (A candidate that changes B is refined with the gain jointly and more evaluations; on a
+  // model without such an effect it is judged against this lighter null refinement.)
+  FittedModel refine(const Effects& effects, const model::DamperModel& origin, const Point& from,
+                     std::shared_ptr<const InductionTrace> induction, std::int64_t& spent) const {
+    static constexpr RefinePass kFirst{15, 0.02, 12}, kSecond{8, 0.02};
+    return refine_jointly(s_, origin, effects, from, {kFirst, kSecond}, spent, std::move(induction));
+  }
+
+  // The thresholds scanned again on the refined model, and refined from there where that pays:
+  // the first scan read the reversals with the swarm's other parameters, and the refinement
+  // cannot move a threshold across a reversal (the error is flat between them).
+  FittedModel rescan_thresholds(const model::EffectInfo& effect, FittedModel refined, std::int64_t& spent) const {
+    ParameterSpace around = effect_space(effect, refined.model, s_.scales);
+    if (!effect.changes_induction)
+      around.induction = std::make_shared<const InductionTrace>(refined.model, s_.fit_series);
+    const FittedModel scanned = scan_reversal_thresholds(effect, around, s_.fit_series, s_.scales,
+                                                         effect_coordinates(effect, refined.model, s_.scales), spent);
+    if (!(scanned.fitting_rms < refined.fitting_rms)) return refined;
+    FittedModel again = refine({&effect}, refined.model, scanned.theta, around.induction, spent);
+    return again.fitting_rms < refined.fitting_rms ? again : refined;
+  }
+
+  Search& s_;
+  const model::DamperModel& current_;
+  const Effects& candidates_;
+  Round& round_;
+  std::uint64_t round_seed_;
+  std::shared_ptr<const InductionTrace> induction_;  // the round model's B
+};
+
+// The physical candidate of least validation error, or candidates.size().
+std::size_t round_leader(const Round& round) {
+  std::size_t leader = round.trials.size();
+  for (std::size_t k = 0; k < round.trials.size(); ++k) {
+    if (round.trials[k].verdict != TrialVerdict::kUndecided) continue;
+    if (leader == round.trials.size() || round.trials[k].validation_rms < round.trials[leader].validation_rms)
+      leader = k;
+  }
+  return leader;
+}
+
+}  // namespace
 
 Round try_candidates(Search& s, const model::DamperModel& current, double current_validation,
                      const Effects& candidates, int round_number) {
@@ -21,22 +141,15 @@ Round try_candidates(Search& s, const model::DamperModel& current, double curren
   round.null_validation = current_validation;
   round.current_predicted = s.predicted(current);
   round.null_predicted = round.current_predicted;
-  const std::uint64_t round_seed = s.seed;
+  RoundFitter fitter(s, current, candidates, round);
   s.seed += candidates.size();
-  // The round model's B: every candidate that leaves B alone shares it during its swarm.
-  const auto round_induction = std::make_shared<const InductionTrace>(current, s.fit_series);
-  // (A candidate that changes B is refined with the gain jointly and more evaluations; on a
-  // model without such an effect it is judged against this lighter null refinement.)
-  const RefinePass kCandidatePasses[] = {{15, 0.02, 12}, {8, 0.02}};
-  const auto refine_candidate = [&](const Effects& effects, const Point& from, std::int64_t& spent) {
-    return refine_jointly(s, current, effects, from, {kCandidatePasses[0], kCandidatePasses[1]}, spent,
-                          round_induction);
-  };
   std::vector<std::size_t> order(candidates.size() + 1);
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::ranges::stable_partition(
       order, [&](std::size_t k) { return k < candidates.size() && candidates[k]->changes_induction; });
   std::atomic<std::int64_t> finished{0};
+  std::atomic<int> second_starts{0};
+  std::vector<char> restarted(candidates.size(), 0);
   const auto report = [&](std::string_view candidate) {
     if (s.options.progress == nullptr) return;
     s.options.progress->report({.stage = "round", .round = round_number, .candidate = candidate,
@@ -45,49 +158,34 @@ Round try_candidates(Search& s, const model::DamperModel& current, double curren
   };
   s.pool.run(order.size(), [&](std::size_t slot, unsigned /*worker*/) {
     const std::size_t k = order[slot];
-    std::vector<double> force;
     if (k == candidates.size()) {
-      std::int64_t spent = 0;
-      const FittedModel refined = refine_candidate({}, Point(0), spent);
-      s.evaluations += spent;
-      predict_force(refined.model, s.fit_series, force);
-      round.null_validation = residual_rms(s.fit_series, force).validation;
-      round.null_predicted = force;
+      fitter.fit_null();
       report("no effect");
       return;
     }
     const model::EffectInfo& effect = *candidates[k];
-    ParameterSpace space = effect_space(effect, current, s.scales);
-    // Those that change B explore on the runs' openings; the others need the whole history (a slow
-    // drift does) and cost little on the round's B.
-    if (!effect.changes_induction) space.induction = round_induction;
-    const FittedModel alone = fit_space(space, effect.changes_induction ? s.swarm_series : s.fit_series, nullptr,
-                                        round_seed + k, s.options.evaluations_per_parameter);
-    std::int64_t spent = alone.evaluations;
-    FittedModel fit = alone;
-    if (has_reversal_threshold(effect)) {
-      fit = scan_reversal_thresholds(effect, space, s.fit_series, s.scales, alone.theta, spent);
+    CandidateFit c = fitter.fit(k, false);
+    // The candidate holds the round's model (its effect at nothing), so ending worse than it is
+    // the swarm's landing, not the effect's verdict: one more swarm of another seed. Not for a
+    // fit already outside physics: its effect wants to vanish.
+    if (c.validation > kCandidateRestartRatio * current_validation && !effect.implausible(c.fit.model.effects, s.scales)) {
+      ++second_starts;
+      restarted[k] = 1;
+      if (CandidateFit again = fitter.fit(k, true); again.validation < c.validation) c = std::move(again);
     }
-    fit = refine_candidate({&effect}, fit.theta, spent);
-    CandidateTrial& trial = round.trials[k];
-    trial.effect = std::string(effect.name);
-    trial.round = round_number;
-    predict_force(fit.model, s.fit_series, force);
-    trial.validation_rms = residual_rms(s.fit_series, force).validation;
-    round.predicted[k] = force;
-    s.evaluations += spent;
-    predict_force(fit.model, s.full, force);
-    const ResidualRms on_full = residual_rms(s.full, force);
-    trial.rms_after = on_full.all;
-    trial.max_after = on_full.max;
-    trial.parameters = effect.report(fit.model.effects);
-    if (const auto why = effect.implausible(fit.model.effects, s.scales)) {
-      trial.verdict = TrialVerdict::kNotPhysical;
-      trial.explanation = "not physical: " + *why;
-    }
-    round.fits[k] = std::move(fit);
+    fitter.record(k, std::move(c), round_number);
     report(effect.name);
   });
+  // The round's leader, where it leaves the validation error well above the noise: a second
+  // swarm too, since the next rounds build on what it explains.
+  const std::size_t leader = round_leader(round);
+  if (leader < candidates.size() && restarted[leader] == 0 &&
+      round.trials[leader].validation_rms > kSecondStartRatio * s.noise_floor) {
+    ++second_starts;
+    if (CandidateFit again = fitter.fit(leader, true); again.validation < round.trials[leader].validation_rms)
+      fitter.record(leader, std::move(again), round_number);
+  }
+  round.second_starts = second_starts.load();
   return round;
 }
 
@@ -95,7 +193,7 @@ std::size_t judge_round(const Search& s, Round& round, double current_validation
   const bool null_better = round.null_validation < current_validation;
   const double baseline = null_better ? round.null_validation : current_validation;
   const std::vector<double>& baseline_force = null_better ? round.null_predicted : round.current_predicted;
-  const int comparisons = static_cast<int>(round.trials.size());
+  const int comparisons = static_cast<int>(round.trials.size()) + round.second_starts;
   for (std::size_t k = 0; k < round.trials.size(); ++k) {
     CandidateTrial& trial = round.trials[k];
     trial.validation_before = baseline;

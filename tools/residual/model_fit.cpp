@@ -364,8 +364,10 @@ class SpaceObjective final : public BatchObjective {
   std::vector<std::vector<double>> buffers_;
 };
 
-FittedModel finish(const ParameterSpace& space, const FitSeries& series, const Point& theta,
-                   std::int64_t evaluations) {
+}  // namespace
+
+FittedModel fitted_at(const ParameterSpace& space, const FitSeries& series, const Point& theta,
+                      std::int64_t evaluations) {
   FittedModel out;
   out.theta = theta;
   out.evaluations = evaluations;
@@ -379,11 +381,24 @@ FittedModel finish(const ParameterSpace& space, const FitSeries& series, const P
   return out;
 }
 
-}  // namespace
 
 double space_fitness(const ParameterSpace& space, const FitSeries& series, const Point& p,
                      std::vector<double>& buffer) {
   return fitness_at(space, series, p, buffer);
+}
+
+bool space_residuals(const ParameterSpace& space, const FitSeries& series, const Point& p, std::vector<double>& buffer,
+                     std::vector<double>& residuals) {
+  const model::DamperModel model = space.build(p);
+  if (!model::validate(model).ok()) return false;
+  predict_force(model, series, buffer, space.induction.get());
+  const TrialFit trial = fit_trial(series, buffer, space.linear, model);
+  if (!std::isfinite(trial.fitness)) return false;
+  residuals.clear();
+  for_each_linear_residual(series, buffer, trial.terms, [&](std::size_t, double r) {
+    residuals.push_back(std::copysign(std::sqrt(series.loss.rho(r)), r));
+  });
+  return true;
 }
 
 FittedModel best_of(const ParameterSpace& space, const FitSeries& series, const std::vector<Point>& points) {
@@ -397,7 +412,7 @@ FittedModel best_of(const ParameterSpace& space, const FitSeries& series, const 
       best = i;
     }
   }
-  return finish(space, series, points.at(best), static_cast<std::int64_t>(points.size()) + 1);
+  return fitted_at(space, series, points.at(best), static_cast<std::int64_t>(points.size()) + 1);
 }
 
 ParameterSpace combine(const ParameterSpace& first, const ParameterSpace& second) {
@@ -424,19 +439,19 @@ ParameterSpace combine(const ParameterSpace& first, const ParameterSpace& second
 FittedModel fit_space(const ParameterSpace& space, const FitSeries& series, WorkerPool* pool,
                       std::uint64_t seed, int evaluations_per_parameter) {
   const auto dimension = space.bounds.dimension();
-  if (dimension == 0) return finish(space, series, Point(0), 1);
+  if (dimension == 0) return fitted_at(space, series, Point(0), 1);
   SpaceObjective objective(space, series, pool);
   Budget budget;
   budget.population = static_cast<int>(std::clamp<Eigen::Index>(4 + 4 * dimension, 8, 16));
   budget.evaluations = evaluations_per_parameter * dimension;
   const OptimisationResult best = run_improved_pso(objective, space.bounds, budget, ImprovedPsoSettings{}, seed);
-  return finish(space, series, best.best, best.evaluations + 1);
+  return fitted_at(space, series, best.best, best.evaluations + 1);
 }
 
 FittedModel refine_space(const ParameterSpace& space, const FitSeries& series, const Point& start,
                          int max_evaluations, double step) {
   const auto n = space.bounds.dimension();
-  if (n == 0) return finish(space, series, Point(0), 1);
+  if (n == 0) return fitted_at(space, series, Point(0), 1);
   std::vector<double> buffer;
   std::int64_t evaluations = 0;
   const auto f = [&](const Point& p) {
@@ -494,7 +509,7 @@ FittedModel refine_space(const ParameterSpace& space, const FitSeries& series, c
     }
   }
   const auto best = static_cast<std::size_t>(std::min_element(fx.begin(), fx.end()) - fx.begin());
-  return finish(space, series, x[best], evaluations + 1);
+  return fitted_at(space, series, x[best], evaluations + 1);
 }
 
 }  // namespace mrd::tools

@@ -117,6 +117,12 @@ ParameterSpace combine(const ParameterSpace& first, const ParameterSpace& second
 double space_fitness(const ParameterSpace& space, const FitSeries& series, const Point& p,
                      std::vector<double>& buffer);
 
+// The same trial's residual over the fitting samples, sign(r) sqrt(rho(r)) each (r under least
+// squares), so that their mean square is the fitness squared; false for a model that fails
+// validation or a non-finite fit.
+bool space_residuals(const ParameterSpace& space, const FitSeries& series, const Point& p, std::vector<double>& buffer,
+                     std::vector<double>& residuals);
+
 struct FittedModel {
   Point theta;                // the best search coordinates
   LinearTerms linear;
@@ -124,6 +130,10 @@ struct FittedModel {
   double fitting_rms = 0.0;   // of the linear fit at theta [N]
   std::int64_t evaluations = 0;
 };
+
+// The fit at theta: one observer pass, the linear terms solved, the model they describe.
+FittedModel fitted_at(const ParameterSpace& space, const FitSeries& series, const Point& theta,
+                      std::int64_t evaluations);
 
 // The improved PSO (tools/optimisation/particle_swarm.hpp) over the space's coordinates, the
 // linear terms solved at each point; `evaluations` per coordinate, one observer pass each, spread

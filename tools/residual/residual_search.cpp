@@ -119,8 +119,11 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   clock.done("base fit");
   const FittedModel base = search::refit_robustly(s, base_fit_space, identified, result.robust_refits);
   if (result.robust_refits > 0) clock.done("robust base fit");
-  result.base = reported(base.model);
-  result.base_parameters = search::describe_base(base_fit_space, base, options.start, s.scales);
+  // 3c. What is reported of it: refit on every kept sample (the search goes on with the base of
+  // the fitting blocks, which the held-out blocks judge).
+  const FittedModel base_on_every_sample = search::refit_on_every_sample(s, options.start, base.model);
+  result.base = reported(base_on_every_sample.model);
+  result.base_parameters = search::describe_base(base_fit_space, base_on_every_sample, options.start, s.scales);
   predict_force(result.base, full, result.predicted_before);
   result.before = residual_rms(full, result.predicted_before);
   result.structure_before = structure_of(full, result.predicted_before);
@@ -142,8 +145,10 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   search::mark_final_set(result);
   search::name_unplaced_thresholds(s, set, result);
   clock.done("effects against terms");
-  // 7. Discovery on what the named effects left.
-  model::DamperModel current = reported(set.model);
+  // 6b. The named model refit on every kept sample (the base's refit when none was named);
+  // 7. discovery on what it leaves.
+  model::DamperModel current =
+      set.effects.empty() ? result.base : reported(search::refit_on_every_sample(s, set.model, set.model).model);
   search::discover(s, current, result);
   clock.done("discovery");
   result.final_model = current;
