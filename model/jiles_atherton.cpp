@@ -19,7 +19,13 @@ JilesAtherton::JilesAtherton(const JilesAthertonParams& params, const MagneticCi
       one_minus_c_(1.0 - params.c),
       alpha_c_(params.alpha * params.c),
       k_floor_(params.k * settings.denominator_floor),
-      max_field_step_(settings.max_field_step_fraction * std::min(params.a, params.k)) {}
+      max_field_step_(settings.max_field_step_fraction * std::min(anhysteretic_field_scale(params), params.k)) {}
+
+double JilesAtherton::anhysteretic_field_scale(const JilesAthertonParams& p) {
+  // The mean field steepens Man(H) by 1 / (1 - alpha Ms/3a) at its steepest (He = 0), so the curve
+  // bends over a (1 - alpha Ms/3a) of H. Past the fold it is bounded at a twentieth of a.
+  return p.a * std::max(1.0 - p.mean_field_gain(), kFoldedFieldScale);
+}
 
 double JilesAtherton::B() const { return kMu0 * (state_.H + state_.M); }  // Eq. 8
 

@@ -23,14 +23,16 @@ enum class LangevinEvaluation {
 };
 
 struct JilesAthertonSettings {
-  // Sub-steps are at most this fraction of min(a, k) in H, so a current step of any size
-  // integrates on the same grid as a slow ramp.
+  // Sub-steps are at most this fraction of min(a (1 - alpha Ms/3a), k) in H, so a current step
+  // of any size integrates on the same grid as a slow ramp, and a strong mean field (a steeper
+  // anhysteretic curve) on a finer one.
   double max_field_step_fraction = 0.25;
   // Real-time bound on work per call. A jump needing more sub-steps uses larger ones.
   int max_substeps = 4096;
   // 0: the uniform grid above. g > 0: a sub-step may also be g |He| long, so a jump far into
-  // saturation, where Man bends on the scale of He itself, takes a few long steps. For the
-  // fits' searches, which repeat a run thousands of times; the observer keeps 0.
+  // saturation, where Man bends on the scale of He itself (the mean field no longer steepens
+  // it), takes a few long steps. For the fits' searches, which repeat a run thousands of
+  // times; the observer keeps 0.
   double field_step_growth = 0.0;
   // Denominator guard, as a fraction of k (Eq. 10) or of 1 (the reversible coupling).
   double denominator_floor = 1e-2;
@@ -88,7 +90,13 @@ class JilesAtherton {
   [[nodiscard]] const MagneticCircuit& circuit() const { return circuit_; }
   [[nodiscard]] const JilesAthertonSettings& settings() const { return settings_; }
 
+  // The span of H [A/m] over which Man(H) bends: a, shortened by the mean field's gain. The
+  // sub-step grid is max_field_step_fraction of the smaller of it and k.
+  [[nodiscard]] static double anhysteretic_field_scale(const JilesAthertonParams& p);
+
  private:
+  static constexpr double kFoldedFieldScale = 0.05;  // of a, once alpha Ms/3a nears or passes 1
+
   // One stage of Eq. 10 at x = He/a (Eq. 4) and M_irr. The slopes are dM/dH = dM_num * inv and
   // chi_irr = chi_num * inv. They stay apart so that the integrator can scale the numerators
   // while the division runs: between the division and the next stage's x is one multiply-add.
