@@ -21,7 +21,7 @@ if(NOT names)
 endif()
 
 set(sources "")
-foreach(layer common model hal control runtime record config firmware sim tools)
+foreach(layer common model hal control runtime telemetry record config firmware sim tools)
   file(GLOB_RECURSE found "${SOURCE_DIR}/${layer}/*.hpp" "${SOURCE_DIR}/${layer}/*.cpp" "${SOURCE_DIR}/${layer}/*.in")
   list(APPEND sources ${found})
 endforeach()

@@ -8,7 +8,7 @@
 #include "control/control_law.hpp"
 #include "runtime/rt_setup.hpp"
 #include "control/supervisor.hpp"
-#include "runtime/telemetry_config.hpp"
+#include "telemetry/telemetry_config.hpp"
 #include "hal/can/socketcan_config.hpp"
 #include "hal/gpio/gpio_config.hpp"
 #include "hal/modbus/modbus_config.hpp"
@@ -60,7 +60,7 @@ struct ControllerConfig {
   control::ControlLawConfig law;
   control::SupervisorConfig safety;
   runtime::RealtimeConfig realtime;
-  runtime::TelemetryConfig telemetry;
+  telemetry::TelemetryConfig telemetry;
 
   [[nodiscard]] std::chrono::nanoseconds period() const {
     return std::chrono::nanoseconds{static_cast<std::int64_t>(1e9 / rate + 0.5)};

@@ -7,7 +7,7 @@ namespace mrd::firmware {
 ConfigReload::Outcome ConfigReload::check() const {
   constexpr const char* kStays = "the running config stays";
   if (path_.empty()) {
-    return {runtime::Priority::kNotice,
+    return {telemetry::Priority::kNotice,
             std::string("SIGHUP: the embedded config runs (no --config): nothing to re-read, ") + kStays};
   }
   std::string text;
@@ -15,13 +15,13 @@ ConfigReload::Outcome ConfigReload::check() const {
   if (!loaded.ok()) {
     std::string report = loaded.report();
     while (report.ends_with('\n')) report.pop_back();
-    return {runtime::Priority::kErr, "SIGHUP: " + path_ + " is not valid (" + std::to_string(loaded.errors.size()) +
+    return {telemetry::Priority::kErr, "SIGHUP: " + path_ + " is not valid (" + std::to_string(loaded.errors.size()) +
                                          " error(s)), " + kStays + ":\n" + report};
   }
   if (text == running_text_) {
-    return {runtime::Priority::kNotice, "SIGHUP: " + path_ + " is valid and unchanged, " + kStays};
+    return {telemetry::Priority::kNotice, "SIGHUP: " + path_ + " is valid and unchanged, " + kStays};
   }
-  return {runtime::Priority::kWarning,
+  return {telemetry::Priority::kWarning,
           "SIGHUP: " + path_ + " is valid and differs from the running config; it takes effect at the next start "
           "(systemctl restart mrd-controller: SAFE, then a fresh start), " + kStays};
 }

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "runtime/journal.hpp"
+#include "telemetry/journal.hpp"
 
 namespace mrd::firmware {
 
@@ -17,7 +17,7 @@ class ConfigReload {
       : path_(std::move(path)), running_text_(std::move(running_text)) {}
 
   struct Outcome {
-    runtime::Priority priority;
+    telemetry::Priority priority;
     std::string text;  // the journal's line(s)
   };
   // Reads and validates the file now (main thread; allocates, reads a file).

@@ -25,7 +25,7 @@ std::uint32_t load_cell_frozen(const control::ForceScaleCorrection* correction) 
 }  // namespace
 
 ControlLoop::ControlLoop(const control::ControlLawConfig& law, const control::SupervisorConfig& safety,
-                         HalDevices devices, runtime::TelemetryQueue* telemetry, int telemetry_decimation)
+                         HalDevices devices, telemetry::TelemetryQueue* telemetry, int telemetry_decimation)
     : law_(law),
       supervisor_(safety),
       checker_({.min = safety.displacement_min,
@@ -82,7 +82,7 @@ control::LoadCellStatus ControlLoop::read_load_cell(double& newtons) {
   return control::LoadCellStatus::kFresh;
 }
 
-const runtime::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
+const telemetry::TelemetryRecord& ControlLoop::step(hal::Timestamp now) {
   const std::uint32_t skipped = skipped_periods(now);
   overruns_ += skipped;
   last_release_ = now;
@@ -177,7 +177,7 @@ void ControlLoop::publish_telemetry(const PeriodInputs& in, const control::Contr
                                     double setpoint) {
   const control::ForceScaleCorrection* correction = law_.force_scale_correction();
   // By name: a positional list of twelve doubles would compile with two of them swapped.
-  record_ = runtime::TelemetryRecord{
+  record_ = telemetry::TelemetryRecord{
       .cycle = cycles_,
       .time = in.now,
       .displacement = checker_.held_value(),

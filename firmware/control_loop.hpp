@@ -10,8 +10,8 @@
 #include "firmware/hal_devices.hpp"
 #include "control/sample_check.hpp"
 #include "control/supervisor.hpp"
-#include "runtime/telemetry_queue.hpp"
-#include "runtime/telemetry_record.hpp"
+#include "telemetry/telemetry_queue.hpp"
+#include "telemetry/telemetry_record.hpp"
 #include "hal/clock.hpp"
 #include "hal/status.hpp"
 
@@ -33,9 +33,9 @@ class ControlLoop {
   // Force mode needs `devices.demand`, and its load-cell correction `devices.load_cell`
   // (std::invalid_argument without them).
   ControlLoop(const control::ControlLawConfig& law, const control::SupervisorConfig& safety, HalDevices devices,
-              runtime::TelemetryQueue* telemetry = nullptr, int telemetry_decimation = 1);
+              telemetry::TelemetryQueue* telemetry = nullptr, int telemetry_decimation = 1);
 
-  const runtime::TelemetryRecord& step(hal::Timestamp now);
+  const telemetry::TelemetryRecord& step(hal::Timestamp now);
   // The next cycle goes to SAFE (fail-safe current, enable as configured) and stays there.
   void request_shutdown() { supervisor_.request_shutdown(); }
   // An operator's clear of a latched SAFE, taken at the next cycle; safe from any thread or a
@@ -45,7 +45,7 @@ class ControlLoop {
   [[nodiscard]] const control::Supervisor& supervisor() const { return supervisor_; }
   [[nodiscard]] const control::ControlLaw& law() const { return law_; }
   [[nodiscard]] control::SupervisorState state() const { return supervisor_.state(); }
-  [[nodiscard]] const runtime::TelemetryRecord& last() const { return record_; }
+  [[nodiscard]] const telemetry::TelemetryRecord& last() const { return record_; }
   [[nodiscard]] std::uint64_t cycles() const { return cycles_; }
   [[nodiscard]] std::uint64_t overruns() const { return overruns_; }
   [[nodiscard]] std::uint64_t failed_setpoint_writes() const { return failed_setpoint_writes_; }
@@ -93,7 +93,7 @@ class ControlLoop {
   std::optional<std::uint32_t> load_cell_sequence_;  // the last load-cell sample's
   HalDevices hal_;
   BusWatch bus_;
-  runtime::TelemetryQueue* telemetry_;
+  telemetry::TelemetryQueue* telemetry_;
   std::uint64_t decimation_;
   hal::Timestamp period_;
   double fail_safe_current_;
@@ -101,7 +101,7 @@ class ControlLoop {
   hal::Timestamp readback_timeout_;  // 0: no readback expected
   bool require_readback_;
 
-  runtime::TelemetryRecord record_;
+  telemetry::TelemetryRecord record_;
   std::uint64_t cycles_ = 0;
   std::uint64_t overruns_ = 0;
   std::uint64_t failed_setpoint_writes_ = 0;

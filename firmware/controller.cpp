@@ -11,26 +11,26 @@
 #include "firmware/control_loop.hpp"
 #include "firmware/hal_set.hpp"
 #include "firmware/mock_drive.hpp"
-#include "runtime/csv_telemetry_writer.hpp"
-#include "runtime/journal.hpp"
+#include "telemetry/csv_telemetry_writer.hpp"
+#include "telemetry/journal.hpp"
 #include "runtime/loop_report.hpp"
 #include "runtime/rt_main.hpp"
-#include "runtime/service_notifier.hpp"
-#include "runtime/telemetry_alarm.hpp"
-#include "runtime/supervisor_feed.hpp"
+#include "telemetry/service_notifier.hpp"
+#include "telemetry/telemetry_alarm.hpp"
+#include "telemetry/supervisor_feed.hpp"
 
 namespace mrd::firmware {
 
 namespace {
 
 // What telemetry lost so far (nothing without telemetry).
-runtime::TelemetryLosses telemetry_losses(const runtime::TelemetryQueue* queue, const runtime::CsvTelemetryWriter* writer) {
+telemetry::TelemetryLosses telemetry_losses(const telemetry::TelemetryQueue* queue, const telemetry::CsvTelemetryWriter* writer) {
   if (queue == nullptr || writer == nullptr) return {};
   return {.dropped = queue->dropped(), .lost = writer->lost(), .error = writer->last_error()};
 }
 
-runtime::ServiceStatus service_status(const config::ControllerConfig& config, const runtime::LoopStatistics& stats,
-                                      const runtime::SupervisorFeed& feed, const runtime::TelemetryLosses& telemetry) {
+telemetry::ServiceStatus service_status(const config::ControllerConfig& config, const runtime::LoopStatistics& stats,
+                                      const telemetry::SupervisorFeed& feed, const telemetry::TelemetryLosses& telemetry) {
   return {.state = feed.state(),
           .latched = feed.latched(),
           .rate = config.rate,
@@ -43,7 +43,7 @@ runtime::ServiceStatus service_status(const config::ControllerConfig& config, co
 // The run's verdict: kEndedSafe when a fault, not the stop, put the loop into the SAFE it ended
 // in, or a bus link was down at the end (a run shorter than link_timeout never leaves INIT on a
 // dead link), with the trigger and each bus whose link is down and why.
-int report_ending(std::FILE* out, const runtime::Journal& journal, control::Trigger safe_cause,
+int report_ending(std::FILE* out, const telemetry::Journal& journal, control::Trigger safe_cause,
                   const std::vector<std::string>& links) {
   for (const std::string& link : links) std::fprintf(out, "link down: %s\n", link.c_str());
   const bool through_fault = safe_cause != control::Trigger::kNone && safe_cause != control::Trigger::kShutdown;
@@ -52,7 +52,7 @@ int report_ending(std::FILE* out, const runtime::Journal& journal, control::Trig
                                                ", not the stop (exit status 4)"
                                          : "the run ended with a bus link down (exit status 4)";
   std::fprintf(out, "%s\n", line.c_str());
-  journal.write(runtime::Priority::kErr, line);
+  journal.write(telemetry::Priority::kErr, line);
   return cli::kEndedSafe;
 }
 
@@ -72,8 +72,8 @@ class Controller final : public runtime::RealTimeHooks {
       : config_(config),
         options_(options),
         out_(out),
-        journal_(options.log != nullptr ? runtime::Journal(options.log, false, "mrd-controller")
-                                        : runtime::Journal::for_stderr("mrd-controller")) {}
+        journal_(options.log != nullptr ? telemetry::Journal(options.log, false, "mrd-controller")
+                                        : telemetry::Journal::for_stderr("mrd-controller")) {}
 
   [[nodiscard]] int configure();
   void activate();
@@ -99,18 +99,18 @@ class Controller final : public runtime::RealTimeHooks {
   const config::ControllerConfig& config_;
   const RunOptions& options_;
   std::FILE* out_;
-  const runtime::Journal journal_;
+  const telemetry::Journal journal_;
   runtime::RtSetupResult rt_;
   const hal::MonotonicClock clock_;
   std::optional<HalSet> hal_;
-  std::unique_ptr<runtime::TelemetryQueue> queue_;
-  std::unique_ptr<runtime::CsvTelemetryWriter> writer_;
+  std::unique_ptr<telemetry::TelemetryQueue> queue_;
+  std::unique_ptr<telemetry::CsvTelemetryWriter> writer_;
   std::optional<ControlLoop> loop_;
   std::optional<MockDrive> mock_;
-  runtime::SupervisorFeed feed_;
+  telemetry::SupervisorFeed feed_;
   runtime::LoopStatistics stats_;
-  runtime::ServiceNotifier notifier_;
-  runtime::TelemetryAlarm telemetry_alarm_;
+  telemetry::ServiceNotifier notifier_;
+  telemetry::TelemetryAlarm telemetry_alarm_;
   hal::Timestamp start_{};
   std::uint64_t lost_logged_ = 0;
   std::uint64_t bounds_logged_ = 0;
@@ -124,7 +124,7 @@ int Controller::configure() {
   if (const auto started = hal_->start(); !started.ok) {
     std::string error = "cannot start the back ends:\n" + started.error;
     while (error.ends_with('\n')) error.pop_back();
-    journal_.write(runtime::Priority::kErr, error);
+    journal_.write(telemetry::Priority::kErr, error);
     return cli::kIo;
   }
   if (config_.telemetry.enabled() && !start_telemetry()) return cli::kIo;
@@ -134,11 +134,11 @@ int Controller::configure() {
 }
 
 bool Controller::start_telemetry() {
-  queue_ = std::make_unique<runtime::TelemetryQueue>(static_cast<std::size_t>(config_.telemetry.ring_size));
-  writer_ = std::make_unique<runtime::CsvTelemetryWriter>(*queue_, config_.telemetry.flush_period,
+  queue_ = std::make_unique<telemetry::TelemetryQueue>(static_cast<std::size_t>(config_.telemetry.ring_size));
+  writer_ = std::make_unique<telemetry::CsvTelemetryWriter>(*queue_, config_.telemetry.flush_period,
                                                           config_.law.mode == control::ControlMode::kForce);
   if (const auto started = writer_->start(config_.telemetry); !started.ok) {
-    journal_.write(runtime::Priority::kErr, started.error);
+    journal_.write(telemetry::Priority::kErr, started.error);
     return false;
   }
   return true;
@@ -173,7 +173,7 @@ void Controller::deactivate(const runtime::ProcessSignals& signals) {
   // The loop thread has ended (joined): the final cycle's transition is in the feed.
   log_transitions();
   const std::string why = stop_reason(signals);
-  journal_.write(runtime::Priority::kNotice, why + ", fail-safe current written");
+  journal_.write(telemetry::Priority::kNotice, why + ", fail-safe current written");
   notifier_.stopping(why);
   if (writer_) writer_->stop();
   links_down_ = hal_->link_problems();  // before stop(), which takes every link down
@@ -200,9 +200,9 @@ bool Controller::report_telemetry() {
   const bool failed = writer_->failures() > 0;
   if (failed) {
     const std::string error = "telemetry: FAILED, " + std::to_string(writer_->failures()) + " write(s) failed (last: " +
-                              runtime::telemetry_error_text(writer_->last_error()) + "); " + writer_->path() + " is incomplete";
+                              telemetry::telemetry_error_text(writer_->last_error()) + "); " + writer_->path() + " is incomplete";
     std::fprintf(out_, "%s\n", error.c_str());
-    journal_.write(runtime::Priority::kErr, error);
+    journal_.write(telemetry::Priority::kErr, error);
   }
   if (const auto t0 = writer_->start_time()) {
     std::fprintf(out_, "telemetry: time_s 0 is CLOCK_MONOTONIC %.9f s\n", std::chrono::duration<double>(*t0).count());
@@ -220,7 +220,7 @@ void Controller::finish(hal::Timestamp next_release) {
 void Controller::ready(const runtime::RtSetupResult& done) {
   std::fprintf(out_, "%s\n", runtime::describe_rt_setup(config_.realtime, done, hal_->io_threads().size()).c_str());
   std::fflush(out_);
-  for (const auto& w : done.warnings) journal_.write(runtime::Priority::kWarning, "warning: " + w);
+  for (const auto& w : done.warnings) journal_.write(telemetry::Priority::kWarning, "warning: " + w);
   notifier_.ready(service_status(config_, stats_, feed_, {}), clock_.now());
 }
 
@@ -234,7 +234,7 @@ void Controller::print_stats() {
     text += runtime::format_histogram("execution time", stats_.execution);
   }
   text += "supervisor: " + std::string(to_string(feed_.state())) + ", transitions:\n";
-  text += runtime::format_transitions(loop_->supervisor().transitions());
+  text += telemetry::format_transitions(loop_->supervisor().transitions());
   text += hal_->counters();
   std::fputs(text.c_str(), out_);
   std::fflush(out_);
@@ -242,7 +242,7 @@ void Controller::print_stats() {
 
 void Controller::clear_latch() {
   loop_->request_clear_latch();
-  journal_.write(runtime::Priority::kNotice, "SIGUSR2: an operator cleared the latch");
+  journal_.write(telemetry::Priority::kNotice, "SIGUSR2: an operator cleared the latch");
 }
 
 // Never a stop: the file checked again, the running config kept (ConfigReload).
@@ -256,15 +256,15 @@ void Controller::tick(hal::Timestamp now) {
   log_transitions();
   const auto losses = telemetry_losses(queue_.get(), writer_.get());
   if (const auto line = telemetry_alarm_.check(losses, now)) journal_.write(line->priority, line->text);
-  runtime::ServiceStatus status = service_status(config_, stats_, feed_, losses);
+  telemetry::ServiceStatus status = service_status(config_, stats_, feed_, losses);
   status.bus_stalled = loop_->bus_stalled();
   notifier_.tick(now, status);
 }
 
 // The transitions the loop published since the last call, into the journal (main thread).
 void Controller::log_transitions() {
-  feed_.drain([&](const runtime::SupervisorEvent& e) {
-    journal_.write(runtime::transition_priority(e), runtime::format_transition(e, start_));
+  feed_.drain([&](const telemetry::SupervisorEvent& e) {
+    journal_.write(telemetry::transition_priority(e), telemetry::format_transition(e, start_));
   });
   // A scale at its bound means the model's yield force is off by more than the correction may
   // take up: worth an engineer's look (identify the model again), not a fault.
@@ -274,11 +274,11 @@ void Controller::log_transitions() {
                   "force mode: the load-cell correction's yield force scale reached its bound (%.3f); "
                   "force.load_cell.max_correction limits it",
                   feed_.force_scale_at_bound());
-    journal_.write(runtime::Priority::kWarning, line);
+    journal_.write(telemetry::Priority::kWarning, line);
     bounds_logged_ = hits;
   }
   if (const std::uint64_t lost = feed_.lost(); lost > lost_logged_) {
-    journal_.write(runtime::Priority::kWarning,
+    journal_.write(telemetry::Priority::kWarning,
                    "supervisor: " + std::to_string(lost - lost_logged_) + " transitions not logged (the feed was full)");
     lost_logged_ = lost;
   }

@@ -16,7 +16,7 @@ struct RunOptions {
   double duration_s = 0.0;  // 0: until SIGTERM or SIGINT
   bool bench = false;       // also print the latency histograms
   // Supervisor transitions, warnings and the stop, as they happen; null: stderr, with syslog
-  // priorities ("<2>...") when stderr is journald's stream (runtime::Journal).
+  // priorities ("<2>...") when stderr is journald's stream (telemetry::Journal).
   std::FILE* log = nullptr;
   // SIGHUP's check of the config file, its answer into the log; null: "nothing to re-read".
   const ConfigReload* reload = nullptr;
@@ -28,7 +28,7 @@ struct RunOptions {
 // SIGHUP), deactivate (after the final cycle drove the fail-safe current: the stop logged, the
 // writer and the buses down) and report (statistics, the run's verdict). Under systemd it
 // reports readiness, feeds the watchdog while the loop's cycles advance and keeps STATUS=
-// current (runtime::ServiceNotifier); supervisor transitions reach the log as they happen.
+// current (telemetry::ServiceNotifier); supervisor transitions reach the log as they happen.
 // Returns the process exit code. `unblock`, if given, is the set of signals the caller blocked
 // so that the threads started here inherit it; it is unblocked on the calling thread once they run.
 int run_controller(const config::ControllerConfig& config, const RunOptions& options,

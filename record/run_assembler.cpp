@@ -7,7 +7,7 @@ namespace mrd::record {
 
 namespace {
 
-// The controller's own telemetry (runtime/csv_telemetry_writer.cpp) names columns that are no
+// The controller's own telemetry (telemetry/csv_telemetry_writer.cpp) names columns that are no
 // run quantity (cycle, sample, state, ...) and three currents: recognised by the names, in any
 // order, it is read without --columns.
 bool is_controller_telemetry(const std::vector<std::string_view>& names) {

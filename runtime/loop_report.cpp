@@ -50,26 +50,6 @@ std::string format_histogram(const char* name, const LatencyHistogram& h) {
   return out;
 }
 
-std::string format_transitions(const control::TransitionCounts& counts) {
-  std::string out;
-  constexpr auto kStates = static_cast<std::size_t>(control::SupervisorState::kCount);
-  constexpr auto kTriggers = static_cast<std::size_t>(control::Trigger::kCount);
-  for (std::size_t from = 0; from < kStates; ++from) {
-    for (std::size_t to = 0; to < kStates; ++to) {
-      for (std::size_t why = 0; why < kTriggers; ++why) {
-        const auto f = static_cast<control::SupervisorState>(from);
-        const auto t = static_cast<control::SupervisorState>(to);
-        const auto w = static_cast<control::Trigger>(why);
-        if (const std::uint64_t n = counts.get(f, t, w); n > 0) {
-          out += "  " + std::string(to_string(f)) + " -> " + std::string(to_string(t)) + " (" +
-                 std::string(to_string(w)) + "): " + std::to_string(n) + "\n";
-        }
-      }
-    }
-  }
-  return out.empty() ? "  (none)\n" : out;
-}
-
 std::string format_loop_statistics(const LoopStatistics& stats) {
   std::string out = "cycles " + std::to_string(stats.cycles.get()) + ", overruns " +
                     std::to_string(stats.overruns.get()) + "\n";

@@ -4,7 +4,6 @@
 
 #include "runtime/latency_histogram.hpp"
 #include "runtime/loop_statistics.hpp"
-#include "control/supervisor.hpp"
 
 namespace mrd::runtime {
 
@@ -13,8 +12,6 @@ namespace mrd::runtime {
 [[nodiscard]] std::string format_percentiles(const char* name, const LatencyHistogram& h);
 // Counts in decade-ish bins (<1, 1-2, 2-5, 5-10, ... us), for the bench's histogram table.
 [[nodiscard]] std::string format_histogram(const char* name, const LatencyHistogram& h);
-// "supervisor: INIT -> RUN (good_periods): 1" per non-zero (from, to, trigger).
-[[nodiscard]] std::string format_transitions(const control::TransitionCounts& counts);
 [[nodiscard]] std::string format_loop_statistics(const LoopStatistics& stats);
 
 }  // namespace mrd::runtime

@@ -10,10 +10,10 @@ targets=()
 if [[ ${1:-} == --quick ]]; then
   shift
   targets=(--target mrd-controller mrd_common_tests mrd_model_tests mrd_hal_tests mrd_control_tests
-           mrd_runtime_tests mrd_config_tests mrd_firmware_tests mrd_soak_tests mrd_allocation_tests
+           mrd_runtime_tests mrd_telemetry_tests mrd_config_tests mrd_firmware_tests mrd_soak_tests mrd_allocation_tests
            mrd_firmware_allocation_tests mrd_hal_allocation_tests)
   # The random-parameter property test takes 77 s under qemu; release and asan run it.
-  set -- -R '^(common|model|hal|control|runtime|config|firmware|realtime)\.' \
+  set -- -R '^(common|model|hal|control|runtime|telemetry|config|firmware|realtime)\.' \
          -E '^model\.JilesAtherton\.RandomParametersNeverProduceNonFiniteValues$' "$@"
 fi
 bash scripts/setup-cross-arm64.sh

@@ -10,8 +10,8 @@
 #include <string>
 
 #include "config/config_loader.hpp"
-#include "runtime/csv_telemetry_writer.hpp"
-#include "runtime/telemetry_queue.hpp"
+#include "telemetry/csv_telemetry_writer.hpp"
+#include "telemetry/telemetry_queue.hpp"
 
 namespace {
 
@@ -85,8 +85,8 @@ TEST_F(TelemetryDirectory, TheWriterDoesNotFollowALinkPlantedAtTheFile) {
   const fs::path victim = outside_ / "victim.txt";
   std::ofstream(victim) << "keep\n";
   fs::create_symlink(victim, logs_ / "run.csv");
-  mrd::runtime::TelemetryQueue queue(16);
-  mrd::runtime::CsvTelemetryWriter writer(queue, 0.05);
+  mrd::telemetry::TelemetryQueue queue(16);
+  mrd::telemetry::CsvTelemetryWriter writer(queue, 0.05);
   const auto started = writer.start((logs_ / "run.csv").string());
   EXPECT_FALSE(started.ok);
   EXPECT_NE(started.error.find("cannot open telemetry file"), std::string::npos) << started.error;

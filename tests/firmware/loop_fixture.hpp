@@ -22,7 +22,7 @@ class LoopRig {
   static constexpr double kDemandDamping = 250e3;  // [N s/m]
 
   explicit LoopRig(hal::mock::FaultScript script = {}, control::SupervisorConfig safety = {},
-                   runtime::TelemetryQueue* telemetry = nullptr, const control::ControlLawConfig& law = {})
+                   telemetry::TelemetryQueue* telemetry = nullptr, const control::ControlLawConfig& law = {})
       : hal_(std::make_unique<hal::mock::MockHal>(std::move(script))),
         loop_(std::make_unique<firmware::ControlLoop>(
             law, safety,

@@ -10,8 +10,8 @@
 
 #include "config/config_loader.hpp"
 #include "firmware/control_loop.hpp"
-#include "runtime/csv_telemetry_writer.hpp"
-#include "runtime/telemetry_queue.hpp"
+#include "telemetry/csv_telemetry_writer.hpp"
+#include "telemetry/telemetry_queue.hpp"
 #include "hal/mock/mock_hal.hpp"
 #include "sim/damper_plant.hpp"
 #include "sim/displacement_profile.hpp"
@@ -108,8 +108,8 @@ SoakFigures run_soak(std::uint64_t cycles, std::uint32_t seed) {
   const std::int64_t recovery_limit = safety.recovery_periods + safety.stale_periods + 5;
 
   hal::mock::MockHal hal;
-  runtime::TelemetryQueue queue(static_cast<std::size_t>(config.telemetry.ring_size));
-  runtime::CsvTelemetryWriter writer(queue, config.telemetry.flush_period);
+  telemetry::TelemetryQueue queue(static_cast<std::size_t>(config.telemetry.ring_size));
+  telemetry::CsvTelemetryWriter writer(queue, config.telemetry.flush_period);
   if (!writer.start("/dev/null").ok) return {};
   firmware::ControlLoop loop(config.law, safety,
                              firmware::HalDevices{hal.lvdt, hal.driver, hal.lines}, &queue);

@@ -12,7 +12,7 @@
 namespace {
 
 using mrd::firmware::ConfigReload;
-using mrd::runtime::Priority;
+using mrd::telemetry::Priority;
 
 const std::string kGood = "[backends]\nlvdt = \"mock\"\ndriver = \"mock\"\nlines = \"mock\"\n";
 

@@ -50,7 +50,7 @@ TEST(RealTime, ControlLoopCycleDoesNotAllocateOnAnySupervisorPath) {
   window(FaultKind::kEnableWriteFails, kLatchAt);
   mrd::control::SupervisorConfig limits;
   limits.driver_fault_window = 500;  // the spaced driver faults above must not latch
-  mrd::runtime::TelemetryQueue telemetry(1024);
+  mrd::telemetry::TelemetryQueue telemetry(1024);
   LoopRig rig(script, limits, &telemetry);
   auto stats = std::make_unique<mrd::runtime::LoopStatistics>();
   for (int i = 0; i < 10; ++i) rig.step();  // start-up
@@ -65,7 +65,7 @@ TEST(RealTime, ControlLoopCycleDoesNotAllocateOnAnySupervisorPath) {
     stats->wake_latency.record(i);
     stats->execution.record(3 * i);
     stats->add_cycle(static_cast<std::uint64_t>(skip));
-    if (i % 512 == 0) drained += telemetry.drain([](const mrd::runtime::TelemetryRecord&) {});
+    if (i % 512 == 0) drained += telemetry.drain([](const mrd::telemetry::TelemetryRecord&) {});
   }
   const auto allocations = mrd::test::stop_counting_allocations();
   EXPECT_EQ(allocations, 0u);
@@ -127,14 +127,14 @@ TEST(RealTime, ForceModeCycleDoesNotAllocateOnAnyDemandFaultPath) {
     script.add({kind, cycle_time(at, LoopRig::kPeriod), cycle_time(at + 400, LoopRig::kPeriod), parameter});
     at += 1000;
   }
-  mrd::runtime::TelemetryQueue telemetry(1024);
+  mrd::telemetry::TelemetryQueue telemetry(1024);
   LoopRig rig(script, {}, &telemetry, mrd::test::force_law());
   for (int i = 0; i < 10; ++i) rig.step();
   std::uint64_t drained = 0;
   mrd::test::start_counting_allocations();
   for (int i = 10; i < 6000; ++i) {
     rig.step();
-    if (i % 512 == 0) drained += telemetry.drain([](const mrd::runtime::TelemetryRecord&) {});
+    if (i % 512 == 0) drained += telemetry.drain([](const mrd::telemetry::TelemetryRecord&) {});
   }
   EXPECT_EQ(mrd::test::stop_counting_allocations(), 0u);
   const auto& t = rig.loop().supervisor().transitions();
@@ -149,7 +149,7 @@ TEST(RealTime, ForceModeCycleDoesNotAllocateOnAnyDemandFaultPath) {
 TEST(RealTime, ForceModeLoadCellCorrectionDoesNotAllocateMovingFrozenOrAtItsBound) {
   // The load-cell correction every period in RUN: moving, at its bound, frozen while the load
   // cell is silent (stale) and while it reports a fault (bad), with telemetry into the ring.
-  mrd::runtime::TelemetryQueue telemetry(1024);
+  mrd::telemetry::TelemetryQueue telemetry(1024);
   LoopRig rig({}, {}, &telemetry, mrd::test::force_law_with_load_cell(0.2));
   rig.set_load_cell_gain(0.5);  // far below the model: the scale runs to its lower bound
   for (int i = 0; i < 10; ++i) rig.step();
@@ -159,7 +159,7 @@ TEST(RealTime, ForceModeLoadCellCorrectionDoesNotAllocateMovingFrozenOrAtItsBoun
     rig.hal().load_cell.set_silent(i >= 3000 && i < 3500);
     rig.hal().load_cell.set_faulty(i >= 4000 && i < 4500);
     rig.step();
-    if (i % 512 == 0) drained += telemetry.drain([](const mrd::runtime::TelemetryRecord&) {});
+    if (i % 512 == 0) drained += telemetry.drain([](const mrd::telemetry::TelemetryRecord&) {});
   }
   EXPECT_EQ(mrd::test::stop_counting_allocations(), 0u);
   const auto* correction = rig.loop().law().force_scale_correction();

@@ -5,17 +5,17 @@
 #include <iterator>
 #include <string>
 
-#include "runtime/csv_telemetry_writer.hpp"
-#include "runtime/telemetry_queue.hpp"
+#include "telemetry/csv_telemetry_writer.hpp"
+#include "telemetry/telemetry_queue.hpp"
 #include "tests/firmware/loop_fixture.hpp"
 #include "tests/hal/test_wait.hpp"
 #include "tests/support/test_files.hpp"
 
 namespace {
 
-using mrd::runtime::CsvTelemetryWriter;
-using mrd::runtime::TelemetryQueue;
-using mrd::runtime::TelemetryRecord;
+using mrd::telemetry::CsvTelemetryWriter;
+using mrd::telemetry::TelemetryQueue;
+using mrd::telemetry::TelemetryRecord;
 
 TEST(TelemetryQueue, AFullRingDropsAndCountsNeverLosesSilently) {
   TelemetryQueue q(16);
@@ -114,7 +114,7 @@ TEST(TelemetryLoop, DecimationOffersOneRecordEveryNCycles) {
 
 namespace {
 
-using mrd::runtime::TelemetryConfig;
+using mrd::telemetry::TelemetryConfig;
 
 // A fresh directory for one test's telemetry files.
 class TelemetryFiles : public ::testing::Test {
@@ -185,7 +185,7 @@ TEST_F(TelemetryFiles, WithoutPerRunThePathItselfIsWritten) {
 namespace {
 
 TEST(TelemetryForceColumns, ForceModeAppendsItsColumnsAndTable4LinesAreUnchanged) {
-  mrd::runtime::TelemetryRecord r{};
+  mrd::telemetry::TelemetryRecord r{};
   r.demand = 12345.0;
   r.yield_force = 9876.5;
   r.demand_check = static_cast<std::uint8_t>(mrd::control::SampleCheck::kStale);
@@ -195,14 +195,14 @@ TEST(TelemetryForceColumns, ForceModeAppendsItsColumnsAndTable4LinesAreUnchanged
   r.load_cell_frozen = 12;
   char table4[512];
   char force[512];
-  const int n4 = mrd::runtime::CsvTelemetryWriter::format(r, {}, table4, sizeof table4);
-  const int nf = mrd::runtime::CsvTelemetryWriter::format(r, {}, force, sizeof force, true);
+  const int n4 = mrd::telemetry::CsvTelemetryWriter::format(r, {}, table4, sizeof table4);
+  const int nf = mrd::telemetry::CsvTelemetryWriter::format(r, {}, force, sizeof force, true);
   ASSERT_GT(n4, 0);
   const std::string base(table4, static_cast<std::size_t>(n4));
   const std::string line(force, static_cast<std::size_t>(nf));
   EXPECT_EQ(line, base.substr(0, base.size() - 1) + ",12345,9876.5,stale,1,0,0.875,12\n");
-  const std::string header = mrd::runtime::CsvTelemetryWriter::header();
-  EXPECT_EQ(std::string(mrd::runtime::CsvTelemetryWriter::force_header()),
+  const std::string header = mrd::telemetry::CsvTelemetryWriter::header();
+  EXPECT_EQ(std::string(mrd::telemetry::CsvTelemetryWriter::force_header()),
             header.substr(0, header.size() - 1) +
                 ",demand_N,yield_force_N,demand,clipped,reached,force_scale,load_cell_frozen\n");
 }
@@ -217,7 +217,7 @@ TEST(TelemetryColumns, EachFieldIsWrittenUnderItsNameInTheFilesUnit) {
   using mrd::control::SampleCheck;
   using mrd::control::SupervisorState;
   using mrd::control::Trigger;
-  mrd::runtime::TelemetryRecord r{
+  mrd::telemetry::TelemetryRecord r{
       .cycle = 42,
       .time = mrd::hal::Timestamp{std::chrono::milliseconds{1500}},
       .displacement = 0.0123,
@@ -245,11 +245,11 @@ TEST(TelemetryColumns, EachFieldIsWrittenUnderItsNameInTheFilesUnit) {
       .load_cell_frozen = 12,
   };
   char line[512];
-  ASSERT_GT(mrd::runtime::CsvTelemetryWriter::format(r, {}, line, sizeof line, true), 0);
+  ASSERT_GT(mrd::telemetry::CsvTelemetryWriter::format(r, {}, line, sizeof line, true), 0);
   EXPECT_STREQ(line,
                "42,1.500000,12.3000,fresh,0.51,0.8,0.75,0.7,0.9,0.85,45.6,12345.6,RUN,none,3,1,0,7,"
                "2000,9876.5,stale,1,0,0.875,12\n");
-  EXPECT_STREQ(mrd::runtime::CsvTelemetryWriter::force_header(),
+  EXPECT_STREQ(mrd::telemetry::CsvTelemetryWriter::force_header(),
                "cycle,time_s,displacement_mm,sample,measured_current_A,scheduled_current_A,law_current_A,setpoint_A,"
                "target_B_T,B_T,velocity_mm_s,force_N,state,trigger,overruns,enable,latched,recoveries,"
                "demand_N,yield_force_N,demand,clipped,reached,force_scale,load_cell_frozen\n");

@@ -10,15 +10,15 @@
 #include <chrono>
 #include <string>
 
-#include "runtime/csv_telemetry_writer.hpp"
-#include "runtime/telemetry_queue.hpp"
+#include "telemetry/csv_telemetry_writer.hpp"
+#include "telemetry/telemetry_queue.hpp"
 #include "tests/firmware/loop_fixture.hpp"
 #include "tests/support/test_files.hpp"
 
 namespace {
 
-using mrd::runtime::CsvTelemetryWriter;
-using mrd::runtime::TelemetryQueue;
+using mrd::telemetry::CsvTelemetryWriter;
+using mrd::telemetry::TelemetryQueue;
 using std::chrono::milliseconds;
 
 void expect_accounted(const CsvTelemetryWriter& writer, const TelemetryQueue& q) {

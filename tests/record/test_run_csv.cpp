@@ -9,8 +9,8 @@
 #include "record/run_csv_writer.hpp"
 #include "record/run_gaps.hpp"
 #include "record/run_reader.hpp"
-#include "runtime/csv_telemetry_writer.hpp"
-#include "runtime/telemetry_record.hpp"
+#include "telemetry/csv_telemetry_writer.hpp"
+#include "telemetry/telemetry_record.hpp"
 
 namespace {
 
@@ -360,10 +360,10 @@ TEST(RunCsvWriter, AWrittenRunReadsBackInSi) {
 
 // The controller's own telemetry file reads without --columns: its header is recognised.
 TEST(RunCsv, TheControllersTelemetryReadsWithoutAColumnMapping) {
-  std::string text = mrd::runtime::CsvTelemetryWriter::header();
+  std::string text = mrd::telemetry::CsvTelemetryWriter::header();
   const mrd::hal::Timestamp start{};
   for (int i = 0; i < 3; ++i) {
-    mrd::runtime::TelemetryRecord r;
+    mrd::telemetry::TelemetryRecord r;
     r.cycle = static_cast<std::uint64_t>(i);
     r.time = start + std::chrono::milliseconds(i);
     r.displacement = 0.001 * i;      // [m]
@@ -372,7 +372,7 @@ TEST(RunCsv, TheControllersTelemetryReadsWithoutAColumnMapping) {
     r.velocity = 0.02;               // [m/s]
     r.force = 1234.0;                // the observer's, not a measurement
     char line[512];
-    mrd::runtime::CsvTelemetryWriter::format(r, start, line, sizeof line);
+    mrd::telemetry::CsvTelemetryWriter::format(r, start, line, sizeof line);
     text += line;
   }
   const auto run = mrd::record::parse_run_csv(text, "telemetry.csv", {});

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "runtime/csv_telemetry_writer.hpp"
+#include "telemetry/csv_telemetry_writer.hpp"
 #include "record/csv.hpp"
 #include "record/row_screen.hpp"
 
@@ -57,8 +57,8 @@ class TelemetryParser {
   TelemetryParser(std::string_view text, const std::string& name) : lines_(text, name), name_(name) {}
 
   TelemetryLog parse() {
-    static const std::vector<std::string_view> kTable4 = header_columns(runtime::CsvTelemetryWriter::header());
-    static const std::vector<std::string_view> kForce = header_columns(runtime::CsvTelemetryWriter::force_header());
+    static const std::vector<std::string_view> kTable4 = header_columns(telemetry::CsvTelemetryWriter::header());
+    static const std::vector<std::string_view> kForce = header_columns(telemetry::CsvTelemetryWriter::force_header());
     const auto first = next();
     const std::size_t header_line = lines_.line_number();
     // Owned: the line's buffer does not outlive the next read.
@@ -80,7 +80,7 @@ class TelemetryParser {
       for (const std::string_view name : kTable4)
         if (!has(name) && !(name == "force_N" && has("force_kN"))) missing += (missing.empty() ? "" : ", ") + std::string(name);
       throw fail("", "not an mrd-controller telemetry file: no column " + missing + " (the header must name " +
-                         std::string(runtime::CsvTelemetryWriter::header()).substr(0, 60) + "...)");
+                         std::string(telemetry::CsvTelemetryWriter::header()).substr(0, 60) + "...)");
     }
     log_.force_mode = std::all_of(kForce.begin() + static_cast<std::ptrdiff_t>(kTable4.size()), kForce.end(), has);
     // Only the columns read are screened: another tool's extra column cannot set rows aside.

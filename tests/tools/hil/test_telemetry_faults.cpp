@@ -11,7 +11,7 @@
 
 #include "record/csv.hpp"
 #include "record/recorded_run.hpp"
-#include "runtime/csv_telemetry_writer.hpp"
+#include "telemetry/csv_telemetry_writer.hpp"
 #include "tools/hil/force_join.hpp"
 #include "tools/hil/telemetry_csv.hpp"
 
@@ -35,7 +35,7 @@ std::string rows(std::uint64_t from, std::uint64_t to, const char* state = "RUN"
   return out;
 }
 
-const std::string kHeader = mrd::runtime::CsvTelemetryWriter::header();
+const std::string kHeader = mrd::telemetry::CsvTelemetryWriter::header();
 
 TEST(TelemetryFaults, ARepeatedRowIsKeptOnceAndCounted) {
   // Rows at lines 2..11; cycle 5 (line 7) written again at line 8.

@@ -1,4 +1,4 @@
-// tools/hil/telemetry_csv reads what runtime::CsvTelemetryWriter writes, in both modes, with the
+// tools/hil/telemetry_csv reads what telemetry::CsvTelemetryWriter writes, in both modes, with the
 // file's time origin; and record's run reader takes the plant log's origin line.
 #include <gtest/gtest.h>
 
@@ -9,15 +9,15 @@
 #include "common/time_origin.hpp"
 #include "record/csv.hpp"
 #include "record/run_csv.hpp"
-#include "runtime/csv_telemetry_writer.hpp"
-#include "runtime/telemetry_queue.hpp"
+#include "telemetry/csv_telemetry_writer.hpp"
+#include "telemetry/telemetry_queue.hpp"
 #include "tools/hil/telemetry_csv.hpp"
 
 namespace {
 
-using mrd::runtime::CsvTelemetryWriter;
-using mrd::runtime::TelemetryQueue;
-using mrd::runtime::TelemetryRecord;
+using mrd::telemetry::CsvTelemetryWriter;
+using mrd::telemetry::TelemetryQueue;
+using mrd::telemetry::TelemetryRecord;
 using namespace std::chrono_literals;
 
 // Three records a millisecond apart starting at `start` on the loop's clock, through the real
@@ -215,12 +215,12 @@ TEST(TimeOrigin, TheRunReaderTakesTheOriginAndSkipsComments) {
 // A column added to the table is written under its name, and the readers, which find columns by
 // name, read the file still (the new column theirs to use or to ignore).
 TEST(TelemetryLog, AColumnAddedToTheTableIsWrittenAndTheFileStillReads) {
-  std::vector<mrd::runtime::TelemetryColumn> columns(mrd::runtime::kTelemetryColumns.begin(),
-                                                     mrd::runtime::kTelemetryColumns.begin() + 18);  // table4's
-  columns.push_back({"coil_temperature_C", false, [](const mrd::runtime::TelemetryRecord& r, double, char* b, std::size_t n) {
+  std::vector<mrd::telemetry::TelemetryColumn> columns(mrd::telemetry::kTelemetryColumns.begin(),
+                                                     mrd::telemetry::kTelemetryColumns.begin() + 18);  // table4's
+  columns.push_back({"coil_temperature_C", false, [](const mrd::telemetry::TelemetryRecord& r, double, char* b, std::size_t n) {
                        return std::snprintf(b, n, "%.1f", 20.0 + static_cast<double>(r.cycle));
                      }});
-  mrd::runtime::TelemetryRecord r{.cycle = 5, .displacement = 0.002, .force = 300.0};
+  mrd::telemetry::TelemetryRecord r{.cycle = 5, .displacement = 0.002, .force = 300.0};
   char line[512];
   ASSERT_GT(CsvTelemetryWriter::format(columns, r, {}, line, sizeof line, false), 0);
   const std::string header = CsvTelemetryWriter::column_line(columns, false);

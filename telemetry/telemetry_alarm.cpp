@@ -1,11 +1,11 @@
-#include "runtime/telemetry_alarm.hpp"
+#include "telemetry/telemetry_alarm.hpp"
 
 #include <cerrno>
 #include <cinttypes>
 #include <cstdio>
 #include <cstring>
 
-namespace mrd::runtime {
+namespace mrd::telemetry {
 
 std::string telemetry_error_text(int error) {
   return error == ETIMEDOUT ? "the file took nothing within the write timeout" : std::strerror(error);
@@ -37,4 +37,4 @@ std::optional<TelemetryAlarmLine> TelemetryAlarm::check(const TelemetryLosses& l
   return TelemetryAlarmLine{io ? Priority::kErr : Priority::kWarning, "telemetry: " + describe_losses(l) + " so far"};
 }
 
-}  // namespace mrd::runtime
+}  // namespace mrd::telemetry

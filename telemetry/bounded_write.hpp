@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <string_view>
 
-namespace mrd::runtime {
+namespace mrd::telemetry {
 
 struct WriteResult {
   std::size_t written = 0;  // bytes taken by the file, from the start of the data
@@ -15,4 +15,4 @@ struct WriteResult {
 // but never past `deadline`: a FIFO whose reader stopped draining costs at most the deadline.
 WriteResult write_before(int fd, std::string_view data, std::chrono::steady_clock::time_point deadline);
 
-}  // namespace mrd::runtime
+}  // namespace mrd::telemetry

@@ -1,11 +1,11 @@
-#include "runtime/service_notifier.hpp"
+#include "telemetry/service_notifier.hpp"
 
 #include <systemd/sd-daemon.h>
 
 #include <cinttypes>
 #include <cstdio>
 
-namespace mrd::runtime {
+namespace mrd::telemetry {
 
 std::string format_status(const ServiceStatus& s) {
   char line[192];
@@ -49,4 +49,4 @@ void ServiceNotifier::tick(hal::Timestamp now, const ServiceStatus& status) {
   }
 }
 
-}  // namespace mrd::runtime
+}  // namespace mrd::telemetry

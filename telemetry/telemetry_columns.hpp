@@ -7,13 +7,13 @@
 
 #include "control/sample_check.hpp"
 #include "control/supervisor.hpp"
-#include "runtime/telemetry_record.hpp"
+#include "telemetry/telemetry_record.hpp"
 
 // The controller's telemetry CSV, column by column: the one place that names a column, gives its
 // unit and writes a record's field into it. The writer's header and lines come from this table,
 // and the readers find the columns by these names (tools/hil/telemetry_csv, record/run_assembler).
 // Adding a column: a field in TelemetryRecord, a row here, and the reader's line if a tool uses it.
-namespace mrd::runtime {
+namespace mrd::telemetry {
 
 struct TelemetryColumn {
   std::string_view name;  // with the file's unit: "displacement_mm"
@@ -70,4 +70,4 @@ inline constexpr std::array<TelemetryColumn, 25> kColumns{{
 
 inline constexpr const auto& kTelemetryColumns = telemetry_columns::kColumns;
 
-}  // namespace mrd::runtime
+}  // namespace mrd::telemetry

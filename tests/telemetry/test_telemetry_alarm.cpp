@@ -1,19 +1,19 @@
 // Telemetry's losses in the journal: a new condition at once, more of the same at most once per
 // interval, never a line per record; and in systemd's STATUS=. Time is scripted.
-#include "runtime/telemetry_alarm.hpp"
+#include "telemetry/telemetry_alarm.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cerrno>
 #include <chrono>
 
-#include "runtime/service_notifier.hpp"
+#include "telemetry/service_notifier.hpp"
 
 namespace {
 
-using mrd::runtime::Priority;
-using mrd::runtime::TelemetryAlarm;
-using mrd::runtime::TelemetryLosses;
+using mrd::telemetry::Priority;
+using mrd::telemetry::TelemetryAlarm;
+using mrd::telemetry::TelemetryLosses;
 using std::chrono::seconds;
 
 TEST(TelemetryAlarm, NothingLostNothingSaid) {
@@ -58,7 +58,7 @@ TEST(TelemetryAlarm, AFailedHeaderWithNoRecordLostYetIsSaid) {
 }
 
 TEST(TelemetryAlarm, TheStatusLineCarriesTheLosses) {
-  mrd::runtime::ServiceStatus s{.rate = 1000.0, .cycles = 10};
+  mrd::telemetry::ServiceStatus s{.rate = 1000.0, .cycles = 10};
   EXPECT_EQ(format_status(s), "INIT, 1000 Hz, wake-up p99 0.0 us, overruns 0, cycles 10");
   s.telemetry = {.dropped = 2, .lost = 7, .error = EPIPE};
   EXPECT_EQ(format_status(s), "INIT, 1000 Hz, wake-up p99 0.0 us, overruns 0, cycles 10; telemetry: 2 records dropped "
@@ -70,7 +70,7 @@ TEST(TelemetryAlarm, TheStatusLineCarriesTheLosses) {
 namespace {
 
 TEST(TelemetryAlarm, TheWritersTimeoutIsSaidAsWhatHappened) {
-  EXPECT_EQ(mrd::runtime::describe_losses({.lost = 5, .error = ETIMEDOUT}),
+  EXPECT_EQ(mrd::telemetry::describe_losses({.lost = 5, .error = ETIMEDOUT}),
             "5 lost to I/O (the file took nothing within the write timeout)");
 }
 

@@ -6,7 +6,7 @@
 
 #include "common/validation_report.hpp"
 
-namespace mrd::runtime {
+namespace mrd::telemetry {
 
 struct TelemetryConfig {
   std::string path;          // CSV file; empty: no telemetry. Relative paths start in `directory`.
@@ -29,4 +29,4 @@ struct TelemetryConfig {
   [[nodiscard]] ValidationReport validate() const;  // field paths relative to [telemetry]
 };
 
-}  // namespace mrd::runtime
+}  // namespace mrd::telemetry

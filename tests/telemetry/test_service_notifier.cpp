@@ -1,7 +1,7 @@
 // systemd's service protocol against a fake notify socket: READY=1 first, WATCHDOG=1 only while
 // the loop's cycle count advances, STATUS= with the state, rate, p99 and overruns. Time is
 // scripted; nothing sleeps.
-#include "runtime/service_notifier.hpp"
+#include "telemetry/service_notifier.hpp"
 
 #include <gtest/gtest.h>
 #include <stdlib.h>
@@ -16,8 +16,8 @@
 namespace {
 
 using mrd::control::SupervisorState;
-using mrd::runtime::ServiceNotifier;
-using mrd::runtime::ServiceStatus;
+using mrd::telemetry::ServiceNotifier;
+using mrd::telemetry::ServiceStatus;
 using std::chrono::milliseconds;
 
 // systemd passes the watchdog interval to the main process only (WATCHDOG_PID).

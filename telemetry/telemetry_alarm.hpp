@@ -6,12 +6,12 @@
 #include <string>
 
 #include "hal/clock.hpp"
-#include "runtime/journal.hpp"
+#include "telemetry/journal.hpp"
 
-namespace mrd::runtime {
+namespace mrd::telemetry {
 
 // What telemetry lost so far: the ring's drops (the writer fell behind) and the records the
-// file did not take (runtime::CsvTelemetryWriter::lost, with the errno of the latest failure).
+// file did not take (telemetry::CsvTelemetryWriter::lost, with the errno of the latest failure).
 struct TelemetryLosses {
   std::uint64_t dropped = 0;
   std::uint64_t lost = 0;
@@ -47,4 +47,4 @@ class TelemetryAlarm {
   std::optional<hal::Timestamp> last_;  // the last line's time
 };
 
-}  // namespace mrd::runtime
+}  // namespace mrd::telemetry

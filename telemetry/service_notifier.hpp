@@ -6,9 +6,9 @@
 
 #include "control/supervisor.hpp"
 #include "hal/clock.hpp"
-#include "runtime/telemetry_alarm.hpp"
+#include "telemetry/telemetry_alarm.hpp"
 
-namespace mrd::runtime {
+namespace mrd::telemetry {
 
 // The STATUS= line systemctl status shows: state, rate, wake-up p99 and overruns so far.
 struct ServiceStatus {
@@ -60,4 +60,4 @@ class ServiceNotifier {
   std::uint64_t withheld_ = 0;  // kicks due while the cycle count or a bus thread stood still
 };
 
-}  // namespace mrd::runtime
+}  // namespace mrd::telemetry

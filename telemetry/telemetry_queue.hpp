@@ -5,9 +5,9 @@
 #include <cstdint>
 
 #include "common/single_writer_counter.hpp"
-#include "runtime/telemetry_record.hpp"
+#include "telemetry/telemetry_record.hpp"
 
-namespace mrd::runtime {
+namespace mrd::telemetry {
 
 // The lock-free SPSC ring between the loop (producer) and the telemetry writer (consumer).
 // Its capacity comes from the config, so the storage is allocated once, at construction; push
@@ -38,4 +38,4 @@ class TelemetryQueue {
   SingleWriterCounter dropped_;
 };
 
-}  // namespace mrd::runtime
+}  // namespace mrd::telemetry

@@ -4,7 +4,7 @@
 
 #include "hal/clock.hpp"
 
-namespace mrd::runtime {
+namespace mrd::telemetry {
 
 // One cycle as the telemetry writer sees it. SI units; the CSV names its own.
 struct TelemetryRecord {
@@ -37,4 +37,4 @@ struct TelemetryRecord {
   bool force_scale_at_bound = false;   // the scale reached a bound this period (journaled)
 };
 
-}  // namespace mrd::runtime
+}  // namespace mrd::telemetry

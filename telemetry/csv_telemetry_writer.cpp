@@ -1,4 +1,4 @@
-#include "runtime/csv_telemetry_writer.hpp"
+#include "telemetry/csv_telemetry_writer.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -11,10 +11,10 @@
 #include <cstring>
 
 #include "common/time_origin.hpp"
-#include "runtime/bounded_write.hpp"
-#include "runtime/telemetry_columns.hpp"
+#include "telemetry/bounded_write.hpp"
+#include "telemetry/telemetry_columns.hpp"
 
-namespace mrd::runtime {
+namespace mrd::telemetry {
 
 std::string CsvTelemetryWriter::column_line(std::span<const TelemetryColumn> columns, bool force_columns) {
   std::string line;
@@ -231,4 +231,4 @@ void CsvTelemetryWriter::stop() {
   fd_ = -1;
 }
 
-}  // namespace mrd::runtime
+}  // namespace mrd::telemetry

@@ -1,4 +1,4 @@
-#include "runtime/bounded_write.hpp"
+#include "telemetry/bounded_write.hpp"
 
 #include <poll.h>
 #include <unistd.h>
@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cerrno>
 
-namespace mrd::runtime {
+namespace mrd::telemetry {
 
 WriteResult write_before(int fd, std::string_view data, std::chrono::steady_clock::time_point deadline) {
   WriteResult result;
@@ -36,4 +36,4 @@ WriteResult write_before(int fd, std::string_view data, std::chrono::steady_cloc
   return result;
 }
 
-}  // namespace mrd::runtime
+}  // namespace mrd::telemetry

@@ -1,6 +1,6 @@
 // Transitions reach the journal with syslog priorities: "<N>" prefixes when stderr is
 // journald's stream (JOURNAL_STREAM names it), the program's name on a terminal.
-#include "runtime/journal.hpp"
+#include "telemetry/journal.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,9 +15,9 @@ namespace {
 
 using mrd::control::SupervisorState;
 using mrd::control::Trigger;
-using mrd::runtime::Journal;
-using mrd::runtime::Priority;
-using mrd::runtime::SupervisorEvent;
+using mrd::telemetry::Journal;
+using mrd::telemetry::Priority;
+using mrd::telemetry::SupervisorEvent;
 
 SupervisorEvent event(SupervisorState from, SupervisorState to, Trigger why) {
   return {.cycle = 1234, .time = std::chrono::milliseconds(1734), .from = from, .to = to, .trigger = why};

@@ -1,11 +1,11 @@
-#include "runtime/journal.hpp"
+#include "telemetry/journal.hpp"
 
 #include <sys/stat.h>
 
 #include <cinttypes>
 #include <cstdlib>
 
-namespace mrd::runtime {
+namespace mrd::telemetry {
 
 bool Journal::is_journal_stream(int fd) {
   const char* stream = std::getenv("JOURNAL_STREAM");
@@ -50,4 +50,24 @@ std::string format_transition(const SupervisorEvent& e, hal::Timestamp start) {
   return line;
 }
 
-}  // namespace mrd::runtime
+std::string format_transitions(const control::TransitionCounts& counts) {
+  std::string out;
+  constexpr auto kStates = static_cast<std::size_t>(control::SupervisorState::kCount);
+  constexpr auto kTriggers = static_cast<std::size_t>(control::Trigger::kCount);
+  for (std::size_t from = 0; from < kStates; ++from) {
+    for (std::size_t to = 0; to < kStates; ++to) {
+      for (std::size_t why = 0; why < kTriggers; ++why) {
+        const auto f = static_cast<control::SupervisorState>(from);
+        const auto t = static_cast<control::SupervisorState>(to);
+        const auto w = static_cast<control::Trigger>(why);
+        if (const std::uint64_t n = counts.get(f, t, w); n > 0) {
+          out += "  " + std::string(to_string(f)) + " -> " + std::string(to_string(t)) + " (" +
+                 std::string(to_string(w)) + "): " + std::to_string(n) + "\n";
+        }
+      }
+    }
+  }
+  return out.empty() ? "  (none)\n" : out;
+}
+
+}  // namespace mrd::telemetry

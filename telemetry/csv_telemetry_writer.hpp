@@ -8,14 +8,14 @@
 #include <string>
 #include <vector>
 
-#include "runtime/telemetry_columns.hpp"
-#include "runtime/telemetry_config.hpp"
-#include "runtime/telemetry_queue.hpp"
+#include "telemetry/telemetry_columns.hpp"
+#include "telemetry/telemetry_config.hpp"
+#include "telemetry/telemetry_queue.hpp"
 #include "hal/clock.hpp"
 #include "hal/io_thread.hpp"
 #include "hal/status.hpp"
 
-namespace mrd::runtime {
+namespace mrd::telemetry {
 
 // The non-real-time side of telemetry: a thread that drains the ring every flush period and
 // writes CSV. The loop never waits for it, and it never waits long for the file: the file is
@@ -61,7 +61,7 @@ class CsvTelemetryWriter {
   // The CSV's t = 0 on the loop's clock (CLOCK_MONOTONIC in the controller), once a record is
   // written; read it after stop(). Another process on the same host joins its log by it.
   [[nodiscard]] std::optional<hal::Timestamp> start_time() const { return start_; }
-  // The column lines (runtime/telemetry_columns.hpp), '\n' ended.
+  // The column lines (telemetry/telemetry_columns.hpp), '\n' ended.
   static const char* header();
   static const char* force_header();  // header() with force mode's columns
   // One CSV line (with '\n') into buf, time counted from `start`; returns the length, or -1 when
@@ -112,4 +112,4 @@ class CsvTelemetryWriter {
   hal::IoThread thread_;
 };
 
-}  // namespace mrd::runtime
+}  // namespace mrd::telemetry

@@ -1,9 +1,9 @@
-#include "runtime/telemetry_config.hpp"
+#include "telemetry/telemetry_config.hpp"
 
 #include <cmath>
 #include <filesystem>
 
-namespace mrd::runtime {
+namespace mrd::telemetry {
 
 std::string TelemetryConfig::resolved_path() const {
   return (std::filesystem::path(directory) / path).lexically_normal().string();
@@ -41,4 +41,4 @@ ValidationReport TelemetryConfig::validate() const {
   return r;
 }
 
-}  // namespace mrd::runtime
+}  // namespace mrd::telemetry

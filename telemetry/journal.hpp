@@ -5,9 +5,9 @@
 #include <string_view>
 
 #include "hal/clock.hpp"
-#include "runtime/supervisor_feed.hpp"
+#include "telemetry/supervisor_feed.hpp"
 
-namespace mrd::runtime {
+namespace mrd::telemetry {
 
 // syslog(3) priorities, as journald reads them from a "<N>" line prefix.
 enum class Priority : int { kCrit = 2, kErr = 3, kWarning = 4, kNotice = 5, kInfo = 6 };
@@ -39,5 +39,7 @@ class Journal {
 [[nodiscard]] Priority transition_priority(const SupervisorEvent& e);
 // "supervisor: RUN -> SAFE (driver_fault) at cycle 1234, 1.234 s after start"
 [[nodiscard]] std::string format_transition(const SupervisorEvent& e, hal::Timestamp start);
+// The statistics' table: "  INIT -> RUN (good_periods): 1" per non-zero (from, to, trigger).
+[[nodiscard]] std::string format_transitions(const control::TransitionCounts& counts);
 
-}  // namespace mrd::runtime
+}  // namespace mrd::telemetry

@@ -1,6 +1,6 @@
 // The real-time thread's feed to the others: one event per transition (with the state it left),
 // the state snapshot, and a full ring that drops and counts instead of blocking.
-#include "runtime/supervisor_feed.hpp"
+#include "telemetry/supervisor_feed.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,9 +10,9 @@ namespace {
 
 using mrd::control::SupervisorState;
 using mrd::control::Trigger;
-using mrd::runtime::SupervisorEvent;
-using mrd::runtime::SupervisorFeed;
-using mrd::runtime::TelemetryRecord;
+using mrd::telemetry::SupervisorEvent;
+using mrd::telemetry::SupervisorFeed;
+using mrd::telemetry::TelemetryRecord;
 
 TelemetryRecord record(std::uint64_t cycle, SupervisorState state, Trigger trigger = Trigger::kNone) {
   TelemetryRecord r;

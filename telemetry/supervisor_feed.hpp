@@ -8,9 +8,9 @@
 #include "common/single_writer_counter.hpp"
 #include "control/supervisor.hpp"
 #include "hal/clock.hpp"
-#include "runtime/telemetry_record.hpp"
+#include "telemetry/telemetry_record.hpp"
 
-namespace mrd::runtime {
+namespace mrd::telemetry {
 
 // One supervisor transition, as the real-time thread saw it.
 struct SupervisorEvent {
@@ -94,4 +94,4 @@ class SupervisorFeed {
   static_assert(std::atomic<double>::is_always_lock_free, "the loop publishes the scale without a lock");
 };
 
-}  // namespace mrd::runtime
+}  // namespace mrd::telemetry
