@@ -91,6 +91,10 @@ struct CoilLagEffect : EffectTraitsBase<CoilLagParams> {
   static void report(const Params& p, Visitor&& v) {
     v("time_constant_s", p.time_constant);
   }
+  static Params nominal(DamperClassId damper) {
+    // A large coil's L/R is tens of ms; Spencer 1997 fitted 1/190 s on Dyke's damper.
+    return {.enabled = false, .time_constant = damper == DamperClassId::k50kN ? 20e-3 : 1.0 / 190.0};
+  }
   static void resize(Params& p, double size, double /*dissipated_energy*/) {
     p.enabled = true;
     p.time_constant *= size;

@@ -52,6 +52,7 @@ EffectInfo info_of() {
     return out;
   };
   info.same = [](const EffectSet& a, const EffectSet& b) { return a.get<E>() == b.get<E>(); };
+  info.set_nominal = [](EffectSet& s, DamperClassId damper) { s.get<E>() = E::nominal(damper); };
   info.resize = [](EffectSet& s, const EffectSet& nominal, double size, double energy) {
     P p = nominal.get<E>();
     E::resize(p, size, energy);

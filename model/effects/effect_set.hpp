@@ -117,7 +117,9 @@ struct EffectInfo {
   std::vector<std::pair<std::string, double>> (*report)(const EffectSet& effects);
   // Whether the two sets hold the same parameters for this effect.
   bool (*same)(const EffectSet& a, const EffectSet& b);
-  // The simulator: `nominal`'s parameters for this effect at `size`, switched on, into `effects`.
+  // The simulator: the effect's size-1 parameters on a damper class into `nominal` (off);
+  // `nominal`'s parameters for this effect at `size`, switched on, into `effects`.
+  void (*set_nominal)(EffectSet& nominal, DamperClassId damper);
   void (*resize)(EffectSet& effects, const EffectSet& nominal, double size, double dissipated_energy);
   std::string (*size_summary)(const EffectSet& nominal);
 };

@@ -29,6 +29,7 @@ namespace mrd::model {
 //   scale_force         rescales its force-valued parameters with the damper's force scale
 //   implausible         why a fitted instance is not a physical one, nullopt when it is
 //   report(p, v)        the fitted values for reports, v(json_key_with_unit, value) each
+//   nominal(c)          its parameters at size 1 on each damper class the simulator makes
 //   resize, size_summary
 //                       what "size" means for runs the simulator makes (mrd-simulate-run)
 
@@ -53,6 +54,10 @@ struct SearchCoordinate {
   Kind kind = Kind::kContinuous;
 };
 
+// The damper classes the simulator makes runs of (tools/simulation/damper_class.cpp): the
+// paper's 50 kN damper on its Table 4 rig, and a 1 kN damper of Dyke's and Spencer's size.
+enum class DamperClassId { k50kN, k1kN };
+
 // A column of the linear least-squares fit that an effect's parameter multiplies.
 enum class LinearColumn { kConstant, kDisplacement };
 
@@ -74,6 +79,8 @@ struct EffectTraitsBase {
   static constexpr std::array<LinearColumn, 0> kLinear{};
   static constexpr std::array<bool, 0> kLinearNonNegative{};
 
+  // Off, at its Params' defaults: an effect the simulator does not size by class.
+  static P nominal(DamperClassId) { return P{}; }
   static void apply(P&, std::span<const double>, const RunScales&) {}
   static void coordinates(const P&, const RunScales&, std::span<double>) {}
   static void add_linear(P&, std::span<const double>) {}

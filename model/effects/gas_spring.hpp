@@ -78,6 +78,11 @@ struct GasSpringEffect : EffectTraitsBase<GasSpringParams> {
     v("preload_N", p.preload);
     v("stiffness_N_m", p.stiffness);
   }
+  static Params nominal(DamperClassId damper) {
+    // The 1 kN class's is Spencer's k1 = 500 N/m and k1 x0 = 71.5 N.
+    if (damper == DamperClassId::k50kN) return {.enabled = false, .preload = 1500.0, .stiffness = 30e3};
+    return {.enabled = false, .preload = 70.0, .stiffness = 500.0};
+  }
   static void resize(Params& p, double size, double /*dissipated_energy*/) {
     p.enabled = true;
     p.preload *= size;

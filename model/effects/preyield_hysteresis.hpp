@@ -134,6 +134,18 @@ struct PreyieldHysteresisEffect : EffectTraitsBase<PreyieldHysteresisParams> {
     v("yield_fraction", p.yield_fraction);
     v("z_max_m", p.z_max());
   }
+  static Params nominal(DamperClassId damper) {
+    // A Bouc-Wen loop that saturates at z_max = (A / (beta + gamma))^(1/n) and carries a tenth
+    // of the yield force.
+    const double z_max = damper == DamperClassId::k50kN ? 0.5e-3 : 0.2e-3;
+    Params p;
+    p.A = 1.0;
+    p.n = 2.0;
+    p.beta = 0.5 / (z_max * z_max);
+    p.gamma = p.beta;
+    p.yield_fraction = 0.1;
+    return p;
+  }
   static void resize(Params& p, double size, double /*dissipated_energy*/) {
     p.enabled = true;
     p.yield_fraction = std::min(size * p.yield_fraction, 1.0);

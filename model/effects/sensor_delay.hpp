@@ -114,6 +114,10 @@ struct SensorDelayEffect : EffectTraitsBase<SensorDelayParams> {
   static void report(const Params& p, Visitor&& v) {
     v("delay_s", p.delay);
   }
+  static Params nominal(DamperClassId damper) {
+    // The 1 kN class moves at up to 5 Hz: a few ms is already a large phase error there.
+    return {.enabled = false, .delay = damper == DamperClassId::k50kN ? 5e-3 : 1.5e-3};
+  }
   static void resize(Params& p, double size, double /*dissipated_energy*/) {
     p = {true, std::min(size * p.delay, kMaxSensorDelay)};
   }

@@ -124,6 +124,14 @@ struct StrokeEndAirEffect : EffectTraitsBase<StrokeEndAirParams> {
     v("dead_travel_m", p.dead_travel);
     v("ramp_share", p.ramp_share);
   }
+  static Params nominal(DamperClassId damper) {
+    // From three quarters of the class's stroke amplitude (Section 4.3: 30-40 mm of 40 mm).
+    Params p;
+    p.threshold = damper == DamperClassId::k50kN ? 0.030 : 0.015;
+    p.length = damper == DamperClassId::k50kN ? 5e-3 : 2.5e-3;
+    p.depth = 0.45;
+    return p;
+  }
   static void resize(Params& p, double size, double /*dissipated_energy*/) {
     p.enabled = true;
     p.depth = std::min(size * p.depth, 0.95);

@@ -10,34 +10,11 @@ namespace mrd::tools {
 
 namespace {
 
-// The sizes of the effects at size 1 on one class (the thermal drift is sized by the run's
-// energy: its descriptor's nominal rise).
-struct NominalSizes {
-  double coil_time_constant;    // [s]
-  double preyield_travel;       // z_max of the Bouc-Wen element [m]
-  double preyield_fraction;     // share w of the yield force it carries [-]
-  double gas_preload;           // [N]
-  double gas_stiffness;         // [N/m]
-  double sensor_delay;          // [s]
-  double stroke_end_threshold;  // [m]
-  double stroke_end_length;     // [m]
-  double stroke_end_depth;      // [-], capped at 0.95 when sized up
-};
-
-void set_nominal_effects(model::EffectSet& e, const NominalSizes& n) {
-  e.get<model::CoilLagEffect>().time_constant = n.coil_time_constant;
-  auto& h = e.get<model::PreyieldHysteresisEffect>();
-  h.A = 1.0;
-  h.n = 2.0;
-  h.beta = 0.5 / (n.preyield_travel * n.preyield_travel);  // (A / (beta + gamma))^(1/2) = z_max
-  h.gamma = h.beta;
-  h.yield_fraction = n.preyield_fraction;
-  e.get<model::GasSpringEffect>() = {false, n.gas_preload, n.gas_stiffness};
-  e.get<model::SensorDelayEffect>().delay = n.sensor_delay;
-  auto& a = e.get<model::StrokeEndAirEffect>();
-  a.threshold = n.stroke_end_threshold;
-  a.length = n.stroke_end_length;
-  a.depth = n.stroke_end_depth;
+// Every effect's size-1 parameters on the class, from its descriptor (off until a run asks).
+model::EffectSet nominal_effects_of(model::DamperClassId damper) {
+  model::EffectSet effects;
+  for (const model::EffectInfo& e : model::effect_infos()) e.set_nominal(effects, damper);
+  return effects;
 }
 
 }  // namespace
@@ -52,16 +29,7 @@ DamperClass damper_class_50kN() {
   c.force_noise = 25.0;  // 0.05 % of the peak force
   c.random_low = 0.05;
   c.random_high = 1.0;
-  set_nominal_effects(c.nominal_effects, {
-      .coil_time_constant = 20e-3,  // a large coil: L/R of tens of ms
-      .preyield_travel = 0.5e-3,
-      .preyield_fraction = 0.1,
-      .gas_preload = 1500.0,
-      .gas_stiffness = 30e3,
-      .sensor_delay = 5e-3,
-      .stroke_end_threshold = 0.030,  // Section 4.3: 30-40 mm
-      .stroke_end_length = 5e-3,
-      .stroke_end_depth = 0.45});
+  c.nominal_effects = nominal_effects_of(model::DamperClassId::k50kN);
   return c;
 }
 
@@ -84,16 +52,7 @@ DamperClass damper_class_1kN() {
   c.force_noise = 2.0;
   c.random_low = 0.1;
   c.random_high = 5.0;
-  set_nominal_effects(c.nominal_effects, {
-      .coil_time_constant = 1.0 / 190.0,  // Spencer 1997, Dyke's damper
-      .preyield_travel = 0.2e-3,
-      .preyield_fraction = 0.1,
-      .gas_preload = 70.0,      // Spencer's k1 x0 = 71.5 N
-      .gas_stiffness = 500.0,   // Spencer's k1
-      .sensor_delay = 1.5e-3,   // motion up to 5 Hz: a few ms is already a large phase error
-      .stroke_end_threshold = 0.015,
-      .stroke_end_length = 2.5e-3,
-      .stroke_end_depth = 0.45});
+  c.nominal_effects = nominal_effects_of(model::DamperClassId::k1kN);
   return c;
 }
 

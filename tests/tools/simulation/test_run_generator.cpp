@@ -195,3 +195,18 @@ TEST(RunGenerator, EffectRequestsParseNamesAndSizes) {
 }
 
 }  // namespace
+
+// Each candidate's descriptor sizes it for each damper class (its nominal()), off until a run
+// asks; only an effect sized by the run's energy may read the same on both. An effect added
+// without its class sizes fails here.
+TEST(DamperClasses, EveryCandidateCarriesItsOwnSizeOnEachClass) {
+  const auto large = *mrd::tools::find_damper_class("50kN");
+  const auto small = *mrd::tools::find_damper_class("1kN");
+  for (const mrd::model::EffectInfo& e : mrd::model::effect_infos()) {
+    if (!e.named_candidate) continue;
+    EXPECT_FALSE(e.enabled(large.nominal_effects)) << e.name;
+    EXPECT_FALSE(e.enabled(small.nominal_effects)) << e.name;
+    if (e.sized_by_dissipated_energy) continue;
+    EXPECT_NE(e.size_summary(large.nominal_effects), e.size_summary(small.nominal_effects)) << e.name;
+  }
+}
