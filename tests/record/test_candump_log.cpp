@@ -7,7 +7,7 @@
 
 #include "tests/record/input_error_of.hpp"
 #include "record/run_reader.hpp"
-#include "tools/replay/simulated_run.hpp"
+#include "tests/support/simulated_rig_run.hpp"
 
 namespace {
 

@@ -9,7 +9,7 @@
 #include "tests/record/input_error_of.hpp"
 #include "record/run_csv.hpp"
 #include "record/run_csv_writer.hpp"
-#include "tools/replay/simulated_run.hpp"
+#include "tests/support/simulated_rig_run.hpp"
 
 namespace {
 

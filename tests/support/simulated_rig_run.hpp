@@ -12,7 +12,7 @@ namespace mrd::tools {
 // between two levels (so the core walks minor loops), and the plant's force (sim/DamperPlant,
 // the model's own physics, driven by the true velocity). A replay of it with the same model
 // and the recorded velocity must predict the force exactly: the test that replay adds no
-// error of its own. Generator for tests until the simulated rig records runs itself.
+// error of its own. A test fixture: the runs the tools ship come from tools/simulation.
 struct SimulatedRunOptions {
   double duration = 4.0;        // [s]
   double sample_rate = 1000.0;  // [Hz]

@@ -1,4 +1,4 @@
-#include "tools/replay/simulated_run.hpp"
+#include "tests/support/simulated_rig_run.hpp"
 
 #include <cmath>
 
