@@ -23,11 +23,13 @@ mkdir -p "$figures/identify"
 # The plots are inline in report.html; each NAME.gp redraws its NAME.svg.
 rm -f "$figures/identify/"*.svg
 
-if command -v chromium >/dev/null; then
+# Debian's chromium-headless-shell (what scripts/install-deps.sh installs), or a full chromium.
+browser=$(command -v chromium-headless-shell || command -v chromium || true)
+if [[ -n $browser ]]; then
   for pair in "$figures/identify/report.html:$figures/identify-report.png:1100,1500" \
               "$out/residual/report.html:$figures/residual-report.png:1100,2200"; do
     IFS=: read -r page png size <<<"$pair"
-    chromium --headless --no-sandbox --disable-gpu --hide-scrollbars --window-size="$size" \
+    "$browser" --headless --no-sandbox --disable-gpu --hide-scrollbars --window-size="$size" \
       --screenshot="$png" "file://$(realpath "$page")" 2>/dev/null
   done
 fi
