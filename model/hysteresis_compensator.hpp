@@ -32,7 +32,7 @@ struct InductionSearch {
 // nearer end. No heap: each trial integrates a scratch copy of the state.
 //
 // Worst case of one search: 2 + max_iterations integrations of Eq. 10, each over at most the
-// interval's width in current (sub-steps of max_field_step_fraction min(a, k) in H).
+// interval's width in current (sub-steps of max_field_step_fraction min(a (1 - alpha Ms/3a), k) in H).
 class HysteresisCompensator {
  public:
   HysteresisCompensator(const JilesAtherton& prototype, const TargetCurve& target,

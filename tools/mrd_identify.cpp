@@ -168,7 +168,7 @@ struct CurveArguments {
     cmd.add_option("--turns", turns, "N, for B-I files [-]")->check(mrd::cli::finite_in(1.0, 1e6));
     cmd.add_option("--length", length, "Le, for B-I files [m]")->check(mrd::cli::finite_in(1e-6, 10.0));
     cmd.add_option("--step-fraction", step_fraction,
-                   "J-A sub-step as a fraction of min(a, k); larger is faster, less accurate")
+                   "J-A sub-step as a fraction of min(a (1 - alpha Ms/3a), k); larger is faster, less accurate")
         ->check(mrd::cli::finite_in(0.01, 4.0))->capture_default_str();
   }
   BHCurve read() const {
