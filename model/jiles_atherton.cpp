@@ -121,8 +121,8 @@ template <Integrator kMethod, typename Langevin>
 void JilesAtherton::integrate_on_grid(double H_target, double max_step, Langevin& langevin) {
   const double span = H_target - state_.H;
   const double delta = span > 0.0 ? 1.0 : -1.0;
-  // One sub-step is the real-time case (a control period moves H by far less than
-  // min(a, k)); it skips the ceil and the two divisions of the general count.
+  // One sub-step is the real-time case (a control period moves H by far less than the grid);
+  // it skips the ceil and the two divisions of the general count.
   int steps = 1;
   double h = span;
   if (std::fabs(span) > max_step) {
