@@ -8,6 +8,18 @@
 
 namespace mrd::model {
 
+namespace {
+
+// The span of H [A/m] over which Man(H) bends. The mean field steepens it by
+// 1 / (1 - alpha Ms/3a) at its steepest (He = 0), so it bends over a (1 - alpha Ms/3a); past the
+// fold the span is floored at a twentieth of a.
+double anhysteretic_field_scale(const JilesAthertonParams& p) {
+  constexpr double kFoldedFieldScale = 0.05;
+  return p.a * std::max(1.0 - p.mean_field_gain(), kFoldedFieldScale);
+}
+
+}  // namespace
+
 JilesAtherton::JilesAtherton(const JilesAthertonParams& params, const MagneticCircuit& circuit,
                              const JilesAthertonSettings& settings)
     : p_(params),
@@ -20,12 +32,6 @@ JilesAtherton::JilesAtherton(const JilesAthertonParams& params, const MagneticCi
       alpha_c_(params.alpha * params.c),
       k_floor_(params.k * settings.denominator_floor),
       max_field_step_(settings.max_field_step_fraction * std::min(anhysteretic_field_scale(params), params.k)) {}
-
-double JilesAtherton::anhysteretic_field_scale(const JilesAthertonParams& p) {
-  // The mean field steepens Man(H) by 1 / (1 - alpha Ms/3a) at its steepest (He = 0), so the curve
-  // bends over a (1 - alpha Ms/3a) of H. Past the fold it is bounded at a twentieth of a.
-  return p.a * std::max(1.0 - p.mean_field_gain(), kFoldedFieldScale);
-}
 
 double JilesAtherton::B() const { return kMu0 * (state_.H + state_.M); }  // Eq. 8
 

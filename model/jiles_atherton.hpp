@@ -90,13 +90,7 @@ class JilesAtherton {
   [[nodiscard]] const MagneticCircuit& circuit() const { return circuit_; }
   [[nodiscard]] const JilesAthertonSettings& settings() const { return settings_; }
 
-  // The span of H [A/m] over which Man(H) bends: a, shortened by the mean field's gain. The
-  // sub-step grid is max_field_step_fraction of the smaller of it and k.
-  [[nodiscard]] static double anhysteretic_field_scale(const JilesAthertonParams& p);
-
  private:
-  static constexpr double kFoldedFieldScale = 0.05;  // of a, once alpha Ms/3a nears or passes 1
-
   // One stage of Eq. 10 at x = He/a (Eq. 4) and M_irr. The slopes are dM/dH = dM_num * inv and
   // chi_irr = chi_num * inv. They stay apart so that the integrator can scale the numerators
   // while the division runs: between the division and the next stage's x is one multiply-add.
