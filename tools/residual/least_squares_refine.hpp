@@ -15,6 +15,10 @@ namespace mrd::tools {
 // `pool` when given (each is one observer pass), serially otherwise. Stops after
 // `max_evaluations` observer passes, when a step lowers the sum of squares by less than
 // kLeastSquaresTolerance of it, or when no damping finds a lower one.
+// Not Eigen's LevenbergMarquardt, which mrd-identify's polish uses (tools/identification/polish):
+// here a coordinate at its bound leaves the step (the base often rests on a range's edge, where
+// clamping alone stalls the damped step), a point the model refuses is a rejected step rather
+// than a residual, and the Jacobian's columns, an observer pass each, run side by side.
 inline constexpr double kJacobianStep = 1e-3;
 inline constexpr double kLeastSquaresTolerance = 1e-6;
 FittedModel refine_least_squares(const ParameterSpace& space, const FitSeries& series, const Point& start,
