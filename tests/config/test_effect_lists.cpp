@@ -56,7 +56,8 @@ TEST(EffectLists, EveryListThatNamesTheEffectsNamesEachOne) {
       EXPECT_NE(effects_line(study).find(" " + std::string(e.name) + " "), std::string::npos)
           << e.name << ": not in the effects=(...) line of " << study;
   }
-  EXPECT_EQ(candidates, 6);  // the six candidates the studies and docs name today
+  // At least the six the studies and docs name today: a new one adds (tests/layout/add_toy_effect.cmake).
+  EXPECT_GE(candidates, 6);
 }
 
 }  // namespace effect_lists
