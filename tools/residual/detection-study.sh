@@ -4,6 +4,7 @@
 # effects at their nominal size on the 50 kN Table 4 run, each analysed by mrd-residual. Prints
 # one markdown row per run (about 5 min on 2 idle cores). PART: all, singles or pairs.
 # Usage: tools/residual/detection-study.sh [BUILD_DIR] [OUT_DIR] [SEED] [PART]
+# MRD_RESIDUAL_ARGS: more options for every mrd-residual (e.g. --robust-fit).
 set -euo pipefail
 build=${1:-build/release}
 out=${2:-out/detection}
@@ -22,7 +23,8 @@ study() {  # CLASS PROFILE NAME CARRIED...   (CARRIED: NAME:SIZE; none for a cle
   "$simulate" "${args[@]}" > /dev/null
   local start end
   start=$(date +%s.%N)
-  "$residual" "$out/$name.csv" --json "$out/$name.json" > "$out/$name.txt"
+  # shellcheck disable=SC2086  # the extra options are words
+  "$residual" "$out/$name.csv" ${MRD_RESIDUAL_ARGS:-} --json "$out/$name.json" > "$out/$name.txt"
   end=$(date +%s.%N)
   python3 - "$out/$name.json" "$class" "$profile" "$start" "$end" "$@" <<'PY'
 import json, sys

@@ -39,6 +39,7 @@ void append_sample(FitSeries& to, const FitSeries& from, std::size_t i) {
   if (!from.temperature.empty()) to.temperature.push_back(from.temperature[i]);
   if (!from.time.empty()) to.time.push_back(from.time[i]);
   to.role.push_back(from.role[i]);
+  if (!from.after_switch.empty()) to.after_switch.push_back(from.after_switch[i]);
 }
 
 // The filled samples of each gap, with `margin_s` on either side, set aside as kGap spans
@@ -48,6 +49,29 @@ void set_aside_gaps(const record::GapFilledRun& filled, double margin_s, Screeni
   std::vector<ScreenedSpan> gaps;
   for (const auto& [first, last] : filled.gaps) gaps.push_back({first, last, 0.0, 0.0, "time", ScreenReason::kGap});
   set_aside(screening, filled.run, std::move(gaps), margin_s);
+}
+
+// FitSeries::after_switch: the settling span after every step of the coil current. The model
+// starts each run from a demagnetised core at 0 A, so a run that begins energised begins with a
+// step from 0 A (the range counts 0 A for that reason).
+void mark_switch_settling(FitSeries& s, const FitSeriesOptions& options) {
+  s.after_switch.assign(s.size(), 0);
+  for (std::size_t run = 0; run < s.run_starts.size(); ++run) {
+    const std::size_t begin = s.run_starts[run];
+    const std::size_t end = run + 1 < s.run_starts.size() ? s.run_starts[run + 1] : s.size();
+    const auto [lo, hi] = std::minmax_element(s.current.begin() + static_cast<std::ptrdiff_t>(begin),
+                                              s.current.begin() + static_cast<std::ptrdiff_t>(end));
+    const double step = options.switch_step * (std::max(*hi, 0.0) - std::min(*lo, 0.0));
+    if (!(step > 0.0)) continue;
+    std::size_t marked_to = begin;  // marks [.., marked_to) are set
+    for (std::size_t i = begin; i < end; ++i) {
+      const double before = i == begin ? 0.0 : s.current[i - 1];
+      if (!(std::fabs(s.current[i] - before) > step)) continue;
+      std::size_t j = std::max(i, marked_to);
+      for (; j < end && s.time[j] - s.time[i] < options.switch_settling; ++j) s.after_switch[j] = 1;
+      marked_to = j;
+    }
+  }
 }
 
 // A run whose kept displacement spans less than this many times its noise has no motion to
@@ -174,6 +198,7 @@ FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const Fi
     s.screened = options.screen;
   }
   check_enough_kept(s, runs);
+  mark_switch_settling(s, options);
   return s;
 }
 

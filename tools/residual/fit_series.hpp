@@ -34,6 +34,10 @@ struct FitSeries {
   std::vector<std::size_t> run_starts;
   std::vector<std::string> run_names;  // one per run start, for the reports
   std::vector<SampleRole> role;  // one per sample
+  // 1 for a sample within the settling span after a step of the coil current (empty: none). A
+  // transient there is the model's question (a coil lag, eddy currents) that the effect search
+  // answers, not a logger's fault: the robust loss's trigger does not count it (robust_weights.hpp).
+  std::vector<std::uint8_t> after_switch;
   bool screened = false;  // whether the screening ran (gaps are set aside either way)
   // What the screening set aside, per run (in the runs' order; without screening, only runs
   // with logging gaps).
@@ -46,6 +50,7 @@ struct FitSeries {
   std::vector<std::string> notes;  // how the series was made, for the reports
 
   [[nodiscard]] std::size_t size() const { return displacement.size(); }
+  [[nodiscard]] bool settles_after_switch(std::size_t i) const { return i < after_switch.size() && after_switch[i] != 0; }
 };
 
 struct FitSeriesOptions {
@@ -65,6 +70,11 @@ struct FitSeriesOptions {
   // start demagnetised the first ascent is information (the fastest, least-field samples of a
   // sine started at its zero crossing).
   bool settle_start = false;
+  // A step of the coil current within one sample of more than `switch_step` of the run's current
+  // range starts a span of `switch_settling` [s] that the robust loss's trigger leaves out
+  // (FitSeries::after_switch). A coil lag of up to 50 ms settles to 13 % in 0.1 s.
+  double switch_step = 0.1;
+  double switch_settling = 0.1;  // [s]
   ScreeningOptions screening;
 };
 

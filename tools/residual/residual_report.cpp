@@ -49,7 +49,7 @@ std::string screening_summary(const ResidualResult& r) {
 // What the robust loss down-weighted against the final model, at most 5 spans.
 std::string robust_summary(const ResidualResult& r) {
   const RobustWeights& w = r.robust_after;
-  std::string out = format("robust loss: Huber at %g sigma (sigma %.4g N); %.2f%% of the kept samples' weight taken",
+  std::string out = format("robust loss: Huber at %g sigma (sigma %.4g N); %.2f%% of the kept samples' weight taken (outside current switches)",
                            r.robust_tuning, w.sigma, 100.0 * w.down_weighted_share);
   out += !r.robust_fit         ? std::string("; the fits are least squares (--robust-fit not asked)\n")
          : r.robust_refits > 0 ? std::string("; the base identified again under the robust loss (--robust-fit)\n")

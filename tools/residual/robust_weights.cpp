@@ -30,9 +30,10 @@ RobustWeights huber_weights(const FitSeries& series, const std::vector<double>& 
   std::size_t kept = 0;
   for (std::size_t i = 0; i < series.size(); ++i) {
     if (series.role[i] == SampleRole::kExcluded) continue;
-    ++kept;
     const double r = std::fabs(series.force[i] - predicted[i]);
     if (r > knee) out.weight[i] = knee / r;
+    if (series.settles_after_switch(i)) continue;
+    ++kept;
     lost += 1.0 - out.weight[i];
   }
   out.down_weighted_share = kept > 0 ? lost / static_cast<double>(kept) : 0.0;

@@ -24,7 +24,10 @@ struct RobustLoss {
 struct RobustWeights {
   std::vector<double> weight;  // per sample of the series; 1 for excluded samples
   double sigma = 0.0;          // [N], the residual's robust sigma
-  double down_weighted_share = 0.0;  // sum of (1 - w) over the kept samples, over their count
+  // Sum of (1 - w) over the kept samples, over their count, leaving out those settling after a
+  // switch of the coil current (FitSeries::after_switch): a switch-on transient the base cannot
+  // follow is evidence for an effect (a coil lag), and a robust base would hide it.
+  double down_weighted_share = 0.0;
 };
 
 RobustWeights huber_weights(const FitSeries& series, const std::vector<double>& predicted,

@@ -86,6 +86,46 @@ TEST(RobustWeights, AnOffsetSpanWeighsTheKneeOverItsResidualAndIsNamedFirst) {
   EXPECT_GT(spans[0].peak_residual, 30.0);
 }
 
+// A switch-on transient the base cannot follow is evidence for an effect, not a fault: the
+// samples within 0.1 s of a step of the coil current (the run's start counts as a step from
+// 0 A) weigh as the loss says but do not count towards the share that triggers the robust refit.
+TEST(RobustWeights, TheSettlingAfterACurrentSwitchDoesNotTriggerTheRefit) {
+  mrd::record::RecordedRun run;
+  run.name = "switched.csv";
+  run.sample_rate = 1000.0;
+  for (int i = 0; i < 4000; ++i) {
+    const double t = 1e-3 * i;
+    run.time.push_back(t);
+    run.displacement.push_back(0.02 * std::sin(2.0 * M_PI * t));
+    run.velocity.push_back(0.04 * M_PI * std::cos(2.0 * M_PI * t));
+    run.coil.push_back(i < 2000 ? 1.0 : 0.4);  // energised from the start, one switch at 2 s
+    run.force.push_back(0.0);
+  }
+  FitSeriesOptions options;
+  options.screen = false;
+  FitSeries s = make_fit_series({run}, options);
+  ASSERT_EQ(s.after_switch.size(), s.size());
+  const auto marked = [&](std::size_t from, std::size_t to) {
+    return std::count(s.after_switch.begin() + static_cast<std::ptrdiff_t>(from),
+                      s.after_switch.begin() + static_cast<std::ptrdiff_t>(to), 1);
+  };
+  EXPECT_EQ(marked(0, 100), 100);      // the first 0.1 s: the core starts at 0 A
+  EXPECT_EQ(marked(100, 2000), 0);
+  EXPECT_EQ(marked(2000, 2100), 100);  // 0.1 s after the switch
+  EXPECT_EQ(marked(2100, 4000), 0);
+  // Noise, and a transient of 40 sigmas over the 50 ms after each switch.
+  std::mt19937 rng(5);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  for (std::size_t i = 0; i < s.size(); ++i) s.force[i] = noise(rng) + (i % 2000 < 50 ? 40.0 : 0.0);
+  const std::vector<double> zero(s.size(), 0.0);
+  const RobustWeights at_switches = huber_weights(s, zero);
+  EXPECT_LT(at_switches.down_weighted_share, RobustLoss{}.refit_share);
+  EXPECT_LT(at_switches.weight[10], 0.1);  // the loss still weighs them
+  // The same transient where no current switched is a fault: it triggers.
+  for (std::size_t i = 0; i < s.size(); ++i) s.force[i] = noise(rng) + (i >= 1000 && i < 1100 ? 40.0 : 0.0);
+  EXPECT_GT(huber_weights(s, zero).down_weighted_share, 10.0 * RobustLoss{}.refit_share);
+}
+
 // Each loss's weight is rho'(r) / 2r (by central differences), rho reads r^2 well inside the
 // knee, and beyond it Huber's grows linearly and Cauchy's logarithmically.
 TEST(FitLoss, WeightsAreTheLossSlopeOverTwiceTheResidual) {
@@ -127,6 +167,7 @@ TEST(RobustFit, AZeroJumpNoRuleNamesMovesTheFitLittleAndIsReported) {
   options.threads = 2;
   options.discover = false;
   ResidualOptions squares = options;
+  squares.robust_fit = false;
   options.robust_fit = true;
   const ResidualResult reference = find_missing_effects(make_fit_series({clean}, {}), options);
   const ResidualResult robust = find_missing_effects(make_fit_series({faulted}, {}), options);
