@@ -77,7 +77,10 @@ SpencerBoucWen::Rates SpencerBoucWen::rates(const SpencerBoucWenState& s, double
   return {ydot, zdot, -p_.eta * (s.u - voltage)};
 }
 
-double SpencerBoucWen::step(double x, double xdot, double voltage) {
+double SpencerBoucWen::step(const SpencerBoucWenInput& sample) {
+  const double x = sample.displacement;
+  const double xdot = sample.velocity;
+  const double voltage = sample.command_voltage;
   if (!primed_) reset(x);
   const double x_start = last_x_;
   const double v_start = last_xdot_;

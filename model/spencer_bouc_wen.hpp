@@ -48,6 +48,13 @@ struct SpencerBoucWenState {
   double u = 0.0;  // filtered voltage [V]
 };
 
+// One sample of the rig as Spencer's model reads it: the command voltage, not a coil current.
+struct SpencerBoucWenInput {
+  double displacement = 0.0;     // x [m]
+  double velocity = 0.0;         // x' [m/s]
+  double command_voltage = 0.0;  // v [V]
+};
+
 // One sample per call. Within a period x and x' are linear between the last sample and this
 // one and the voltage is held (the driver's command is a zero-order hold). The state (y, z, u)
 // is integrated with classical RK4 over sub-steps short enough for the stiff z equation: its
@@ -58,8 +65,8 @@ class SpencerBoucWen {
  public:
   SpencerBoucWen(const SpencerBoucWenParams& params, double sample_period, int max_substeps = 512);
 
-  // x [m], x' [m/s] and the command voltage v [V] at this sample; returns the force [N].
-  double step(double displacement, double velocity, double voltage);
+  // Returns the force [N] at this sample.
+  double step(const SpencerBoucWenInput& sample);
   [[nodiscard]] const SpencerBoucWenState& state() const { return state_; }
   // Starts at rest at `displacement`: y = x (k0 relaxed), z = 0, u = 0.
   void reset(double displacement = 0.0);

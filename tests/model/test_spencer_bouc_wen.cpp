@@ -35,13 +35,13 @@ TEST(SpencerBoucWen, PublishedParametersInSi) {
 // By hand: at rest (x = y = 0, z = 0, y' = 0) only the accumulator acts, F = k1 (0 - x0).
 TEST(SpencerBoucWen, AtRestTheForceIsTheAccumulatorPreload) {
   SpencerBoucWen m(SpencerBoucWenParams::dyke_prototype(), kT);
-  for (int k = 0; k < 100; ++k) EXPECT_NEAR(m.step(0.0, 0.0, 2.25), -500.0 * 0.143, 1e-9);
+  for (int k = 0; k < 100; ++k) EXPECT_NEAR(m.step({.displacement = 0.0, .velocity = 0.0, .command_voltage = 2.25}), -500.0 * 0.143, 1e-9);
 }
 
 TEST(SpencerBoucWen, VoltageFilterHasTimeConstantOneOverEta) {
   SpencerBoucWen m(SpencerBoucWenParams::dyke_prototype(), 1e-4);
   const int n = static_cast<int>(std::lround(1.0 / 190.0 / 1e-4));  // 53 steps ~ 1/eta
-  for (int k = 0; k < n; ++k) m.step(0.0, 0.0, 2.0);
+  for (int k = 0; k < n; ++k) m.step({.displacement = 0.0, .velocity = 0.0, .command_voltage = 2.0});
   EXPECT_NEAR(m.state().u, 2.0 * (1.0 - std::exp(-190.0 * n * 1e-4)), 1e-9);
 }
 
@@ -61,7 +61,7 @@ SineResult run_sine(double voltage) {
   for (int k = 0; k < 4 * per_cycle; ++k) {
     const double t = k * kT;
     const double v = 0.015 * w * std::cos(w * t);
-    force.push_back(m.step(0.015 * std::sin(w * t), v, voltage));
+    force.push_back(m.step({.displacement = 0.015 * std::sin(w * t), .velocity = v, .command_voltage = voltage}));
     if (k >= 2 * per_cycle) {
       r.peak = std::max(r.peak, std::fabs(force.back()));
       r.dissipated += force.back() * v * kT;
@@ -97,7 +97,7 @@ TEST(SpencerBoucWen, ForceStaysBoundedUnderRandomMotionAndTelegraphVoltage) {
     v = 0.98 * v + accel(rng) * kT;  // a random velocity of about 0.1 m/s RMS
     x = 0.999 * x + v * kT;
     if (flip(rng) < kT / 0.02) voltage = voltage > 0.0 ? 0.0 : 2.25;  // 20 ms mean dwell
-    const double f = m.step(x, v, voltage);
+    const double f = m.step({.displacement = x, .velocity = v, .command_voltage = voltage});
     ASSERT_TRUE(std::isfinite(f)) << k;
     peak = std::max(peak, std::fabs(f));
   }

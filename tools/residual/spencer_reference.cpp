@@ -14,7 +14,7 @@ std::vector<double> spencer_dyke_prediction(const record::RecordedRun& run, cons
   spencer.reset(run.displacement.front());
   std::vector<double> force(run.size());
   for (std::size_t i = 0; i < run.size(); ++i)
-    force[i] = spencer.step(run.displacement[i], series.velocity[i], run.coil[i]);
+    force[i] = spencer.step({.displacement = run.displacement[i], .velocity = series.velocity[i], .command_voltage = run.coil[i]});
   return force;
 }
 
