@@ -41,4 +41,10 @@ double max_B_difference(const model::JilesAthertonParams& params, double H_max, 
 double integrator_error(const model::JilesAthertonParams& params, double H_max, int n,
                         const model::JilesAthertonSettings& settings, double refinement = 100.0);
 
+// mrd-ja-scan's two tables on stdout: the loops at `points` log-spaced amplitudes from `from`
+// to `to` [A/m], and (--integrator-error) RK4's and Heun's error and the tabulated Langevin
+// function's change at three sub-step fractions, two amplitudes and two sample counts.
+void print_loop_scan(const model::JilesAthertonParams& p, double from, double to, int points);
+void print_integrator_errors(const model::JilesAthertonParams& p);
+
 }  // namespace mrd::tools

@@ -2,7 +2,6 @@
 // of field amplitudes and reports, per amplitude, whether Eq. 10 ran away (its denominator
 // guard fired), the loop's tip, remanence, closure and symmetry.
 #include <CLI/CLI.hpp>
-#include <cmath>
 #include <cstdio>
 
 #include "common/cli/command_line.hpp"
@@ -22,8 +21,10 @@ int main(int argc, char** argv) {
   app.add_option("--alpha", p.alpha)->capture_default_str();
   app.add_option("--k", p.k, "[A/m]")->capture_default_str();
   app.add_option("--c", p.c)->capture_default_str();
-  app.add_option("--from", H_from, "smallest amplitude [A/m]")->capture_default_str();
-  app.add_option("--to", H_to, "largest amplitude [A/m]")->capture_default_str();
+  app.add_option("--from", H_from, "smallest amplitude [A/m]")->check(mrd::cli::finite_in(1e-6, 1e9))
+      ->capture_default_str();
+  app.add_option("--to", H_to, "largest amplitude [A/m]")->check(mrd::cli::finite_in(1e-6, 1e9))
+      ->capture_default_str();
   app.add_option("--points", points, "amplitudes, log-spaced")->check(CLI::Range(2, 1000))
       ->capture_default_str();
   bool integrator = false;
@@ -40,41 +41,9 @@ int main(int argc, char** argv) {
   }
 
   if (integrator) {
-    std::printf("max |B - B_ref| [T], 2 cycles of Hmax sin, reference = RK4 at 1/100 sub-step\n"
-                "with the exact Langevin function. L table: max |B| change of the tabulated\n"
-                "Langevin function (the default) against the exact one, both RK4.\n");
-    std::printf("%10s %8s %8s %12s %12s %12s\n", "Hmax", "samples", "fraction", "RK4", "Heun",
-                "L table");
-    for (const double H_max : {3e3, 2e4}) {
-      for (const int n : {50, 1000}) {
-        for (const double fraction : {1.0, 0.25, 0.05}) {
-          mrd::model::JilesAthertonSettings rk4, heun, exact;
-          rk4.max_field_step_fraction = heun.max_field_step_fraction = fraction;
-          exact.max_field_step_fraction = fraction;
-          heun.integrator = mrd::model::Integrator::kHeun;
-          exact.langevin = mrd::model::LangevinEvaluation::kExact;
-          std::printf("%10g %8d %8g %12.3g %12.3g %12.3g\n", H_max, n, fraction,
-                      mrd::tools::integrator_error(p, H_max, n, rk4),
-                      mrd::tools::integrator_error(p, H_max, n, heun),
-                      mrd::tools::max_B_difference(p, H_max, n, rk4, exact));
-        }
-      }
-    }
-    return 0;
-  }
-  std::vector<double> amplitudes;
-  for (int i = 0; i < points; ++i) {
-    amplitudes.push_back(H_from * std::pow(H_to / H_from, static_cast<double>(i) / (points - 1)));
-  }
-  std::printf("Ms=%g a=%g alpha=%g k=%g c=%g  alpha*Ms/(3a)=%.3f\n", p.Ms, p.a, p.alpha, p.k, p.c,
-              p.mean_field_gain());
-  std::printf("%12s %10s %12s %12s %12s %8s %s\n", "Hmax[A/m]", "Bmax[T]", "Br[T]",
-              "closure[T]", "symmetry[T]", "guards", "verdict");
-  for (const auto& row : mrd::tools::scan_loops(p, amplitudes)) {
-    std::printf("%12.4g %10.4f %12.4g %12.3g %12.3g %8llu %s\n", row.H_max, row.B_max,
-                row.remanence, row.closure_error, row.symmetry_error,
-                static_cast<unsigned long long>(row.guard_events),
-                row.physical() ? "physical" : "RUNAWAY");
+    mrd::tools::print_integrator_errors(p);
+  } else {
+    mrd::tools::print_loop_scan(p, H_from, H_to, points);
   }
   return 0;
 }

@@ -10,14 +10,18 @@ namespace mrd::model {
 
 // What an effect's descriptor holds (one struct per effect, next to its model: CoilLagEffect,
 // GasSpringEffect, ...). The config, the observer's effect chain, the residual search, the
-// simulator and the reports loop over the descriptors listed in effect_set.hpp, so adding an
-// effect is its model file with its descriptor, one line in that list, and its tests
-// (docs/ARCHITECTURE.md, "Adding an effect"). A descriptor derives from EffectTraitsBase and
-// overrides what applies to it:
+// simulator and the reports loop over the descriptors listed in effect_set.hpp: the code of an
+// effect is its model file with its descriptor and one line in that list; the lists and documents
+// that name every effect are in docs/ARCHITECTURE.md, "Adding an effect" (16 files in all). A
+// descriptor derives from EffectTraitsBase and overrides what applies to it:
 //   kName               the effect's name in configs ([damper.effects.<name>]), tools and reports
 //   Params, Element     its parameters, and the run-time element the observer steps
 //   kChangesInduction   whether it changes B for a given coil current (fits that hold B
 //                       fixed cannot share a B trace with it)
+//   kNamedCandidate     whether mrd-residual searches for it by name (learned terms: no)
+//   kSeparatedBy, kTermForms
+//                       the run that tells it apart, and the library terms it resembles
+//                       (the ambiguity report and the discovery)
 //   fields(p, v)        its TOML keys, v(key, field&) each, in file order
 //   kSearch, apply, coordinates
 //                       the parameters a run can identify, as search coordinates whose
@@ -30,7 +34,7 @@ namespace mrd::model {
 //   implausible         why a fitted instance is not a physical one, nullopt when it is
 //   report(p, v)        the fitted values for reports, v(json_key_with_unit, value) each
 //   nominal(c)          its parameters at size 1 on each damper class the simulator makes
-//   resize, size_summary
+//   resize, size_summary, kSizedByDissipatedEnergy
 //                       what "size" means for runs the simulator makes (mrd-simulate-run)
 
 // What a recorded run's scales say about the ranges worth searching.
