@@ -7,6 +7,8 @@
 #include <limits>
 #include <sstream>
 
+#include "common/file_error.hpp"
+
 namespace mrd::config {
 
 std::string ConfigMessage::to_string() const {
@@ -248,9 +250,14 @@ std::optional<toml::table> parse_config_text(std::string_view text, const std::s
 }
 
 std::optional<std::string> read_config_file(const std::string& path, ConfigMessages& errors) {
-  std::ifstream file(path);
-  if (!file) {
-    errors.push_back({path, 0, "", "cannot open the file", false});
+  std::string why;
+  std::ifstream file;
+  if (readable_file(path, why)) {
+    file.open(path);
+    if (!file) why = open_failure_reason(path);
+  }
+  if (!why.empty()) {
+    errors.push_back({path, 0, "", "cannot open the file: " + why, false});
     return std::nullopt;
   }
   std::ostringstream text;

@@ -147,7 +147,7 @@ void TomlReader::get_enum(std::string_view path, E& value,
 // The parsed text, or nullopt with the syntax error (file:line, column) added to `errors`.
 std::optional<toml::table> parse_config_text(std::string_view text, const std::string& file_name,
                                              ConfigMessages& errors);
-// The file's text, or nullopt with "cannot open the file" added to `errors`.
+// The file's text, or nullopt with "cannot open the file: <why>" added to `errors`.
 std::optional<std::string> read_config_file(const std::string& path, ConfigMessages& errors);
 // `messages` in file order (those without a line last), split into errors and warnings.
 void file_messages(ConfigMessages& messages, ConfigMessages& errors, ConfigMessages& warnings);

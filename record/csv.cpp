@@ -1,8 +1,11 @@
 #include "record/csv.hpp"
 
+#include "common/file_error.hpp"
 #include "common/time_origin.hpp"
 
 #include <cctype>
+#include <cerrno>
+#include <cstring>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -57,15 +60,20 @@ std::optional<std::string_view> next_data_line(LineReader& lines, std::optional<
   return line;
 }
 
-bool write_text_file(const std::string& path, const std::string& text) {
+std::string write_text_file(const std::string& path, const std::string& text) {
+  errno = 0;
   std::ofstream out(path);
+  if (!out) return "cannot write " + path + ": " + open_failure_reason(path);
   out << text;
-  return static_cast<bool>(out);
+  out.close();
+  if (!out) return "cannot write " + path + ": " + (errno != 0 ? std::strerror(errno) : "the write failed");
+  return {};
 }
 
 std::string read_text_file(const std::string& path) {
+  if (std::string why; !readable_file(path, why)) throw InputError(path + ": cannot open the file: " + why);
   std::ifstream file(path, std::ios::binary);
-  if (!file) throw InputError(path + ": cannot open the file");
+  if (!file) throw InputError(path + ": cannot open the file: " + open_failure_reason(path));
   std::string text;
   std::vector<char> chunk(std::size_t{64} << 10);
   std::size_t line = 1;

@@ -44,13 +44,14 @@ class LineReader {
 // one, throws InputError naming the file and the line.
 std::optional<std::string_view> next_data_line(LineReader& lines, std::optional<double>& origin);
 
-// The whole file as text. Throws InputError "path: cannot open the file", and
+// The whole file as text. Throws InputError "path: cannot open the file: <why>" (the system's
+// reason, or that it is a folder), and
 // line_too_long_message as soon as a line passes kMaxLineLength, so a file with a 2 GB line
 // costs 1 MiB of memory, not 2 GB.
 std::string read_text_file(const std::string& path);
 
-// Writes `text` to `path`, replacing the file; false when it cannot.
-bool write_text_file(const std::string& path, const std::string& text);
+// Writes `text` to `path`, replacing the file: empty, or "cannot write PATH: <the system's reason>".
+[[nodiscard]] std::string write_text_file(const std::string& path, const std::string& text);
 
 // What separates the fields of a line: one character, or runs of blanks (spaces and tabs).
 enum class Delimiter : char { kComma = ',', kSemicolon = ';', kTab = '\t', kBlanks = ' ' };

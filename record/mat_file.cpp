@@ -9,6 +9,7 @@
 #include <iterator>
 #include <mutex>
 
+#include "common/file_error.hpp"
 #include "record/csv.hpp"
 #include "record/mat_v5_check.hpp"
 
@@ -87,8 +88,9 @@ struct MatFile::Handle {
 MatFile::MatFile(const std::string& path) : path_(path), handle_(std::make_unique<Handle>()) {
   quiet_libraries();
   {
+    if (std::string why; !readable_file(path, why)) throw InputError(path + ": cannot open the file: " + why);
     std::ifstream file(path, std::ios::binary);
-    if (!file) throw InputError(path + ": cannot open the file");
+    if (!file) throw InputError(path + ": cannot open the file: " + open_failure_reason(path));
     const std::string bytes{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
     if (const std::string why = check_mat_v5_structure(bytes, kMaxMatElements * sizeof(double) + (1 << 20));
         !why.empty())

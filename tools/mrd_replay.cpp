@@ -80,9 +80,11 @@ TimedReplay timed_replay(const mrd::record::RecordedRun& run, const ReplayOption
 // Every output asked for after the summary, each tried whatever the others did; kIo when one failed.
 int write_outputs(const Arguments& a, const ReplayContext& context, int argc, char** argv) {
   int status = mrd::cli::kOk;
-  if (!a.json_path.empty() && !mrd::record::write_text_file(a.json_path, replay_json(context))) {
-    std::fprintf(stderr, "mrd-replay: cannot write %s\n", a.json_path.c_str());
-    status = mrd::cli::kIo;
+  if (!a.json_path.empty()) {
+    if (const std::string why = mrd::record::write_text_file(a.json_path, replay_json(context)); !why.empty()) {
+      std::fprintf(stderr, "mrd-replay: %s\n", why.c_str());
+      status = mrd::cli::kIo;
+    }
   }
   if (!a.csv_path.empty()) {
     if (const auto why = write_replay_csv(context, a.csv_path); !why.empty()) {
@@ -117,10 +119,13 @@ int replay_run(const Arguments& a, const mrd::config::LoadedConfig& config, int 
   if (a.zero_phase_option->count() > 0) options.zero_phase_cutoff = a.zero_phase;
 
   const mrd::record::RecordedRun run = mrd::record::read_recorded_run(a.run_path, read);
-  if (!a.candump_path.empty() &&
-      !mrd::record::write_text_file(a.candump_path, mrd::record::format_candump(run, options.amps_per_volt, read.can))) {
-    std::fprintf(stderr, "mrd-replay: cannot write %s\n", a.candump_path.c_str());
-    return mrd::cli::kIo;
+  if (!a.candump_path.empty()) {
+    const std::string why =
+        mrd::record::write_text_file(a.candump_path, mrd::record::format_candump(run, options.amps_per_volt, read.can));
+    if (!why.empty()) {
+      std::fprintf(stderr, "mrd-replay: %s\n", why.c_str());
+      return mrd::cli::kIo;
+    }
   }
   const TimedReplay timed = timed_replay(run, options);
   const ReplayContext context{run, options, timed.result, timed.wall_seconds, timed.cpu_seconds};

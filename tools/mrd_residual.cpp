@@ -174,8 +174,8 @@ int write_config(const Arguments& a, const ResidualResult& result) {
   const std::string& config_path = a.run_options.config_path();
   const std::string text = config_path.empty() ? std::string(mrd::config::default_config_text())
                                                : mrd::record::read_text_file(config_path);
-  if (!mrd::record::write_text_file(a.config_out, updated_config(text, result))) {
-    std::fprintf(stderr, "mrd-residual: cannot write %s\n", a.config_out.c_str());
+  if (const std::string why = mrd::record::write_text_file(a.config_out, updated_config(text, result)); !why.empty()) {
+    std::fprintf(stderr, "mrd-residual: %s\n", why.c_str());
     return mrd::cli::kIo;
   }
   return mrd::cli::kOk;
@@ -214,9 +214,12 @@ Fit summarise(const Arguments& a, const Analysis& analysis) {
 // Every output asked for, each tried whatever the others did; the status of the last that failed.
 int write_outputs(const Arguments& a, const Analysis& analysis, const Fit& fit, int argc, char** argv) {
   int status = mrd::cli::kOk;
-  if (!a.json_path.empty() && !mrd::record::write_text_file(a.json_path, residual_json(analysis.result, &fit.figures))) {
-    std::fprintf(stderr, "mrd-residual: cannot write %s\n", a.json_path.c_str());
-    status = mrd::cli::kIo;
+  if (!a.json_path.empty()) {
+    if (const std::string why = mrd::record::write_text_file(a.json_path, residual_json(analysis.result, &fit.figures));
+        !why.empty()) {
+      std::fprintf(stderr, "mrd-residual: %s\n", why.c_str());
+      status = mrd::cli::kIo;
+    }
   }
   if (!a.config_out.empty()) {
     if (const int written = write_config(a, analysis.result); written != mrd::cli::kOk) status = written;

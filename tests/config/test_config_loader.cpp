@@ -391,7 +391,7 @@ TEST(ConfigBad, BusThreadPriorityStaysBelowTheLoop) {
 TEST(ConfigFile, MissingFileAndFileNameInMessages) {
   const LoadedConfig missing = load_config_file("/nonexistent/mrd.toml");
   ASSERT_EQ(missing.errors.size(), 1u);
-  EXPECT_EQ(missing.errors[0].to_string(), "/nonexistent/mrd.toml: cannot open the file");
+  EXPECT_EQ(missing.errors[0].to_string(), "/nonexistent/mrd.toml: cannot open the file: No such file or directory");
 
   const auto path = std::filesystem::temp_directory_path() / "mrd_config_test.toml";
   std::ofstream(path) << "[backends]\nlvdt = \"mock\"\ndriver = \"mock\"\nlines = \"mock\"\n[loop]\nrate = 0.5\n";

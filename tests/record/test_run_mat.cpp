@@ -229,7 +229,7 @@ TEST(RunFormatsErrors, ATagLargerThanItsFileIsRefusedBeforeLibmatioAllocatesIt) 
   bad.replace(dims_tag + 4, 4, "\xff\xff\xff\xff");
   EXPECT_EQ(mrd::record::check_mat_v5_structure(bad, 1 << 20),
             "element at byte 128: a rank of 1073741823 (1 to 32 fit)");
-  ASSERT_TRUE(mrd::record::write_text_file(path, bad));
+  ASSERT_EQ(mrd::record::write_text_file(path, bad), "");
   EXPECT_EQ(input_error_of([&] { (void)mrd::record::read_recorded_run(path); }),
             path + ": a damaged .mat file: element at byte 128: a rank of 1073741823 (1 to 32 fit)");
 
@@ -258,7 +258,7 @@ TEST(RunFormatsErrors, NotAMatFileThoughItsHeaderSaysSo) {
   const std::string path = scratch("fake.mat").string();
   std::string bytes = "MATLAB 5.0 MAT-file, written by hand";
   bytes.resize(200, '\x07');
-  ASSERT_TRUE(mrd::record::write_text_file(path, bytes));
+  ASSERT_EQ(mrd::record::write_text_file(path, bytes), "");
   const std::string error = input_error_of([&] { (void)mrd::record::read_recorded_run(path); });
   EXPECT_EQ(error.rfind(path + ": ", 0), 0u) << error;
   EXPECT_EQ(input_error_of([&] { (void)mrd::record::parse_recorded_run(bytes, "mem.mat"); }),

@@ -100,7 +100,7 @@ std::string replay_summary(const ReplayContext& c) {
         f->rms, f->max, f->mean, f->nrmse, f->measured_range, replay_fit_percent(c));
     if (const std::string hint = unfitted_hint(c); !hint.empty()) out += hint + "\n";
   } else {
-    out += "force error: the run has no measured force\n";
+    out += "force: none measured in this run, so no force error\n";
   }
   const Range predicted = range_of(c.result.trace.predicted_force);
   const Range command = range_of(c.result.trace.command_current);

@@ -1,7 +1,9 @@
 // mrd-simulate-run: a recorded-run CSV from the simulated damper, optionally carrying effects the
 // run does not declare (the test material of the residual analysis, docs/CLOSING-THE-LOOP.md).
 #include <CLI/CLI.hpp>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -10,6 +12,7 @@
 
 #include "common/cli/command_line.hpp"
 #include "model/effects/effect_set.hpp"
+#include "record/csv.hpp"
 #include "tools/simulation/run_csv.hpp"
 #include "tools/simulation/run_generator.hpp"
 
@@ -54,18 +57,26 @@ void add_options(CLI::App& app, Arguments& a) {
       ->check(CLI::IsMember({"table4", "paper-sines", "sine", "random", "telegraph"}))
       ->capture_default_str();
   app.add_option("--damper", a.damper, "damper class")->check(CLI::IsMember({"50kN", "1kN"}))->capture_default_str();
-  app.add_option("--rate", options.rate, "sample rate [Hz]")->capture_default_str();
+  app.add_option("--rate", options.rate, "sample rate [Hz]")->check(mrd::cli::finite_in(1.0, 1e6))->capture_default_str();
   app.add_option("--duration", options.duration,
-                 "seconds; default 5 cycles (sines), 30 s (random, telegraph), the whole sequence");
-  app.add_option("--frequency", options.frequency, "sine frequency [Hz]")->capture_default_str();
-  app.add_option("--amplitude-mm", a.amplitude_mm, "sine amplitude or random peak [mm]; default the class's");
+                 "seconds; default 5 cycles (sines), 30 s (random, telegraph), the whole sequence")
+      ->check(mrd::cli::finite_in(0.01, 86400.0));
+  app.add_option("--frequency", options.frequency, "sine frequency [Hz]")->check(mrd::cli::finite_in(1e-3, 1000.0))
+      ->capture_default_str();
+  app.add_option("--amplitude-mm", a.amplitude_mm, "sine amplitude or random peak [mm]; default the class's")
+      ->check(mrd::cli::finite_in(1e-3, 1000.0));
   app.add_option("--current", options.current,
                  "constant current, or the telegraph's high level [A]; default half (telegraph: all) "
-                 "of the class's maximum");
-  app.add_option("--cycles", options.cycles, "paper-sines: cycles per frequency")->capture_default_str();
-  app.add_option("--dwell", options.dwell, "telegraph mean dwell [s]")->capture_default_str();
-  app.add_option("--noise-um", a.noise_um, "LVDT noise RMS [um]; default the class's");
-  app.add_option("--force-noise-n", options.force_noise, "load-cell noise RMS [N]; default the class's");
+                 "of the class's maximum")
+      ->check(mrd::cli::finite_in(0.0, 100.0));
+  app.add_option("--cycles", options.cycles, "paper-sines: cycles per frequency")->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  app.add_option("--dwell", options.dwell, "telegraph mean dwell [s]")->check(mrd::cli::finite_in(1e-4, 100.0))
+      ->capture_default_str();
+  app.add_option("--noise-um", a.noise_um, "LVDT noise RMS [um]; default the class's")
+      ->check(mrd::cli::finite_in(0.0, 1e5));
+  app.add_option("--force-noise-n", options.force_noise, "load-cell noise RMS [N]; default the class's")
+      ->check(mrd::cli::finite_in(0.0, 1e7));
   app.add_option("--seed", options.seed, "noise, random motion and telegraph seed")->capture_default_str();
   // Checked while parsing, so a misspelt effect is a usage error that names the option.
   const CLI::Validator effect_request(
@@ -119,12 +130,10 @@ std::optional<std::string> write_outputs(const mrd::tools::SimulatedRun& run, co
   std::ofstream file(a.csv_path);
   mrd::tools::write_run_csv(file, run, a.columns);
   file.close();
-  if (!file) return "cannot write " + a.csv_path;
+  if (!file) return "cannot write " + a.csv_path + ": " + std::strerror(errno);
   if (!a.manifest.empty()) {
-    std::ofstream json(a.manifest);
-    json << mrd::tools::run_manifest_json(run);
-    json.close();
-    if (!json) return "cannot write " + a.manifest;
+    if (std::string why = mrd::record::write_text_file(a.manifest, mrd::tools::run_manifest_json(run)); !why.empty())
+      return why;
   }
   return std::nullopt;
 }
@@ -166,6 +175,7 @@ int main(int argc, char** argv) {
     a.csv_path = (std::filesystem::path(a.out_dir) / "run.csv").string();
     if (a.manifest.empty()) a.manifest = (std::filesystem::path(a.out_dir) / "manifest.json").string();
   }
+  if (!mrd::cli::check_outputs("mrd-simulate-run", {&a.csv_path, &a.manifest}, {})) return mrd::cli::kIo;
   const mrd::tools::SimulatedRun run = mrd::tools::simulate_run(a.options);
   if (const auto error = write_outputs(run, a)) return fail(*error, mrd::cli::kIo);
   print_summary(run, a);
