@@ -37,6 +37,17 @@ std::vector<double> kept_residual(const ForceFitTraces& t, RunSpan span) { retur
 
 std::vector<double> kept_residual(const ForceFitTraces& t) { return kept_residual(t, {0, t.measured.size()}); }
 
+// RMS over the range of the measured force on the span's kept samples (mrd-replay's nrmse); NaN for a flat force.
+double nrmse_of(const ForceFitTraces& t, RunSpan span, double rms) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (std::size_t i = span.from; i < span.to; ++i) {
+    if (!t.keep.empty() && !t.keep[i]) continue;
+    lo = std::min(lo, t.measured[i]);
+    hi = std::max(hi, t.measured[i]);
+  }
+  return hi > lo ? rms / (hi - lo) : std::numeric_limits<double>::quiet_NaN();
+}
+
 double rms_of(const std::vector<double>& e, double& max_abs) {
   double sum = 0.0;
   for (const double x : e) {
@@ -147,6 +158,7 @@ ForceFitFigures force_fit_figures(const ForceFitTraces& t, std::size_t lags) {
   f.baseline_fit_percent = t.baseline.empty() ? std::numeric_limits<double>::quiet_NaN()
                                               : nrmse_fit_percent(t.measured, t.baseline, t.keep);
   f.rms_N = rms_of(kept_residual(t), f.max_N);
+  f.nrmse = nrmse_of(t, {0, t.measured.size()}, f.rms_N);
   f.reference_fit_percent = f.reference_rms_N = std::numeric_limits<double>::quiet_NaN();
   if (t.reference.size() == t.measured.size()) {
     f.reference_fit_percent = nrmse_fit_percent(t.measured, t.reference, t.keep);
@@ -174,6 +186,7 @@ ForceFitFigures force_fit_figures(const ForceFitTraces& t, std::size_t lags) {
     const std::vector<double> e = kept_residual(t, span);
     run.samples = e.size();
     run.rms_N = rms_of(e, run.max_N);
+    run.nrmse = nrmse_of(t, span, run.rms_N);
     run.lag_step_s = step_of(t, span);
     run.acf_outside = share_outside(autocorrelation(e, lags), autocorrelation_bound_95(e.size()));
     // One lag step for all only when the runs share a rate (within 1 %).
@@ -185,7 +198,7 @@ ForceFitFigures force_fit_figures(const ForceFitTraces& t, std::size_t lags) {
 }
 
 Json force_fit_json(const ForceFitFigures& f) {
-  Json out = {{"fit_percent", f.fit_percent},   {"rms_N", f.rms_N},
+  Json out = {{"fit_percent", f.fit_percent},   {"nrmse", f.nrmse},   {"rms_N", f.rms_N},
               {"max_N", f.max_N},               {"baseline_fit_percent", f.baseline_fit_percent},
               {"acf_lags", f.lags},             {"acf_lag_step_s", f.lag_step_s},
               {"acf_bound", f.acf_bound},       {"acf_outside_fraction", f.acf_outside}};
@@ -201,7 +214,7 @@ Json force_fit_json(const ForceFitFigures& f) {
   if (f.runs.empty()) return out;
   Json runs = Json::array();
   for (const RunFitFigures& r : f.runs)
-    runs.push_back({{"run", r.name}, {"samples", r.samples}, {"fit_percent", r.fit_percent}, {"rms_N", r.rms_N},
+    runs.push_back({{"run", r.name}, {"samples", r.samples}, {"fit_percent", r.fit_percent}, {"nrmse", r.nrmse}, {"rms_N", r.rms_N},
                     {"max_N", r.max_N}, {"acf_lag_step_s", r.lag_step_s}, {"acf_outside_fraction", r.acf_outside}});
   out["runs"] = runs;
   return out;
@@ -212,8 +225,8 @@ std::string per_run_text(const ForceFitFigures& f) {
   if (f.runs.empty()) return out;
   out += "per run (final model, kept samples):\n";
   for (const RunFitFigures& r : f.runs)
-    out += format("  %-40s fit %6.2f %%  RMS %9.4g N  max %9.4g N  %7zu samples at %.4g ms\n", r.name.c_str(), r.fit_percent,
-                  r.rms_N, r.max_N, r.samples, 1e3 * r.lag_step_s);
+    out += format("  %-40s fit %6.2f %%  NRMSE %6.4f  RMS %9.4g N  max %9.4g N  %7zu samples at %.4g ms\n", r.name.c_str(),
+                  r.fit_percent, r.nrmse, r.rms_N, r.max_N, r.samples, 1e3 * r.lag_step_s);
   return out;
 }
 
@@ -319,6 +332,7 @@ namespace {
 void add_fit_tables(HtmlReport& report, const ForceFitTraces& t, const ForceFitFigures& f) {
   std::vector<ReportFigure> rows = {
       {"fit, 100 (1 - |y - yhat| / |y - mean(y)|)", "fit.fit_percent", f.fit_percent, "%"},
+      {"NRMSE, RMS / the measured force's range", "fit.nrmse", f.nrmse, "-"},
       {"RMS of measured - predicted", "fit.rms_N", f.rms_N, "N"},
       {"max |measured - predicted|", "fit.max_N", f.max_N, "N"},
   };
@@ -331,10 +345,10 @@ void add_fit_tables(HtmlReport& report, const ForceFitTraces& t, const ForceFitF
   if (!f.runs.empty()) {
     std::vector<std::vector<std::string>> per_run;
     for (const RunFitFigures& r : f.runs)
-      per_run.push_back({r.name, std::to_string(r.samples), format("%.2f", r.fit_percent), format("%.4g", r.rms_N),
+      per_run.push_back({r.name, std::to_string(r.samples), format("%.2f", r.fit_percent), format("%.4f", r.nrmse), format("%.4g", r.rms_N),
                          format("%.4g", r.max_N), format("%.4g", 1e3 * r.lag_step_s), format("%.0f", 100.0 * r.acf_outside)});
     report.table("Per run (the JSON's fit.runs)",
-                 {"run", "kept samples", "fit [%]", "RMS [N]", "max [N]", "sample step [ms]", "lags outside the 95 % bound [%]"},
+                 {"run", "kept samples", "fit [%]", "NRMSE", "RMS [N]", "max [N]", "sample step [ms]", "lags outside the 95 % bound [%]"},
                  per_run);
   }
 }

@@ -35,6 +35,7 @@ struct RunFitFigures {
   std::string name;
   std::size_t samples = 0;   // kept
   double fit_percent = 0.0;
+  double nrmse = 0.0;        // rms_N over the range of its measured force (mrd-replay's nrmse)
   double rms_N = 0.0;
   double max_N = 0.0;
   double lag_step_s = 0.0;   // its own sample period
@@ -53,6 +54,7 @@ struct InputCorrelation {
 
 struct ForceFitFigures {
   double fit_percent = 0.0;  // nrmse_fit_percent over the kept samples
+  double nrmse = 0.0;        // rms_N over the range of the measured force (kept samples)
   double rms_N = 0.0;        // of measured - predicted over the kept samples
   double max_N = 0.0;
   double baseline_fit_percent = 0.0;  // NaN without a baseline
@@ -69,7 +71,7 @@ struct ForceFitFigures {
 };
 [[nodiscard]] ForceFitFigures force_fit_figures(const ForceFitTraces& t, std::size_t lags = 100);
 
-// The figures as the tools' JSON "fit" object: fit_percent, rms_N, max_N, baseline_fit_percent,
+// The figures as the tools' JSON "fit" object: fit_percent, nrmse, rms_N, max_N, baseline_fit_percent,
 // acf_lags, acf_lag_step_s, acf_bound, acf_outside_fraction, input_xcorr (one object per input:
 // input, max_abs_r, at_lag_s, bound, outside_fraction), and with a reference model reference_fit_percent
 // and reference_rms_N. The report's cells name them "fit.*".

@@ -261,6 +261,9 @@ TEST(ReportFit, SeveralRunsHaveTheirOwnFiguresAndSteps) {
   EXPECT_EQ(f.runs[1].samples, 200u);
   EXPECT_NEAR(f.runs[0].rms_N, 2.0, 1e-12);
   EXPECT_NEAR(f.runs[1].rms_N, 5.0, 1e-12);
+  // NRMSE = RMS over the run's measured range (a 100 N sine sampled densely: about 200 N).
+  EXPECT_NEAR(f.runs[0].nrmse, 2.0 / 200.0, 0.01 * 2.0 / 200.0);
+  EXPECT_NEAR(f.runs[1].nrmse, 5.0 / 200.0, 0.02 * 5.0 / 200.0);
   EXPECT_NEAR(f.runs[0].lag_step_s, 1e-3, 1e-12);
   EXPECT_NEAR(f.runs[1].lag_step_s, 5e-3, 1e-12);
   EXPECT_EQ(f.lag_step_s, 0.0);
@@ -268,7 +271,9 @@ TEST(ReportFit, SeveralRunsHaveTheirOwnFiguresAndSteps) {
   const auto json = mrd::tools::force_fit_json(f);
   ASSERT_EQ(json["runs"].size(), 2u);
   EXPECT_EQ(json["runs"][1]["acf_lag_step_s"].get<double>(), f.runs[1].lag_step_s);
+  EXPECT_EQ(json["runs"][0]["nrmse"].get<double>(), f.runs[0].nrmse);
   EXPECT_NE(mrd::tools::per_run_text(f).find("slow.csv"), std::string::npos);
+  EXPECT_NE(mrd::tools::per_run_text(f).find("NRMSE"), std::string::npos);
   t.run_starts.clear();  // one run: no per-run figures, and one step
   EXPECT_TRUE(mrd::tools::force_fit_figures(t, 10).runs.empty());
 }
