@@ -223,6 +223,7 @@ struct FitArguments {
   std::vector<std::string> bound_texts;
   bool polish = false;
   bool quiet = false;
+  bool accept_unphysical = false;
 };
 
 // --write-config: the identified set into [damper.jiles_atherton] of the file (patched in place:
@@ -275,10 +276,18 @@ int run_fit(const FitArguments& args) {
   progress.reset();  // ends the status line before the result
   std::fputs(identify_text(result, objective).c_str(), stdout);
   const IdentifyStatistics statistics = identify_statistics(result, objective, curve);
+  for (const std::string& line : statistics.flagged)
+    std::printf("unphysical: %s (--write-config needs --accept-unphysical)\n", line.c_str());
   if (!args.json_path.empty() && !write_file(args.json_path, identify_json(result, &statistics))) return mrd::cli::kIo;
   if (!args.plot_dir.empty()) {
     const std::string why = plot_identification(result, objective, curve, args.plot_dir);
     if (!why.empty()) std::fprintf(stderr, "mrd-identify: plot skipped: %s\n", why.c_str());
+  }
+  if (!args.config_path.empty() && !statistics.flagged.empty() && !args.accept_unphysical) {
+    std::fprintf(stderr, "mrd-identify: --write-config: %s not written: %zu parameter(s) flagged (listed as "
+                 "'unphysical:' above); --accept-unphysical writes it anyway\n",
+                 args.config_path.c_str(), statistics.flagged.size());
+    return mrd::cli::kBadInput;
   }
   if (!args.config_path.empty()) {
     const Point best = result.polish ? result.polish->best : result.search.best;
@@ -381,6 +390,9 @@ void add_fit_command(CLI::App& app, Commands& c) {
   cmd.add_option("--write-config", fit.config_path,
                  "write the identified set into [damper.jiles_atherton] of this config (patched in place, "
                  "comments kept; the default config when the file does not exist)");
+  cmd.add_flag("--accept-unphysical", fit.accept_unphysical,
+               "--write-config writes the set even when a parameter is flagged (on its search box's edge, "
+               "outside what materials show, or not determined by the loops)");
   cmd.add_option("--report", fit.report_dir,
                  "write report.html here: B-H measured and fitted, residual, parameters with standard "
                  "deviations, provenance (docs/IDENTIFICATION.md)");

@@ -8,6 +8,7 @@
 #include <limits>
 #include <sstream>
 
+#include "tools/identification/parameter_flags.hpp"
 #include "tools/plot/gnuplot.hpp"
 #include "tools/json.hpp"
 #include "tools/report/fit_statistics.hpp"
@@ -73,6 +74,9 @@ void report_parameters(HtmlReport& report, const IdentifyResult& r, const Identi
                     rows);
   std::vector<std::string> names(kParameterNames.begin(), kParameterNames.end());
   report.correlation_matrix("Correlation of the estimates", names, statistics.uncertainty.correlation);
+  std::vector<std::vector<std::string>> flagged;
+  for (const std::string& line : statistics.flagged) flagged.push_back({line, "--write-config needs --accept-unphysical"});
+  if (!flagged.empty()) report.table("Flagged parameters (the JSON's unphysical)", {"parameter", "why"}, flagged);
 }
 
 // The loops point by point, measured and fitted, with a NaN row after each loop so that gnuplot
@@ -168,6 +172,7 @@ IdentifyStatistics identify_statistics(const IdentifyResult& r, const BHObjectiv
         return e;
       },
       x);
+  out.flagged = flag_parameters(best, r.bounds, out.uncertainty);
   return out;
 }
 
@@ -196,6 +201,7 @@ std::string identify_json(const IdentifyResult& r, const IdentifyStatistics* sta
           statistics->uncertainty.standard_deviation[static_cast<std::size_t>(j)];
     }
     out["params_sd"] = sd;
+    out["unphysical"] = statistics->flagged;
   }
   return json_text(out);
 }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "tools/identification/bh_curve.hpp"
 #include "tools/identification/identification.hpp"
@@ -15,6 +16,7 @@ namespace mrd::tools {
 struct IdentifyStatistics {
   double fit_percent = 0.0;
   ParameterUncertainty uncertainty;
+  std::vector<std::string> flagged;  // flag_parameters of the final set: "unphysical" in the JSON
 };
 IdentifyStatistics identify_statistics(const IdentifyResult& result, const BHObjective& objective,
                                        const BHCurve& curve);
@@ -22,7 +24,7 @@ IdentifyStatistics identify_statistics(const IdentifyResult& result, const BHObj
 // The --json document: {"algo", "params": {Ms, a, alpha, k, c}, "rmse_T", "evaluations",
 // "wall_s"}, plus the start point, the bounds and, with --polish, a separate "polish" object;
 // with statistics, "fit_percent", "sigma_T" (residual standard error) and "params_sd" {Ms, a,
-// alpha, k, c} of the final set.
+// alpha, k, c} of the final set, and "unphysical" (the flagged lines, [] when none).
 std::string identify_json(const IdentifyResult& result, const IdentifyStatistics* statistics = nullptr);
 
 // --report DIR: report.html with B against H measured and fitted, the residual and its
