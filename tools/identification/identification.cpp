@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <chrono>
 #include <limits>
+#include <string>
 
 #ifdef MRD_HAVE_PAGMO
 #include "tools/identification/pagmo_peers.hpp"
 #endif
 #include <stdexcept>
 #include "tools/identification/start_point.hpp"
+#include "tools/text_format.hpp"
 
 namespace mrd::tools {
 
@@ -54,15 +56,15 @@ namespace {
 // best fitness (RMSE of B) seen in this round.
 class ReportingObjective final : public BatchObjective {
  public:
-  ReportingObjective(BatchObjective& inner, ProgressSink& sink, const IdentifyOptions& options, int round)
-      : inner_(inner), sink_(sink), options_(options), round_(round) {}
+  ReportingObjective(BatchObjective& inner, ProgressSink& sink, const IdentifyOptions& options, int round,
+                     std::string label)
+      : inner_(inner), sink_(sink), options_(options), round_(round), label_(std::move(label)) {}
   void evaluate(const std::vector<Point>& points, std::vector<double>& fitness,
                 const std::vector<double>* cutoffs) override {
     inner_.evaluate(points, fitness, cutoffs);
     evaluations_ += static_cast<std::int64_t>(points.size());
     for (const double f : fitness) best_ = std::min(best_, f);
-    sink_.report({.stage = "round", .round = round_, .candidate = algorithm_name(options_.algorithm),
-                  .done = evaluations_, .total = options_.budget.evaluations, .best_error = best_,
+    sink_.report({.stage = "box", .round = round_, .candidate = label_, .done = evaluations_, .total = options_.budget.evaluations, .best_error = best_,
                   .unit = "T RMSE"});
   }
 
@@ -71,23 +73,25 @@ class ReportingObjective final : public BatchObjective {
   ProgressSink& sink_;
   const IdentifyOptions& options_;
   int round_;
+  std::string label_;
   std::int64_t evaluations_ = 0;
   double best_ = std::numeric_limits<double>::infinity();
 };
 
+// `boxes`: how many boxes the search may take at most (re-centred on a face), for the progress line.
 OptimisationResult run_search(const BHObjective& objective, const Bounds& bounds,
-                              const IdentifyOptions& options, std::uint64_t seed, int round) {
-  if (options.progress != nullptr) {
-    options.progress->report({.stage = "round", .round = round, .candidate = algorithm_name(options.algorithm),
-                              .total = options.budget.evaluations});
-  }
+                              const IdentifyOptions& options, std::uint64_t seed, int round, int boxes) {
+  const std::string label = boxes > 1 ? format("%s, of at most %d boxes", std::string(algorithm_name(options.algorithm)).c_str(), boxes)
+                                      : std::string(algorithm_name(options.algorithm));
+  if (options.progress != nullptr)
+    options.progress->report({.stage = "box", .round = round, .candidate = label, .total = options.budget.evaluations});
   switch (options.algorithm) {
     case Algorithm::kPso:
     case Algorithm::kImprovedPso: {
       WorkerPool pool(options.threads);
       ParallelBHObjective parallel(objective, pool);
       std::optional<ReportingObjective> reporting;
-      if (options.progress != nullptr) reporting.emplace(parallel, *options.progress, options, round);
+      if (options.progress != nullptr) reporting.emplace(parallel, *options.progress, options, round, label);
       BatchObjective& batch = reporting ? static_cast<BatchObjective&>(*reporting) : parallel;
       return options.algorithm == Algorithm::kPso
                  ? run_classical_pso(batch, bounds, options.budget, options.classical, seed)
@@ -127,7 +131,8 @@ IdentifyResult identify(const BHObjective& objective, const BHCurve& curve,
   Bounds bounds = result.bounds;
   Point centre = result.start;
   for (int round = 0;; ++round) {
-    OptimisationResult search = run_search(objective, bounds, options, options.seed + 7919u * round, round + 1);
+    OptimisationResult search = run_search(objective, bounds, options, options.seed + 7919u * round, round + 1,
+                                           may_recentre ? options.recentre_rounds + 1 : 1);
     if (round == 0 || search.fitness < result.search.fitness) {
       const auto spent = result.search.evaluations;
       auto trace = std::move(result.search.convergence);

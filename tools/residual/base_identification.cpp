@@ -1,6 +1,9 @@
 #include "tools/residual/base_identification.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <cstdint>
+#include <limits>
 
 #include "tools/residual/least_squares_refine.hpp"
 #include "tools/text_format.hpp"
@@ -45,11 +48,26 @@ FittedModel identify_base(Search& s, const model::DamperModel& origin, Parameter
   space.linear = linear_effects_of(origin);
   ParameterSpace exploring = space;
   exploring.origin.integration.max_substeps = std::min(exploring.origin.integration.max_substeps, kExploringSubsteps);
+  // Steps: each swarm, each chain, and the polish on the whole series when the swarms saw openings.
+  const int chains = std::max(swarms, 1) + (from_origin ? 1 : 0) + (also_from != nullptr ? 1 : 0);
+  const bool on_openings = openings.size() != s.fit_series.size();
+  const std::int64_t steps = std::max(swarms, 1) + chains + (on_openings ? 1 : 0);
+  std::atomic<std::int64_t> done{0};
+  std::atomic<double> best_so_far{std::numeric_limits<double>::infinity()};
+  const auto report = [&](double fitting_rms) {
+    if (s.options.progress == nullptr) return;
+    double seen = best_so_far.load();
+    while (fitting_rms < seen && !best_so_far.compare_exchange_weak(seen, fitting_rms)) {
+    }
+    s.options.progress->report({.stage = "base fit", .done = ++done, .total = steps, .best_error = best_so_far.load(),
+                                .unit = "N RMS (fitting)"});
+  };
   std::vector<Point> starts;
   for (int k = 0; k < std::max(swarms, 1); ++k) {
     const FittedModel swarm = fit_space(exploring, openings, &s.pool, s.seed++, 2 * s.options.evaluations_per_parameter);
     s.evaluations += swarm.evaluations;
     starts.push_back(swarm.theta);
+    report(swarm.fitting_rms);
   }
   // The chains, each serial, side by side.
   if (from_origin) starts.push_back(base_coordinates(origin, start, s.scales, Magnetics::kMaterial));
@@ -59,11 +77,13 @@ FittedModel identify_base(Search& s, const model::DamperModel& origin, Parameter
   s.pool.run(starts.size(), [&](std::size_t k, unsigned /*worker*/) {
     refined[k] = refine_least_squares(space, openings, starts[k], 20 + 30 * dimension);
     s.evaluations += refined[k].evaluations;
+    report(refined[k].fitting_rms);
   });
   FittedModel best = *std::ranges::min_element(refined, {}, &FittedModel::fitting_rms);
-  if (openings.size() == s.fit_series.size()) return best;
+  if (!on_openings) return best;
   const FittedModel whole = refine_least_squares(space, s.fit_series, best.theta, 20 + 15 * dimension, &s.pool);
   s.evaluations += whole.evaluations;
+  report(whole.fitting_rms);
   return whole;
 }
 
@@ -79,7 +99,6 @@ FittedModel identify_base_twice_if_short(Search& s, const model::DamperModel& or
 }
 
 FittedModel fit_base_model(Search& s, ParameterSpace& space) {
-  if (s.options.progress != nullptr) s.options.progress->report({.stage = "base fit"});
   return identify_base_twice_if_short(s, s.options.start, space, 2);
 }
 

@@ -170,12 +170,13 @@ TEST(Identification, PagmoPeersRunOnTheSameBudget) {
 class RecordingProgressSink final : public ProgressSink {
  public:
   void report(const ProgressReport& r) override {
-    if (r.done > 0) reports.push_back({r.done, r.total, r.best_error, r.round});
+    if (r.done > 0) reports.push_back({r.done, r.total, r.best_error, r.round, std::string(r.candidate)});
   }
   struct Seen {
     std::int64_t done, total;
     double best;
     int round;
+    std::string label;
   };
   std::vector<Seen> reports;
 };
@@ -199,6 +200,14 @@ TEST(Identification, ProgressReportsEvaluationsAndABestThatNeverRises) {
   EXPECT_EQ(sink.reports.back().total, 600);
   EXPECT_EQ(sink.reports.back().done, r.search.evaluations);
   EXPECT_DOUBLE_EQ(sink.reports.back().best, r.search.fitness);
+  EXPECT_EQ(sink.reports.back().label, "improved-pso");  // one box: no box count
+  // A search that may re-centre its box says how many boxes it may take at most.
+  options.recentre_rounds = 2;
+  options.budget.evaluations = 100;
+  sink.reports.clear();
+  (void)identify(objective, curve, options);
+  ASSERT_FALSE(sink.reports.empty());
+  EXPECT_EQ(sink.reports.front().label, "improved-pso, of at most 3 boxes");
 }
 
 // A many-seed study reports each finished run: the algorithm, runs done of all, and the best

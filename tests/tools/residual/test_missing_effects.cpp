@@ -2,6 +2,7 @@
 // effect is named, the error falls by the documented factor, and a clean run gives "none".
 // Short runs (4 s at 1 kHz) keep this in the fast suite; the full table of
 // docs/CLOSING-THE-LOOP.md is tools/residual/detection-study.sh.
+#include <cmath>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -110,6 +111,20 @@ TEST(MissingEffects, ACandidateBelowTheClaimCriterionIsRejected) {
   const CandidateTrial& trial = lenient.trials.front();
   ASSERT_GE(progress.seen.size(), 3u);
   EXPECT_EQ(progress.seen.front().stage, "base fit");
+  // The first base fit counts its steps (swarms, chains, the whole-series polish) towards a
+  // known total, with the best fitting error so far never rising.
+  const std::int64_t base_steps = progress.seen.front().total;
+  EXPECT_GE(base_steps, 4);
+  for (std::size_t i = 0; i < static_cast<std::size_t>(base_steps) && i < progress.seen.size(); ++i) {
+    const auto& step = progress.seen[i];
+    EXPECT_EQ(step.stage, "base fit");
+    EXPECT_EQ(step.total, base_steps);
+    EXPECT_EQ(step.done, static_cast<std::int64_t>(i + 1));
+    EXPECT_TRUE(std::isfinite(step.best));
+    if (i > 0) {
+      EXPECT_LE(step.best, progress.seen[i - 1].best);
+    }
+  }
   std::vector<std::string> round_one;
   for (const auto& s : progress.seen) {
     if (s.stage != "round" || s.round != 1) continue;
