@@ -40,18 +40,18 @@ LinearEffects linear_effects_of(const model::DamperModel& model) {
 
 }  // namespace
 
-FittedModel identify_base(Search& s, const model::DamperModel& origin, ParameterSpace& space, bool from_origin,
-                          int swarms, const Point* also_from) {
-  const model::DamperModel& start = s.options.start;
+namespace {
+
+// The swarms on the runs' openings, a Levenberg-Marquardt chain from each swarm's best and from
+// each of `chain_starts`, side by side, then the best polished on the whole fitting series;
+// each step reported as a share of the whole.
+FittedModel search_base_space(Search& s, const ParameterSpace& space, std::vector<Point> chain_starts, int swarms) {
   const FitSeries& openings = s.swarm_series;
-  space = base_space(origin, start, s.scales, Magnetics::kMaterial);
-  space.linear = linear_effects_of(origin);
   ParameterSpace exploring = space;
   exploring.origin.integration.max_substeps = std::min(exploring.origin.integration.max_substeps, kExploringSubsteps);
-  // Steps: each swarm, each chain, and the polish on the whole series when the swarms saw openings.
-  const int chains = std::max(swarms, 1) + (from_origin ? 1 : 0) + (also_from != nullptr ? 1 : 0);
+  swarms = std::max(swarms, 1);
   const bool on_openings = openings.size() != s.fit_series.size();
-  const std::int64_t steps = std::max(swarms, 1) + chains + (on_openings ? 1 : 0);
+  const auto steps = static_cast<std::int64_t>(2 * swarms + static_cast<int>(chain_starts.size()) + (on_openings ? 1 : 0));
   std::atomic<std::int64_t> done{0};
   std::atomic<double> best_so_far{std::numeric_limits<double>::infinity()};
   const auto report = [&](double fitting_rms) {
@@ -63,15 +63,13 @@ FittedModel identify_base(Search& s, const model::DamperModel& origin, Parameter
                                 .unit = "N RMS (fitting)"});
   };
   std::vector<Point> starts;
-  for (int k = 0; k < std::max(swarms, 1); ++k) {
+  for (int k = 0; k < swarms; ++k) {
     const FittedModel swarm = fit_space(exploring, openings, &s.pool, s.seed++, 2 * s.options.evaluations_per_parameter);
     s.evaluations += swarm.evaluations;
     starts.push_back(swarm.theta);
     report(swarm.fitting_rms);
   }
-  // The chains, each serial, side by side.
-  if (from_origin) starts.push_back(base_coordinates(origin, start, s.scales, Magnetics::kMaterial));
-  if (also_from != nullptr) starts.push_back(*also_from);
+  for (Point& p : chain_starts) starts.push_back(std::move(p));
   std::vector<FittedModel> refined(starts.size());
   const auto dimension = static_cast<int>(space.bounds.dimension());
   s.pool.run(starts.size(), [&](std::size_t k, unsigned /*worker*/) {
@@ -85,6 +83,29 @@ FittedModel identify_base(Search& s, const model::DamperModel& origin, Parameter
   s.evaluations += whole.evaluations;
   report(whole.fitting_rms);
   return whole;
+}
+
+}  // namespace
+
+FittedModel identify_base(Search& s, const model::DamperModel& origin, ParameterSpace& space, bool from_origin,
+                          int swarms, const Point* also_from) {
+  space = base_space(origin, s.options.start, s.scales, Magnetics::kMaterial);
+  space.linear = linear_effects_of(origin);
+  std::vector<Point> chain_starts;
+  if (from_origin) chain_starts.push_back(base_coordinates(origin, s.options.start, s.scales, Magnetics::kMaterial));
+  if (also_from != nullptr) chain_starts.push_back(*also_from);
+  return search_base_space(s, space, std::move(chain_starts), swarms);
+}
+
+FittedModel identify_base_with(Search& s, const model::DamperModel& origin, const model::EffectInfo& effect, int swarms) {
+  ParameterSpace base = base_space(origin, s.options.start, s.scales, Magnetics::kMaterial);
+  base.linear = linear_effects_of(origin);
+  const ParameterSpace joint = combine(base, effect_space(effect, origin, s.scales));
+  const Point base_start = base_coordinates(origin, s.options.start, s.scales, Magnetics::kMaterial);
+  const Point effect_start = effect_coordinates(effect, origin, s.scales);
+  Point from(base_start.size() + effect_start.size());
+  from << base_start, effect_start;
+  return search_base_space(s, joint, {from}, swarms);
 }
 
 FittedModel identify_base_twice_if_short(Search& s, const model::DamperModel& origin, ParameterSpace& space,

@@ -5,6 +5,7 @@
 
 #include "tools/residual/ambiguity_naming.hpp"
 #include "tools/residual/base_identification.hpp"
+#include "tools/residual/candidate_effects.hpp"
 #include "tools/residual/candidate_trials.hpp"
 #include "tools/residual/joint_refinement.hpp"
 
@@ -28,10 +29,15 @@ Effects candidate_effects(const ResidualOptions& options) {
 model::DamperModel polish_accepted(Search& s, const model::DamperModel& accepted, const Effects& effects,
                                    double& validation) {
   ParameterSpace space;
-  const model::DamperModel rebased = identify_base_twice_if_short(s, accepted, space, 1).model;
+  FittedModel rebased = identify_base_twice_if_short(s, accepted, space, 1);
+  if (rebased.fitting_rms > kSecondStartRatio * s.white_noise_of(s.predicted(rebased.model)) &&
+      effect_space(*effects.back(), accepted, s.scales).bounds.dimension() > 0) {
+    FittedModel joint = identify_base_with(s, accepted, *effects.back(), 2);
+    if (joint.fitting_rms < rebased.fitting_rms) rebased = std::move(joint);
+  }
   std::int64_t spent = 0;
   const model::DamperModel polished =
-      refine_jointly(s, rebased, effects, effect_coordinates(effects, rebased, s.scales),
+      refine_jointly(s, rebased.model, effects, effect_coordinates(effects, rebased.model, s.scales),
                      {{20, 0.02, 20}, {20, 0.005}, {20, 0.005}}, spent)
           .model;
   s.evaluations += spent;
