@@ -105,7 +105,12 @@ FittedModel identify_base_with(Search& s, const model::DamperModel& origin, cons
   const Point effect_start = effect_coordinates(effect, origin, s.scales);
   Point from(base_start.size() + effect_start.size());
   from << base_start, effect_start;
-  return search_base_space(s, joint, {from}, swarms);
+  // A second chain from the config's damper (the prior) with the effect as fitted: the basin the
+  // first base fit left may be the one the effect needed.
+  const Point prior_start = base_coordinates(s.options.start, s.options.start, s.scales, Magnetics::kMaterial);
+  Point from_prior(prior_start.size() + effect_start.size());
+  from_prior << prior_start, effect_start;
+  return search_base_space(s, joint, {from, from_prior}, swarms);
 }
 
 FittedModel identify_base_twice_if_short(Search& s, const model::DamperModel& origin, ParameterSpace& space,

@@ -32,7 +32,7 @@ model::DamperModel polish_accepted(Search& s, const model::DamperModel& accepted
   FittedModel rebased = identify_base_twice_if_short(s, accepted, space, 1);
   if (rebased.fitting_rms > kSecondStartRatio * s.white_noise_of(s.predicted(rebased.model)) &&
       effect_space(*effects.back(), accepted, s.scales).bounds.dimension() > 0) {
-    FittedModel joint = identify_base_with(s, accepted, *effects.back(), 2);
+    FittedModel joint = identify_base_with(s, accepted, *effects.back(), kSecondStartSwarms);
     if (joint.fitting_rms < rebased.fitting_rms) rebased = std::move(joint);
   }
   std::int64_t spent = 0;
