@@ -15,8 +15,10 @@
 #include "tools/identification/identification_study.hpp"
 #include "tools/identification/identify_report.hpp"
 #include "tools/identification/start_point.hpp"
+#include "tools/identification/study_plots.hpp"
 #include "tools/identification/synthetic_curve.hpp"
 #include "tools/terminal_progress.hpp"
+#include "tools/text_format.hpp"
 
 namespace {
 
@@ -85,42 +87,6 @@ std::vector<Algorithm> parse_algorithms(const std::vector<std::string>& names) {
   std::vector<Algorithm> out;
   for (const auto& n : names) out.push_back(*parse_algorithm(n));  // checked by IsMember
   return out;
-}
-
-int reproduce_paper(const StudyOptions& study, double table1_H_max, const std::string& out_dir, bool quiet) {
-  struct Case {
-    const char* name;
-    mrd::model::JilesAthertonParams truth;
-    double H_max;
-  };
-  // Table 1 read as a = 25.3 A/m, alpha = 8.43e-5, at 60 A/m, where it is physical
-  // (docs/MODEL.md); and the classic Jiles-Atherton steel set (1986), well conditioned.
-  const std::string table1_name =
-      "Paper Table 1 set, Hmax " + std::to_string(static_cast<int>(table1_H_max)) + " A/m";
-  const Case cases[] = {{table1_name.c_str(), {1.3e6, 25.3, 8.43e-5, 66.6, 0.2}, table1_H_max},
-                        {"Steel set (Ms 1.6e6, a 1100, alpha 1.6e-3, k 400, c 0.2), Hmax 5 kA/m",
-                         {1.6e6, 1100.0, 1.6e-3, 400.0, 0.2}, 5000.0}};
-  std::ostringstream report;
-  for (const auto& c : cases) {
-    const BHCurve curve = synthetic_loop(c.truth, c.H_max, 1000);
-    std::fprintf(stderr, "reproduce-paper: %s ...\n", c.name);
-    const auto sensitivity = parameter_sensitivity(BHObjective(curve), to_point(c.truth));
-    auto progress = TerminalProgress::on_stderr(quiet);
-    StudyOptions with_progress = study;
-    with_progress.progress = progress.get();
-    with_progress.stage = "recovery";
-    const auto rows = parameter_recovery_study(c.truth, curve, with_progress);
-    progress.reset();  // ends the status line before the next case's
-    report << "### " << c.name << "\n\nRelative error of each parameter [%], median [q25, q75] over "
-           << study.seeds << " seeds; population " << study.budget.population << ", budget "
-           << study.budget.evaluations << " evaluations, 1000 points.\n\n"
-           << recovery_table_markdown(rows)
-           << "\nSensitivity at the true values (singular values of dB/dln(theta), and the "
-              "parameter mix of each direction):\n\n"
-           << sensitivity_markdown(sensitivity) << "\n";
-  }
-  std::fputs(report.str().c_str(), stdout);
-  return write_table(out_dir, "reproduce-paper", report.str()) ? mrd::cli::kOk : mrd::cli::kIo;
 }
 
 // Options every search shares: the budget, the seed, the threads and the improved PSO's constants.
@@ -193,16 +159,20 @@ struct CurveArguments {
 struct StudyArguments {
   int seeds = 20;
   std::vector<std::string> algo_names;
-  std::string out_dir;
+  std::string out_dir, plot_dir;
   bool quiet = false;
 
-  void add_to(CLI::App& cmd, const char* table_name) {
+  // figure_files: what --plot writes, for its --help.
+  void add_to(CLI::App& cmd, const char* table_name, const char* figure_files) {
     cmd.add_flag("--quiet,-q", quiet, "no progress line on stderr (it shows only when stderr is a terminal)");
     cmd.add_option("--seeds", seeds, "seeds per algorithm")->check(CLI::Range(1, 1000))->capture_default_str();
     cmd.add_option("--algos", algo_names, "algorithms to run, comma-separated (default: all)")
         ->delimiter(',')
         ->check(CLI::IsMember(algorithm_names()));
     cmd.add_option("--out", out_dir, std::string("folder of results: the table as ") + table_name + ".md");
+    cmd.add_option("--plot", plot_dir,
+                   std::string("folder for the figures of every algorithm's seed-1 run: the convergence on one, "
+                               "the fitted B-H curves on another (") + figure_files + ", PNG with their .dat)");
   }
   StudyOptions study(const IdentifyOptions& options) const {
     StudyOptions s;
@@ -214,6 +184,34 @@ struct StudyArguments {
     return s;
   }
 };
+
+// A study's table rows, and each algorithm's run of seed 1 for --plot.
+struct StudyOutcome {
+  std::vector<StudyRow> rows;
+  std::vector<IdentifyResult> first_seed_runs;
+};
+
+// Runs a study (compare and reproduce-paper take minutes) with a progress line on stderr, ended
+// before it returns so that the table starts on a line of its own.
+template <typename Study>
+StudyOutcome run_with_progress(StudyOptions study, std::string_view stage, bool quiet, Study&& run) {
+  StudyOutcome outcome;
+  auto progress = TerminalProgress::on_stderr(quiet);
+  study.progress = progress.get();
+  study.stage = stage;
+  study.first_seed_runs = &outcome.first_seed_runs;
+  outcome.rows = run(study);
+  return outcome;
+}
+
+// --plot: the figures of a study. Without gnuplot the tables still stand: a note, not an error.
+void plot_study(const StudyOutcome& outcome, const BHCurve& curve, const StudyOptions& study,
+                const StudyFigureLabels& labels, const std::string& directory) {
+  if (directory.empty()) return;
+  const std::string why =
+      plot_study_runs(outcome.first_seed_runs, BHObjective(curve, study.settings), curve, labels, directory);
+  if (!why.empty()) std::fprintf(stderr, "mrd-identify: plot skipped: %s\n", why.c_str());
+}
 
 struct FitArguments {
   CurveArguments curve;
@@ -318,22 +316,70 @@ int run_evaluate(const CurveArguments& curve_args, const std::string& parameter_
   return 0;
 }
 
-int run_compare(const CurveArguments& curve_args, const StudyOptions& study, const std::string& out_dir,
-                bool quiet) {
+int run_compare(const CurveArguments& curve_args, const StudyArguments& args, const IdentifyOptions& options) {
   const BHCurve curve = curve_args.read();
   const BHObjective objective(curve, curve_args.settings());
-  auto progress = TerminalProgress::on_stderr(quiet);
-  StudyOptions with_progress = study;
-  with_progress.progress = progress.get();
-  with_progress.stage = "compare";
-  const auto rows = measured_fit_study(curve, with_progress);
-  progress.reset();  // ends the status line before the table
+  StudyOptions study = args.study(options);
+  study.settings = curve_args.settings();
+  const StudyOutcome outcome = run_with_progress(
+      study, "compare", args.quiet, [&](const StudyOptions& s) { return measured_fit_study(curve, s); });
   char summary[160];
   std::snprintf(summary, sizeof summary, "%zu loops, %zu points, rms B %.4g T; %d seeds each.\n\n",
                 curve.loops.size(), objective.points(), objective.rms_B(), study.seeds);
-  const std::string table = summary + fit_table_markdown(rows, objective.rms_B());
+  const std::string table = summary + fit_table_markdown(outcome.rows, objective.rms_B());
   std::fputs(table.c_str(), stdout);
-  return write_table(out_dir, "compare", table) ? mrd::cli::kOk : mrd::cli::kIo;
+  plot_study(outcome, curve, study,
+             {.stem = "compare", .set = std::filesystem::path(curve_args.file).filename().string()}, args.plot_dir);
+  return write_table(args.out_dir, "compare", table) ? mrd::cli::kOk : mrd::cli::kIo;
+}
+
+// reproduce-paper's known sets: the paper's Table 1 read as a = 25.3 A/m, alpha = 8.43e-5, at an
+// amplitude where it is physical (docs/MODEL.md); the classic Jiles-Atherton steel set (1986),
+// well conditioned.
+struct KnownSet {
+  std::string name;  // the table's heading
+  StudyFigureLabels figures;
+  mrd::model::JilesAthertonParams truth;
+  double H_max = 0.0;
+};
+
+std::vector<KnownSet> known_sets(double table1_H_max) {
+  const std::string amplitude = format("%g A/m", table1_H_max);
+  return {{"Paper Table 1 set, Hmax " + amplitude,
+           {"table1", "Paper Table 1 set, " + amplitude + " loop", "+-100% box", true},
+           {1.3e6, 25.3, 8.43e-5, 66.6, 0.2},
+           table1_H_max},
+          {"Steel set (Ms 1.6e6, a 1100, alpha 1.6e-3, k 400, c 0.2), Hmax 5 kA/m",
+           {"steel", "Steel set, 5 kA/m loop", "+-100% box", true},
+           {1.6e6, 1100.0, 1.6e-3, 400.0, 0.2},
+           5000.0}};
+}
+
+// Section 4.1 on one known set: its table and sensitivity into `report`, its figures into --plot.
+void study_known_set(const KnownSet& set, const StudyArguments& args, const StudyOptions& study,
+                     std::ostringstream& report) {
+  const BHCurve curve = synthetic_loop(set.truth, set.H_max, 1000);
+  std::fprintf(stderr, "reproduce-paper: %s ...\n", set.name.c_str());
+  const auto sensitivity = parameter_sensitivity(BHObjective(curve), to_point(set.truth));
+  const StudyOutcome outcome = run_with_progress(study, "recovery", args.quiet, [&](const StudyOptions& s) {
+    return parameter_recovery_study(set.truth, curve, s);
+  });
+  report << "### " << set.name << "\n\nRelative error of each parameter [%], median [q25, q75] over "
+         << study.seeds << " seeds; population " << study.budget.population << ", budget "
+         << study.budget.evaluations << " evaluations, 1000 points.\n\n"
+         << recovery_table_markdown(outcome.rows)
+         << "\nSensitivity at the true values (singular values of dB/dln(theta), and the "
+            "parameter mix of each direction):\n\n"
+         << sensitivity_markdown(sensitivity) << "\n";
+  plot_study(outcome, curve, study, set.figures, args.plot_dir);
+}
+
+int reproduce_paper(const StudyArguments& args, const IdentifyOptions& options, double table1_H_max) {
+  const StudyOptions study = args.study(options);
+  std::ostringstream report;
+  for (const KnownSet& set : known_sets(table1_H_max)) study_known_set(set, args, study, report);
+  std::fputs(report.str().c_str(), stdout);
+  return write_table(args.out_dir, "reproduce-paper", report.str()) ? mrd::cli::kOk : mrd::cli::kIo;
 }
 
 struct SyntheticArguments {
@@ -408,13 +454,13 @@ void add_compare_command(CLI::App& app, Commands& c) {
   c.compare_cmd = app.add_subcommand("compare", "run every algorithm over several seeds on a file");
   c.compare_curve.add_to(*c.compare_cmd);
   add_search_options(*c.compare_cmd, c.compare_options);
-  c.compare_study.add_to(*c.compare_cmd, "compare");
+  c.compare_study.add_to(*c.compare_cmd, "compare", "compare_convergence.png, compare_bh.png");
 }
 
 void add_paper_command(CLI::App& app, Commands& c) {
   c.paper_cmd = app.add_subcommand("reproduce-paper", "Section 4.1 protocol on two known sets, all algorithms");
   add_search_options(*c.paper_cmd, c.paper_options);
-  c.paper_study.add_to(*c.paper_cmd, "reproduce-paper");
+  c.paper_study.add_to(*c.paper_cmd, "reproduce-paper", "table1_convergence.png, table1_bh.png, steel_*.png");
   c.paper_cmd->add_option("--table1-amplitude", c.table1_H_max,
                           "loop amplitude for the Table 1 set [A/m]; physical up to ~81")
       ->check(mrd::cli::finite_in(1.0, 1e6))->capture_default_str();
@@ -435,20 +481,14 @@ void add_synthetic_command(CLI::App& app, Commands& c) {
 bool check_outputs(const Commands& c) {
   return mrd::cli::check_outputs("mrd-identify", {&c.fit.json_path, &c.fit.config_path, &c.synthetic.path},
                                  {&c.fit.plot_dir, &c.fit.report_dir, &c.compare_study.out_dir,
-                                  &c.paper_study.out_dir});
+                                  &c.compare_study.plot_dir, &c.paper_study.out_dir, &c.paper_study.plot_dir});
 }
 
 int run_command(const Commands& c) {
   if (*c.fit_cmd) return run_fit(c.fit);
   if (*c.evaluate_cmd) return run_evaluate(c.evaluate_curve, c.evaluate_text);
-  if (*c.compare_cmd) {
-    return run_compare(c.compare_curve, c.compare_study.study(c.compare_options), c.compare_study.out_dir,
-                       c.compare_study.quiet);
-  }
-  if (*c.paper_cmd) {
-    return reproduce_paper(c.paper_study.study(c.paper_options), c.table1_H_max, c.paper_study.out_dir,
-                           c.paper_study.quiet);
-  }
+  if (*c.compare_cmd) return run_compare(c.compare_curve, c.compare_study, c.compare_options);
+  if (*c.paper_cmd) return reproduce_paper(c.paper_study, c.paper_options, c.table1_H_max);
   return run_synthetic(c.synthetic);
 }
 

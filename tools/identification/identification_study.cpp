@@ -55,7 +55,7 @@ struct Samples {
 
 std::vector<StudyRow> run_study(const BHCurve& curve, const StudyOptions& options,
                                 const std::optional<Point>& truth) {
-  const BHObjective objective(curve);
+  const BHObjective objective(curve, options.settings);
   std::vector<StudyRow> rows;
   const std::int64_t runs = static_cast<std::int64_t>(options.algorithms.size()) * options.seeds;
   std::int64_t done = 0;
@@ -76,6 +76,7 @@ std::vector<StudyRow> run_study(const BHCurve& curve, const StudyOptions& option
       o.polish = polish;
       o.polish_evaluations = options.polish_evaluations;
       const IdentifyResult r = identify(objective, curve, o);
+      if (options.first_seed_runs && seed == 1) options.first_seed_runs->push_back(r);
       const Point* t = truth ? &*truth : nullptr;
       search.add(r.search.best, t, r.fit.rmse, static_cast<double>(r.search.evaluations), r.wall_s);
       if (r.polish) {

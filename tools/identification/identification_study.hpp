@@ -35,6 +35,11 @@ struct StudyOptions {
   // reproduce-paper run for minutes).
   ProgressSink* progress = nullptr;
   std::string_view stage = "study";  // the progress line's label
+  // How the loops are played through the model (compare's --step-fraction).
+  model::JilesAthertonSettings settings;
+  // When set, each algorithm's run of seed 1 is appended here, in the order of `algorithms`:
+  // --plot draws them (tools/identification/study_plots.hpp).
+  std::vector<IdentifyResult>* first_seed_runs = nullptr;
 };
 
 // Section 4.1: fit a curve generated from `truth`, searching +-100% around the truth, and

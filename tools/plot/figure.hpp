@@ -18,6 +18,8 @@ inline constexpr const char* kLightBlue = "#9ecae1";
 inline constexpr const char* kRed = "#d62728";
 inline constexpr const char* kGreen = "#2ca02c";
 inline constexpr const char* kOrange = "#ff7f0e";
+inline constexpr const char* kPurple = "#9467bd";
+inline constexpr const char* kBrown = "#8c564b";
 inline constexpr const char* kGrey = "#888888";
 inline constexpr const char* kDarkGrey = "#555555";
 }  // namespace colour

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 
 #include "tools/text_format.hpp"
 
@@ -80,7 +81,9 @@ std::string plot_command(const Panel& panel) {
 std::string axis_settings(const Axis& axis, const char* name) {
   std::string out = format("set %slabel ", name) + quoted(label_of(axis)) + "\n";
   if (axis.range) out += format("set %srange [", name) + number(axis.range->from) + ":" + number(axis.range->to) + "]\n";
-  if (axis.log) out += format("set logscale %s\n", name);
+  // A log axis' ticks as plain numbers: gnuplot's default pads them to the smallest decade's
+  // digits (0.0100000 beside 0.0000001).
+  if (axis.log) out += format("set logscale %s\nset format %s '%%g'\n", name, name);
   return out;
 }
 
@@ -123,7 +126,7 @@ std::string gnuplot_script(const Figure& figure) {
   for (std::size_t i = 0; i < figure.panels.size(); ++i) {
     const Panel& panel = figure.panels[i];
     // Nothing a panel set carries over into the next.
-    if (i > 0) out += "unset arrow\nunset label\nunset logscale\nset autoscale\n";
+    if (i > 0) out += "unset arrow\nunset label\nunset logscale\nset autoscale\nset format\n";
     const std::string& title = several || figure.title.empty() ? panel.title : figure.title;
     if (!title.empty()) {
       out += "set title " + quoted(title) + "\n";
@@ -145,6 +148,28 @@ std::string draw(const std::vector<Figure>& figures) {
   std::string script;
   for (const Figure& f : figures) script += (script.empty() ? "" : kBetweenFigures) + gnuplot_script(f);
   return run_gnuplot(script);
+}
+
+std::string write_columns(const std::string& path, const std::vector<std::string>& names,
+                          const std::vector<const std::vector<double>*>& columns, std::size_t max_rows) {
+  std::size_t rows = 0;
+  for (const auto* c : columns) rows = std::max(rows, c->size());
+  const std::size_t most = std::max<std::size_t>(1, max_rows);
+  const std::size_t stride = rows <= most ? 1 : (rows + most - 1) / most;
+  std::ofstream out(path);
+  out << "#";
+  for (const auto& name : names) out << ' ' << name;
+  out << '\n';
+  char cell[32];
+  for (std::size_t i = 0; i < rows; i += stride) {
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      const double v = i < columns[c]->size() ? (*columns[c])[i] : NAN;
+      std::snprintf(cell, sizeof cell, std::isfinite(v) ? "%.9g" : "NaN", v);
+      out << (c ? " " : "") << cell;
+    }
+    out << '\n';
+  }
+  return out ? "" : "cannot write " + path;
 }
 
 std::string draw_scripts(const std::string& directory, const std::vector<std::string>& names) {

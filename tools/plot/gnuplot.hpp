@@ -18,6 +18,14 @@ namespace mrd::tools::plot {
 // it and carries on without the plots).
 [[nodiscard]] std::string draw(const std::vector<Figure>& figures);
 
+// A data file gnuplot reads: a '#' line naming the columns, then the columns side by side, thinned
+// to at most max_rows rows. A column shorter than the longest, or a value that is not finite, is
+// written NaN: gnuplot lifts the pen there (between loops) and draws nothing past a short column's
+// end. Returns "" or why not.
+[[nodiscard]] std::string write_columns(const std::string& path, const std::vector<std::string>& names,
+                                        const std::vector<const std::vector<double>*>& columns,
+                                        std::size_t max_rows = static_cast<std::size_t>(-1));
+
 // Runs the scripts NAME.gp written into `directory` (their files named relative to it), as a
 // report keeps them beside its HTML. Returns "" or why not.
 [[nodiscard]] std::string draw_scripts(const std::string& directory, const std::vector<std::string>& names);

@@ -200,22 +200,8 @@ void HtmlReport::provenance(const Provenance& p) {
 std::string HtmlReport::data(const std::string& name, const std::vector<std::string>& column_names,
                              const std::vector<const std::vector<double>*>& columns, std::size_t max_rows) {
   const std::string file = name + ".dat";
-  const std::size_t rows = columns.empty() ? 0 : columns.front()->size();
-  const std::size_t stride = std::max<std::size_t>(1, (rows + max_rows - 1) / std::max<std::size_t>(1, max_rows));
-  std::ofstream out(fs::path(directory_) / file);
-  out << "#";
-  for (const auto& c : column_names) out << ' ' << c;
-  out << '\n';
-  char cell[32];
-  for (std::size_t i = 0; i < rows; i += stride) {
-    for (std::size_t c = 0; c < columns.size(); ++c) {
-      const double v = i < columns[c]->size() ? (*columns[c])[i] : NAN;
-      std::snprintf(cell, sizeof cell, std::isfinite(v) ? "%.9g" : "NaN", v);
-      out << (c ? " " : "") << cell;
-    }
-    out << '\n';
-  }
-  if (!out && error_.empty()) error_ = "cannot write " + (fs::path(directory_) / file).string();
+  const std::string why = plot::write_columns((fs::path(directory_) / file).string(), column_names, columns, max_rows);
+  if (!why.empty() && error_.empty()) error_ = why;
   return file;
 }
 

@@ -60,8 +60,9 @@ TEST(PlotScript, AFixedRangeOnlyWhenAsked) {
   figure.panels[0].y.log = true;
   const std::string script = plot::gnuplot_script(figure);
   EXPECT_NE(script.find("set yrange [-1:1]\n"), std::string::npos);
-  EXPECT_NE(script.find("set logscale y\n"), std::string::npos);
+  EXPECT_NE(script.find("set logscale y\nset format y '%g'\n"), std::string::npos);
   EXPECT_EQ(script.find("set xrange ["), std::string::npos);
+  EXPECT_EQ(script.find("set format x"), std::string::npos);
 }
 
 TEST(PlotScript, TheMeasuredIsDrawnOverTheModelsAndNotesOverIt) {
@@ -114,7 +115,7 @@ TEST(PlotScript, PanelsShareAFigureTitleAndCarryNothingOver) {
   figure.panels.push_back({.data = {"other.dat"}, .series = {{"m", plot::column(1), plot::column(2)}}});
   const std::string script = plot::gnuplot_script(figure);
   EXPECT_NE(script.find("set multiplot layout 2,2 title 'preyield_hysteresis: the run''s force'\n"), std::string::npos);
-  EXPECT_EQ(count(script, "unset arrow\nunset label\nunset logscale\nset autoscale\n"), 2u);
+  EXPECT_EQ(count(script, "unset arrow\nunset label\nunset logscale\nset autoscale\nset format\n"), 2u);
   EXPECT_NE(script.find("set title 'second'\n"), std::string::npos);
   EXPECT_NE(script.find("unset title\n"), std::string::npos);
   EXPECT_NE(script.find("set xrange [2:8]\n"), std::string::npos);
