@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <type_traits>
 
 #include "model/effects/sensor_delay.hpp"
 #include "model/observer.hpp"
@@ -158,11 +159,11 @@ TEST(ObserverEffects, SensorDelayCompensationBringsBackTheTrueForce) {
 }
 
 TEST(ObserverEffects, ResetRestartsEveryEffect) {
+  // Every effect of the list on (a new one is in by construction), the thermal drift fast.
   auto m = with([](EffectSet& e) {
-    e.get<CoilLagEffect>().enabled = true;
-    e.get<PreyieldHysteresisEffect>().enabled = true;
-    e.get<ThermalDriftEffect>() = {.enabled = true, .heat_capacity = 500.0};
-    e.get<StrokeEndAirEffect>().enabled = true;
+    e.for_each([]<typename E>(typename E::Params& p) { p.enabled = true; });
+    e.get<ThermalDriftEffect>().heat_capacity = 500.0;
+    e.get<GasSpringEffect>().preload = 100.0;
   });
   Observer a(m), b(m);
   for (int k = 0; k < 3000; ++k) a.step({.displacement = x_at(k), .coil_current = i_at(k)});
@@ -176,6 +177,31 @@ TEST(ObserverEffects, ValidateReportsEffectFieldsUnderTheirPath) {
   const auto report = validate(m);
   ASSERT_FALSE(report.ok());
   EXPECT_EQ(report.issues().front().field, "effects.coil_lag.time_constant");
+}
+
+}  // namespace
+
+namespace {
+
+// Every effect of AllEffects on alone, at its defaults: a new effect is walked by construction.
+// Two are sized by their parameters and are zero at their defaults (the gas spring's preload
+// and stiffness, learned_terms' terms): with them on, the observer gives the base model's force
+// bit for bit.
+TEST(ObserverEffects, EveryEffectOfTheListOnAloneAtItsDefaultsChangesTheForce) {
+  const DamperModel base;
+  std::size_t walked = 0;
+  mrd::model::for_each_effect_type([&]<typename E>() {
+    DamperModel on;
+    on.effects.get<E>().enabled = true;
+    const double change = rms_force_change(base, on);
+    if constexpr (std::is_same_v<E, mrd::model::LearnedTermsEffect> || std::is_same_v<E, GasSpringEffect>) {
+      EXPECT_EQ(change, 0.0) << E::kName;
+    } else {
+      EXPECT_GT(change, 1.0) << E::kName;
+    }
+    ++walked;
+  });
+  EXPECT_EQ(walked, mrd::model::effect_infos().size());
 }
 
 }  // namespace
