@@ -66,6 +66,17 @@ void apply_bound(Bounds& bounds, const std::string& text) {
   if (!lo || !hi || !(*lo <= *hi)) {
     throw CLI::ValidationError("--bounds", name + ": need numbers lo <= hi in '" + text + "'");
   }
+  // Each edge a value the parameter can take, as --start is checked: a box past it searches sets
+  // no material has (a negative a, c >= 1).
+  for (const double edge : {*lo, *hi}) {
+    Point x = to_point(mrd::model::JilesAthertonParams{});  // a valid set, this one parameter moved
+    x[index] = edge;
+    if (const auto report = mrd::model::validate(to_params(x)); !report.ok()) {
+      std::string why = report.to_string();
+      while (why.ends_with('\n')) why.pop_back();
+      throw CLI::ValidationError("--bounds", why);
+    }
+  }
   bounds.lower[index] = *lo;
   bounds.upper[index] = *hi;
 }

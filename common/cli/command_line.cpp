@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -41,19 +42,22 @@ std::optional<std::string> not_a_number(const CLI::ConversionError& e) {
   return text.substr(prefix.size(), eq - prefix.size()) + ": '" + text.substr(eq + 3) + "' is not a number";
 }
 
-// CLI11 reads "-1" into an unsigned count or seed as 2^64 - 1; every unsigned option of the app
-// and its subcommands refuses a sign instead. The validator has no description, so --help keeps
-// its text.
-void refuse_negative_unsigned(CLI::App& app) {
+// CLI11 reads "-1" into an unsigned count or seed as 2^64 - 1, and a number past 2^64 - 1 as
+// 2^64 - 1 too; every unsigned option of the app and its subcommands refuses a sign or such a
+// number instead. The validator has no description, so --help keeps its text.
+void refuse_wrapping_unsigned(CLI::App& app) {
   for (CLI::Option* option : app.get_options()) {
     if (!option->get_type_name().starts_with("UINT")) continue;
     option->check(CLI::Validator(
         [](std::string& text) {
-          return !text.empty() && text.front() == '-' ? text + " is negative: a count or a seed is 0 or more" : std::string();
+          if (!text.empty() && text.front() == '-') return text + " is negative: a count or a seed is 0 or more";
+          errno = 0;
+          std::strtoull(text.c_str(), nullptr, 0);  // as CLI11 reads it
+          return errno == ERANGE ? text + " is too large: a count or a seed is at most 2^64 - 1" : std::string();
         },
         ""));
   }
-  for (CLI::App* sub : app.get_subcommands({})) refuse_negative_unsigned(*sub);
+  for (CLI::App* sub : app.get_subcommands({})) refuse_wrapping_unsigned(*sub);
 }
 
 }  // namespace
@@ -109,7 +113,7 @@ bool check_outputs(std::string_view program, std::initializer_list<const std::st
 }
 
 std::optional<int> parse(CLI::App& app, int argc, const char* const* argv) {
-  refuse_negative_unsigned(app);
+  refuse_wrapping_unsigned(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --help-all, --version
