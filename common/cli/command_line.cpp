@@ -60,6 +60,27 @@ void refuse_wrapping_unsigned(CLI::App& app) {
   for (CLI::App* sub : app.get_subcommands({})) refuse_wrapping_unsigned(*sub);
 }
 
+// CLI11's Range on a whole-number option says "Value abc not in range 2 to 1000" for text that
+// is no number at all, or 2.5; every integer option says "not a whole number" first instead
+// (as strtoll reads it, so 0x20 stays a number). Put in front of the option's own checks; no
+// description, so --help keeps its text.
+void refuse_non_integers(CLI::App& app) {
+  for (CLI::Option* option : app.get_options()) {
+    const std::string type = option->get_type_name();
+    if (!type.starts_with("INT") && !type.starts_with("UINT")) continue;
+    option->transform(CLI::Validator(
+        [](std::string& text) {
+          char* end = nullptr;
+          errno = 0;
+          (void)std::strtoll(text.c_str(), &end, 0);
+          const bool whole = !text.empty() && end != nullptr && *end == '\0';
+          return whole || errno == ERANGE ? std::string() : "'" + text + "' is not a whole number";
+        },
+        ""));
+  }
+  for (CLI::App* sub : app.get_subcommands({})) refuse_non_integers(*sub);
+}
+
 }  // namespace
 
 CLI::Validator finite_in(double lo, double hi) {
@@ -114,6 +135,7 @@ bool check_outputs(std::string_view program, std::initializer_list<const std::st
 
 std::optional<int> parse(CLI::App& app, int argc, const char* const* argv) {
   refuse_wrapping_unsigned(app);
+  refuse_non_integers(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --help-all, --version
