@@ -45,7 +45,7 @@ ScaleUpdate ControlLaw::correct_force_scale(LoadCellStatus status, double measur
   const ScaleUpdate u = correction_->update({.status = status,
                                             .measured = measured,
                                             .predicted = e.force,
-                                            .viscous = observer_.damper().force(e.velocity, 0.0),
+                                            .viscous = observer_.damper().force({.velocity = e.velocity, .yield_stress = 0.0}),
                                             .velocity = e.velocity});
   observer_.set_yield_scale(correction_->scale());
   return u;

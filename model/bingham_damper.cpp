@@ -47,15 +47,16 @@ double BinghamDamper::viscous_force(double velocity) const {
   return std::copysign(viscous_coefficient_ * kFlowReferenceVelocity * std::pow(ratio, flow_index_), velocity);
 }
 
-double BinghamDamper::force(double velocity, double yield_stress) const {
+double BinghamDamper::force(const FlowState& flow) const {
   // Eq. 12 with the regularised sgn of Eq. 11.
-  return sliding_force(yield_stress) * sign_term(velocity) + viscous_force(velocity);
+  return sliding_force(flow.yield_stress) * sign_term(flow.velocity) + viscous_force(flow.velocity);
 }
 
-double BinghamDamper::yield_stress_for(double force, double velocity) const {
-  const double sign = sign_term(velocity);
-  if (sign == 0.0) return (std::fabs(force) - seal_friction_) / yield_gain_;
-  return (force - viscous_force(velocity)) / (yield_gain_ * sign) - seal_friction_ / yield_gain_;  // Eq. 12 for tau_y
+double BinghamDamper::yield_stress_for(const ForceAtVelocity& wanted) const {
+  const double sign = sign_term(wanted.velocity);
+  if (sign == 0.0) return (std::fabs(wanted.force) - seal_friction_) / yield_gain_;
+  // Eq. 12 for tau_y
+  return (wanted.force - viscous_force(wanted.velocity)) / (yield_gain_ * sign) - seal_friction_ / yield_gain_;
 }
 
 }  // namespace mrd::model

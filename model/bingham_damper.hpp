@@ -29,6 +29,18 @@ inline constexpr double kFlowReferenceVelocity = 0.1;
 
 ValidationReport validate(const DamperGeometry& geometry);
 
+// What Eq. 11-12 read: the piston's velocity and the fluid's yield stress.
+struct FlowState {
+  double velocity;      // [m/s]
+  double yield_stress;  // [Pa]
+};
+
+// A force wanted at a velocity, for the inverse of Eq. 11-12.
+struct ForceAtVelocity {
+  double force;     // [N]
+  double velocity;  // [m/s]
+};
+
 // Eq. 11-12 (Bingham): F = (3 Ap L / hd) tau_y sgn(v) + (12 eta L Ap^2 / (pi D hd^3)) v,
 // generalised to a Herschel-Bulkley fluid (the viscous term c0 v_ref sgn(v) |v / v_ref|^n, the
 // standard extension for MR fluids; exactly Eq. 12 at n = 1) and a seal friction F_s sgn(v).
@@ -40,8 +52,8 @@ class BinghamDamper {
  public:
   BinghamDamper(const DamperGeometry& geometry, double viscosity, double flow_index = 1.0);
 
-  // Damper force [N] from velocity [m/s] and yield stress [Pa].
-  [[nodiscard]] double force(double velocity, double yield_stress) const;
+  // Damper force [N] from the velocity and the yield stress.
+  [[nodiscard]] double force(const FlowState& flow) const;
   [[nodiscard]] double yield_force(double yield_stress) const { return yield_gain_ * yield_stress; }
   // Eq. 11-12 inverted: the yield stress [Pa] that gives `force` [N] at `velocity` [m/s],
   //   tau_y = (F - F_v(v)) / ((3 Ap L / hd) s(v / v_s)) - F_s / (3 Ap L / hd).
@@ -50,7 +62,7 @@ class BinghamDamper {
   // less than the viscous term c0 v alone gives. At v = 0 the sign term is 0 and any stress
   // gives no force; the fluid at rest holds up to the yield force either way, so the answer is
   // (|F| - F_s) / (3 Ap L / hd): the field is ready when the motion starts.
-  [[nodiscard]] double yield_stress_for(double force, double velocity) const;
+  [[nodiscard]] double yield_stress_for(const ForceAtVelocity& wanted) const;
   // The regularised sgn(v) of Eq. 11, s(v / v_s) of DamperGeometry::sign_shape (tanh at 0).
   [[nodiscard]] double sign_term(double velocity) const;
   // The viscous force [N]: c0 v for Bingham, c0 v_ref sgn(v) |v / v_ref|^n for Herschel-Bulkley.

@@ -26,7 +26,7 @@ double ForceInverse::aimed_yield_stress(const ForceDemand& demand, double scale,
   // Negative where the demand pushes with the motion or asks less than c0 v (Eq. 11-12). The
   // observer's yield scale multiplies Eq. 13's stress, so the model's stress is the needed one
   // divided by it.
-  const double needed = damper_.yield_stress_for(demand.force, demand.velocity) / scale;
+  const double needed = damper_.yield_stress_for({.force = demand.force, .velocity = demand.velocity}) / scale;
   clipped = !(needed >= min_yield_stress_ && needed <= max_yield_stress_);
   return std::fmin(std::fmax(needed, min_yield_stress_), max_yield_stress_);
 }

@@ -15,16 +15,17 @@ Observer::Observer(const DamperModel& model, const ObserverSettings& settings)
 ObserverEstimate Observer::step(const Measurement& m) {
   const PredictedMotion motion = track(m);
   // One well-predicted branch: with every effect off this is the base model unchanged.
-  if (!effects_.active()) [[likely]] return base_force(motion.velocity, magnetics_.apply_current(m.coil_current));
+  if (!effects_.active()) [[likely]] return base_force(motion, magnetics_.apply_current(m.coil_current));
   const PredictedMotion now = effects_.motion(motion, velocity_filter_.acceleration());
   const double flowing = effects_.coil_current(m.coil_current);
-  return force_with_effects(now, magnetics_.apply_current(flowing), flowing);
+  return force_with_effects(now, {.coil_current = flowing, .B = magnetics_.apply_current(flowing)});
 }
 
 ObserverEstimate Observer::step_at_induction(const Measurement& m, double B) {
   const PredictedMotion motion = track(m);
-  if (!effects_.active()) return base_force(motion.velocity, B);
-  return force_with_effects(effects_.motion(motion, velocity_filter_.acceleration()), B, m.coil_current);
+  if (!effects_.active()) return base_force(motion, B);
+  return force_with_effects(effects_.motion(motion, velocity_filter_.acceleration()),
+                            {.coil_current = m.coil_current, .B = B});
 }
 
 PredictedMotion Observer::track(const Measurement& m) {
@@ -41,24 +42,25 @@ PredictedMotion Observer::track(const Measurement& m) {
           .velocity = velocity_filter_.velocity_after(std::clamp(timing.age, 0.0, 2.0 * sample_period_))};
 }
 
-ObserverEstimate Observer::base_force(double velocity, double B) {
+ObserverEstimate Observer::base_force(const PredictedMotion& now, double B) {
   estimate_.B = B;
   estimate_.yield_stress = yield_stress_(B) * yield_scale_;
-  estimate_.velocity = velocity;
-  estimate_.force = damper_.force(velocity, estimate_.yield_stress);
+  estimate_.velocity = now.velocity;
+  estimate_.force = damper_.force({.velocity = now.velocity, .yield_stress = estimate_.yield_stress});
   return estimate_;
 }
 
-ObserverEstimate Observer::force_with_effects(const PredictedMotion& now, double B, double coil_current) {
-  estimate_.B = B;
+ObserverEstimate Observer::force_with_effects(const PredictedMotion& now, const Field& field) {
+  estimate_.B = field.B;
   estimate_.yield_stress = yield_stress_(estimate_.B) * effects_.yield_factor() * yield_scale_;
   estimate_.velocity = now.velocity;
   const double fluid =
-      effects_.fluid_force(damper_, estimate_.yield_stress, now.velocity) * effects_.force_factor(now.displacement);
+      effects_.fluid_force(damper_, {.velocity = now.velocity, .yield_stress = estimate_.yield_stress}) *
+      effects_.force_factor(now.displacement);
   estimate_.force = fluid + effects_.added_force({.displacement = now.displacement,
                                                   .velocity = now.velocity,
-                                                  .coil_current = coil_current,
-                                                  .B = B});
+                                                  .coil_current = field.coil_current,
+                                                  .B = field.B});
   effects_.dissipate(fluid * now.velocity);
   return estimate_;
 }

@@ -78,10 +78,14 @@ class Observer {
  private:
   // The motion this step, from the measurement: the one place the velocity tracker sees a sample.
   PredictedMotion track(const Measurement& m);
+  // The gap's field this step: the current that flows (after a coil lag) and the B it makes.
+  struct Field {
+    double coil_current;  // [A]
+    double B;             // [T]
+  };
   // Everything after B (Eq. 13, 11-12) with every effect off, and with at least one on.
-  ObserverEstimate base_force(double velocity, double B);
-  // `coil_current` is the current that flows (after a coil lag) [A].
-  ObserverEstimate force_with_effects(const PredictedMotion& now, double B, double coil_current);
+  ObserverEstimate base_force(const PredictedMotion& now, double B);
+  ObserverEstimate force_with_effects(const PredictedMotion& now, const Field& field);
 
   double sample_period_;  // [s]
   JilesAtherton magnetics_;

@@ -7,15 +7,6 @@
 
 namespace mrd::sim {
 
-double SineProfile::displacement(double t) const {
-  return amplitude * std::sin(2.0 * std::numbers::pi * frequency * t);
-}
-
-double SineProfile::velocity(double t) const {
-  const double w = 2.0 * std::numbers::pi * frequency;
-  return amplitude * w * std::cos(w * t);
-}
-
 SineSequenceProfile::SineSequenceProfile(double amplitude, std::vector<double> frequencies, int cycles_each)
     : amplitude_(amplitude), frequencies_(std::move(frequencies)), duration_(0.0) {
   for (const double f : frequencies_) {
@@ -94,6 +85,18 @@ double PlaybackProfile::velocity(double t) const {
   if (t < 0.0 || t >= duration()) return 0.0;
   const std::size_t i = segment(t);
   return (displacement_[i + 1] - displacement_[i]) / (time_[i + 1] - time_[i]);
+}
+
+double DisplacementProfile::duration() const {
+  return std::visit(
+      [](const auto& p) -> double {
+        if constexpr (requires { p.duration(); }) {
+          return p.duration();
+        } else {
+          return 0.0;
+        }
+      },
+      profile_);
 }
 
 }  // namespace mrd::sim

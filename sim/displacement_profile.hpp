@@ -1,18 +1,17 @@
 #pragma once
 
 #include <cstdint>
+#include <type_traits>
+#include <utility>
+#include <variant>
 #include <vector>
+
+#include "common/sine_motion.hpp"
 
 namespace mrd::sim {
 
 // The paper's rig motion: x = A sin(2 pi f t), the LVDT reading in metres.
-struct SineProfile {
-  double amplitude = 0.040;  // [m]
-  double frequency = 0.5;    // [Hz]
-
-  [[nodiscard]] double displacement(double t) const;
-  [[nodiscard]] double velocity(double t) const;
-};
+using SineProfile = SineMotion;
 
 // The paper's sine tests one after the other: whole cycles at each frequency in turn, every
 // segment starting at x = 0 moving up, so the motion is continuous at the joins and keeps its
@@ -74,6 +73,30 @@ class PlaybackProfile {
 
   std::vector<double> time_;
   std::vector<double> displacement_;
+};
+
+// Any one of the profiles above: the motion both the simulated rig (sim/plant) and the run
+// generator (tools/simulation) drive sim::DamperPlant with.
+class DisplacementProfile {
+ public:
+  using Variant = std::variant<SineProfile, SineSequenceProfile, RandomProfile, PlaybackProfile>;
+
+  template <typename Profile>
+    requires std::is_constructible_v<Variant, Profile&&>
+  DisplacementProfile(Profile&& profile) : profile_(std::forward<Profile>(profile)) {}  // NOLINT: a profile is one
+
+  [[nodiscard]] double displacement(double t) const {
+    return std::visit([t](const auto& p) { return p.displacement(t); }, profile_);
+  }
+  [[nodiscard]] double velocity(double t) const {
+    return std::visit([t](const auto& p) { return p.velocity(t); }, profile_);
+  }
+  // [s] of a profile with an end (a sequence, a playback); 0 for an endless one (a sine, a
+  // random motion, which keeps moving past the span it was scaled on).
+  [[nodiscard]] double duration() const;
+
+ private:
+  Variant profile_;
 };
 
 }  // namespace mrd::sim

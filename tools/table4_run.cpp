@@ -59,7 +59,7 @@ Table4RunResult run_table4(const Table4RunOptions& options) {
     s.target_B = intended_B;
     s.B = reading.B;
     s.force = reading.force;
-    s.intended_force = bingham.force(v, yield_stress(intended_B));
+    s.intended_force = bingham.force({.velocity = v, .yield_stress = yield_stress(intended_B)});
     s.observer_force = seen.estimate.force;
     if (i >= first_cycle) {
       B_error.add(s.B - s.target_B);

@@ -1,12 +1,11 @@
 #pragma once
 
 #include <chrono>
-#include <cmath>
 #include <cstdint>
-#include <numbers>
 #include <optional>
 #include <random>
 
+#include "common/sine_motion.hpp"
 #include "hal/clock.hpp"
 #include "hal/mock/mock_hal.hpp"
 
@@ -20,7 +19,7 @@ class MockMotion {
   // `demand_damping` [N s/m]: the mock demand asks for that coefficient times the motion's
   // velocity, a dissipative demand for force mode (a number, not physics: hal knows none).
   MockMotion(double amplitude, double frequency, double noise_rms, std::uint32_t seed, double demand_damping = 0.0)
-      : amplitude_(amplitude), frequency_(frequency), demand_damping_(demand_damping), rng_(seed),
+      : sine_{.amplitude = amplitude, .frequency = frequency}, demand_damping_(demand_damping), rng_(seed),
         noise_(0.0, noise_rms) {}
 
   // Before each cycle: the mock clock to `now`, the LVDT to the motion at `now`, the demand to
@@ -30,17 +29,15 @@ class MockMotion {
     hal.clock.set(now);
     const double t = std::chrono::duration<double>(now - *start_).count();
     const double noise = noise_.stddev() > 0.0 ? noise_(rng_) : 0.0;
-    const double w = 2.0 * std::numbers::pi * frequency_;
-    hal.lvdt.set_value(amplitude_ * std::sin(w * t) + noise);
-    hal.demand.set_value(demand_damping_ * amplitude_ * w * std::cos(w * t));
+    hal.lvdt.set_value(sine_.displacement(t) + noise);
+    hal.demand.set_value(demand_damping_ * sine_.velocity(t));
     // The mock load cell reads the demand: a rig that delivers exactly what is asked (a number
     // for the wiring, as the demand is).
-    hal.load_cell.set_value(demand_damping_ * amplitude_ * w * std::cos(w * t));
+    hal.load_cell.set_value(demand_damping_ * sine_.velocity(t));
   }
 
  private:
-  double amplitude_;  // [m]
-  double frequency_;  // [Hz]
+  SineMotion sine_;
   double demand_damping_;  // [N s/m]
   std::optional<Timestamp> start_;
   std::mt19937_64 rng_;

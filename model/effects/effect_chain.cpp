@@ -76,16 +76,16 @@ double EffectChain::yield_factor() const {
   return factor;
 }
 
-double EffectChain::fluid_force(const BinghamDamper& damper, double yield_stress, double velocity) {
+double EffectChain::fluid_force(const BinghamDamper& damper, const FlowState& flow) {
   double viscosity_factor = 1.0;
   for_each_enabled([&]<typename E>(const typename E::Element& e) {
     if constexpr (requires { E::viscosity_factor(e); }) viscosity_factor *= E::viscosity_factor(e);
   });
   // The seal's friction slides with the fluid's yield: the effects shape both alike.
-  const FluidForceParts parts{.yield_force = damper.sliding_force(yield_stress),
-                              .sign_term = damper.sign_term(velocity),
-                              .viscous_force = damper.viscous_force(velocity) * viscosity_factor,
-                              .velocity = velocity};
+  const FluidForceParts parts{.yield_force = damper.sliding_force(flow.yield_stress),
+                              .sign_term = damper.sign_term(flow.velocity),
+                              .viscous_force = damper.viscous_force(flow.velocity) * viscosity_factor,
+                              .velocity = flow.velocity};
   double fluid = parts.yield_force * parts.sign_term + parts.viscous_force;
   for_each_enabled([&]<typename E>(typename E::Element& e) {
     if constexpr (requires { E::fluid_force(e, parts); }) fluid = E::fluid_force(e, parts);

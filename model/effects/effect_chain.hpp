@@ -45,7 +45,7 @@ class EffectChain {
   [[nodiscard]] double command_for(double flowing, double dt, const CurrentRange& commands) const;
   [[nodiscard]] double yield_factor() const;
   // Steps 3-4: the fluid force [N] from the yield stress already scaled by yield_factor().
-  double fluid_force(const BinghamDamper& damper, double yield_stress, double velocity);
+  double fluid_force(const BinghamDamper& damper, const FlowState& flow);
   double force_factor(double displacement);
   double added_force(const ForceState& state);
   void dissipate(double power);

@@ -61,10 +61,16 @@ struct PredictedMotion {
   double velocity;      // [m/s]
 };
 
-[[nodiscard]] inline PredictedMotion predict_motion(const PredictedMotion& reading, double acceleration,
-                                                    double delay) {
-  return {.displacement = reading.displacement + delay * (reading.velocity + 0.5 * delay * acceleration),
-          .velocity = reading.velocity + delay * acceleration};
+// How far ahead to predict, and the acceleration to predict with.
+struct Lookahead {
+  double delay;         // [s]
+  double acceleration;  // [m/s^2]
+};
+
+[[nodiscard]] inline PredictedMotion predict_motion(const PredictedMotion& reading, const Lookahead& ahead) {
+  const double d = ahead.delay;
+  return {.displacement = reading.displacement + d * (reading.velocity + 0.5 * d * ahead.acceleration),
+          .velocity = reading.velocity + d * ahead.acceleration};
 }
 
 // The observer's side of the effect: the prediction above with the configured delay.
@@ -72,7 +78,7 @@ class SensorDelayPrediction {
  public:
   SensorDelayPrediction(const SensorDelayParams& params, double /*sample_period*/) : delay_(params.delay) {}
   [[nodiscard]] PredictedMotion predict(const PredictedMotion& reading, double acceleration) const {
-    return predict_motion(reading, acceleration, delay_);
+    return predict_motion(reading, {.delay = delay_, .acceleration = acceleration});
   }
 
  private:

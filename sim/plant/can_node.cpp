@@ -107,8 +107,7 @@ std::optional<hal::can::Frame> demand_frame(std::uint32_t id, double demand, con
   return d.frame;
 }
 
-void CanNode::send(double t, double lvdt, double coil_current, std::optional<double> demand,
-                   const ActiveFaults& faults) {
+void CanNode::send(double t, const SensorReadings& readings, const ActiveFaults& faults) {
   using hal::can::EncodeStatus;
   const double dt = t - last_t_;
   last_t_ = t;
@@ -126,7 +125,7 @@ void CanNode::send(double t, double lvdt, double coil_current, std::optional<dou
   const bool repeat = faults.has(FaultKind::kBadCounter);
   const auto counter = repeat ? static_cast<std::uint8_t>((lvdt_counter_ + 15) & 0x0F) : lvdt_counter_;
   if (!repeat) lvdt_counter_ = static_cast<std::uint8_t>((lvdt_counter_ + 1) & 0x0F);
-  const auto encoded = hal::can::encode_lvdt(ids_.lvdt_id, {lvdt, faults.has(FaultKind::kSensorFault), counter});
+  const auto encoded = hal::can::encode_lvdt(ids_.lvdt_id, {readings.lvdt, faults.has(FaultKind::kSensorFault), counter});
   std::uniform_real_distribution<double> uniform(0.0, 100.0);
   const bool lost = faults.has(FaultKind::kLvdtSilent) ||
                     (faults.has(FaultKind::kFrameLoss) && uniform(rng_) < faults.value_of(FaultKind::kFrameLoss));
@@ -148,7 +147,7 @@ void CanNode::send(double t, double lvdt, double coil_current, std::optional<dou
   const bool fault = faults.has(FaultKind::kDriverFault);
   set_fault_pull(fault);
   if (feedback_) {
-    const auto fb = hal::can::encode_feedback(ids_.feedback_id, {coil_current, fault, feedback_counter_});
+    const auto fb = hal::can::encode_feedback(ids_.feedback_id, {readings.coil_current, fault, feedback_counter_});
     feedback_counter_ = static_cast<std::uint8_t>((feedback_counter_ + 1) & 0x0F);
     if (fb.status == EncodeStatus::kOk) {
       transmit(to_wire(fb.frame, ids_.extended_ids));
@@ -156,8 +155,8 @@ void CanNode::send(double t, double lvdt, double coil_current, std::optional<dou
     }
   }
   // The outer controller of force mode.
-  if (ids_.use_demand && demand) {
-    if (const auto frame = demand_frame(ids_.demand_id, *demand, faults, demand_counter_)) {
+  if (ids_.use_demand && readings.demand) {
+    if (const auto frame = demand_frame(ids_.demand_id, *readings.demand, faults, demand_counter_)) {
       transmit(to_wire(*frame, ids_.extended_ids));
     }
   }

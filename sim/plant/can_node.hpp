@@ -50,7 +50,7 @@ class CanNode {
   // Loop side, once per period at plant time t [s].
   // `demand` [N] (none: the plant is not the outer controller) goes out as a Force_Demand
   // frame when the controller receives it (demand_frame).
-  void send(double t, double lvdt, double coil_current, std::optional<double> demand, const ActiveFaults& faults);
+  void send(double t, const SensorReadings& readings, const ActiveFaults& faults);
   // Loop side, after send(): the rig's measured force [N] as a Load_Cell frame when the
   // controller receives one (force mode's load-cell feedback).
   void send_load_cell(double force);

@@ -144,13 +144,13 @@ void ModbusServer::close_all() {
   listen_fd_ = -1;
 }
 
-void ModbusServer::publish(double lvdt, double coil_current, std::optional<double> demand,
-                           const ActiveFaults& faults) {
+void ModbusServer::publish(const SensorReadings& readings, const ActiveFaults& faults) {
   const auto& r = layout_.registers;
-  if (const auto e = encode_register(lvdt, r.lvdt); e.status == CodecStatus::kOk) {
+  const std::optional<double>& demand = readings.demand;
+  if (const auto e = encode_register(readings.lvdt, r.lvdt); e.status == CodecStatus::kOk) {
     lvdt_words_.store(pack(e), std::memory_order_relaxed);
   }
-  if (const auto e = encode_register(coil_current, r.current_feedback); e.status == CodecStatus::kOk) {
+  if (const auto e = encode_register(readings.coil_current, r.current_feedback); e.status == CodecStatus::kOk) {
     feedback_words_.store(pack(e), std::memory_order_relaxed);
   }
   if (demand && !faults.has(FaultKind::kDemandStale)) {

@@ -51,7 +51,7 @@ class ModbusServer {
   // `demand` [N] (none: the plant is not the outer controller) goes to the demand registers
   // when the controller reads them, and counts in its counter register when it has one;
   // demand_stale freezes both, demand_invalid writes the fault's value instead.
-  void publish(double lvdt, double coil_current, std::optional<double> demand, const ActiveFaults& faults);
+  void publish(const SensorReadings& readings, const ActiveFaults& faults);
   // Loop side: the rig's measured force [N] for the load-cell registers, when the controller
   // reads them (force mode's load-cell feedback).
   void publish_load_cell(double force);

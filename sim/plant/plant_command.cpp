@@ -50,7 +50,7 @@ std::optional<PlantConfig> load_config(const PlantCommand& command) {
 std::unique_ptr<Rig> make_rig(PlantConfig& config) {
   try {
     auto motion = make_motion(config);
-    if (config.duration == 0.0) config.duration = motion_length(motion);
+    if (config.duration == 0.0) config.duration = motion.duration();
     return std::make_unique<Rig>(config, std::move(motion));
   } catch (const record::InputError& e) {
     std::fprintf(stderr, "mrd-plant: profile.file: %s\n", e.what());

@@ -42,8 +42,9 @@ struct PlantBuses {
   }
   // One period's readings onto every bus; `demand`: force mode's outer controller, when it sends one.
   void serve(double t, const RigSample& s, std::optional<double> demand) {
-    if (modbus) modbus->publish(s.lvdt, s.reading.coil_current, demand, s.faults);
-    if (can) can->send(t, s.lvdt, s.reading.coil_current, demand, s.faults);
+    const SensorReadings readings{.lvdt = s.lvdt, .coil_current = s.reading.coil_current, .demand = demand};
+    if (modbus) modbus->publish(readings, s.faults);
+    if (can) can->send(t, readings, s.faults);
     // The load cell, when the controller reads one from our buses: the rig's measured force.
     if (modbus) modbus->publish_load_cell(s.reading.measured_force);
     if (can) can->send_load_cell(s.reading.measured_force);
@@ -177,7 +178,8 @@ void Plant::cycle(hal::Timestamp release) {
   }
   const double t = std::chrono::duration<double>(release - *start_).count();
   if (!fault_origin_ && (config_.faults_from == FaultClock::kStart || buses_.commanded_yet())) fault_origin_ = t;
-  const RigSample& s = rig_.step(t, fault_origin_ ? t - *fault_origin_ : -1.0, buses_.commanded_current());
+  const RigSample& s = rig_.step(
+      {.t = t, .fault_t = fault_origin_ ? t - *fault_origin_ : -1.0, .commanded = buses_.commanded_current()});
   // Force mode's outer controller: c v, with the sign of the motion the damper resists.
   buses_.serve(t, s,
                config_.sends_demand() ? std::optional(config_.demand_damping * s.reading.sensor_velocity) : std::nullopt);

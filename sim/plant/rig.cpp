@@ -32,21 +32,6 @@ Motion make_motion(const PlantConfig& config) {
   return sim::SineProfile{};
 }
 
-double motion_length(const Motion& motion) {
-  return std::visit(
-      [](const auto& m) -> double {
-        using M = std::decay_t<decltype(m)>;
-        if constexpr (std::is_same_v<M, sim::SineProfile>) {
-          return 0.0;
-        } else if constexpr (std::is_same_v<M, sim::RandomProfile>) {
-          return 0.0;  // its span is in the config; it keeps moving past it
-        } else {
-          return m.duration();
-        }
-      },
-      motion);
-}
-
 Rig::Rig(const PlantConfig& config, Motion motion)
     : motion_(std::move(motion)),
       plant_(config.truth(), sim::PlantSettings{.sample_period = config.period(),
@@ -55,14 +40,13 @@ Rig::Rig(const PlantConfig& config, Motion motion)
                                                 .seed = config.seed}),
       faults_(config.faults) {}
 
-const RigSample& Rig::step(double t, double fault_t, double commanded) {
-  const auto [x, v] = std::visit(
-      [t](const auto& m) { return std::pair{m.displacement(t), m.velocity(t)}; }, motion_);
-  last_.time = t;
-  last_.commanded = commanded;
-  last_.reading = plant_.step({.displacement = x, .velocity = v, .coil_current = commanded});
-  last_.fault_time = fault_t;
-  last_.faults = fault_t < 0.0 ? ActiveFaults{} : active_faults(faults_, fault_t);
+const RigSample& Rig::step(const RigInput& in) {
+  last_.time = in.t;
+  last_.commanded = in.commanded;
+  last_.reading = plant_.step(
+      {.displacement = motion_.displacement(in.t), .velocity = motion_.velocity(in.t), .coil_current = in.commanded});
+  last_.fault_time = in.fault_t;
+  last_.faults = in.fault_t < 0.0 ? ActiveFaults{} : active_faults(faults_, in.fault_t);
   double lvdt = last_.reading.lvdt_displacement;
   if (last_.faults.has(FaultKind::kLvdtFrozen)) {
     if (!frozen_) frozen_ = last_.lvdt;  // the value it had when the fault began

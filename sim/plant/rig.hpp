@@ -23,12 +23,23 @@ struct ActiveFaults {
 // Overlapping faults of one kind: the later one in the file sets the value.
 [[nodiscard]] ActiveFaults active_faults(const std::vector<Fault>& faults, double t);
 
-using Motion = std::variant<sim::SineProfile, sim::SineSequenceProfile, sim::RandomProfile,
-                            sim::PlaybackProfile>;
+using Motion = sim::DisplacementProfile;
 // Builds the profile; playback reads its file (throws record::InputError when it is bad).
 [[nodiscard]] Motion make_motion(const PlantConfig& config);
-// [s]; 0 for an endless profile (sine).
-[[nodiscard]] double motion_length(const Motion& motion);
+
+// What the rig's sensors put on its buses in one period.
+struct SensorReadings {
+  double lvdt;                   // [m], after the LVDT faults
+  double coil_current;           // [A], the driver's feedback
+  std::optional<double> demand;  // [N], force mode's outer controller; none when the plant is not it
+};
+
+// One period of the rig: the plant time, the fault clock and the driver's setpoint.
+struct RigInput {
+  double t;          // [s] since the start
+  double fault_t;    // [s] on the fault clock; < 0: no fault yet
+  double commanded;  // [A], the setpoint the driver holds (0 when it is disabled)
+};
 
 // One plant step: what happened and what the LVDT reports.
 struct RigSample {
@@ -46,9 +57,7 @@ class Rig {
  public:
   Rig(const PlantConfig& config, Motion motion);
 
-  // At plant time t and fault time fault_t (< 0: no fault yet); `commanded` is the setpoint
-  // the driver holds this period (0 when it is disabled).
-  const RigSample& step(double t, double fault_t, double commanded);
+  const RigSample& step(const RigInput& in);
   [[nodiscard]] const RigSample& last() const { return last_; }
 
  private:

@@ -45,7 +45,7 @@ struct Rig {
     const ScaleUpdate u = correction.update({.status = status,
                                              .measured = measured,
                                              .predicted = predicted,
-                                             .viscous = controller.damper().force(velocity, 0.0),
+                                             .viscous = controller.damper().force({.velocity = velocity, .yield_stress = 0.0}),
                                              .velocity = velocity});
     controller.set_yield_scale(correction.scale());
     return u;

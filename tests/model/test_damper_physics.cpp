@@ -115,29 +115,29 @@ TEST(BinghamEq12, CoefficientsMatchHandComputedValues) {
 
 TEST(BinghamEq12, ForceMatchesHandComputedValues) {
   const BinghamDamper damper(DamperGeometry{}, 2.25);
-  EXPECT_NEAR(damper.force(0.1, 5e4), 40640.562, 1e-3);
-  EXPECT_NEAR(damper.force(-0.1, 5e4), -40640.562, 1e-3);
+  EXPECT_NEAR(damper.force({.velocity = 0.1, .yield_stress = 5e4}), 40640.562, 1e-3);
+  EXPECT_NEAR(damper.force({.velocity = -0.1, .yield_stress = 5e4}), -40640.562, 1e-3);
   // Inside the regularisation band: tanh(0.5) of the yield force.
-  EXPECT_NEAR(damper.force(0.5e-3, 5e4), 16357.723, 1e-3);
-  EXPECT_EQ(damper.force(0.0, 5e4), 0.0);
+  EXPECT_NEAR(damper.force({.velocity = 0.5e-3, .yield_stress = 5e4}), 16357.723, 1e-3);
+  EXPECT_EQ(damper.force({.velocity = 0.0, .yield_stress = 5e4}), 0.0);
 }
 
 // Eq. 12 inverted (BinghamDamper::yield_stress_for), against the forward hand values above:
 // at 0.1 m/s tanh is 1 to 1e-86, so tau = (F - c0 v) / (3 Ap L / hd); in the band, tanh(0.5).
 TEST(BinghamEq12, YieldStressForInvertsTheHandComputedForces) {
   const BinghamDamper damper(DamperGeometry{}, 2.25);
-  EXPECT_NEAR(damper.yield_stress_for(40640.562, 0.1), 5e4, 2e-3);
-  EXPECT_NEAR(damper.yield_stress_for(-40640.562, -0.1), 5e4, 2e-3);
-  EXPECT_NEAR(damper.yield_stress_for(16357.723, 0.5e-3), 5e4, 2e-3);
+  EXPECT_NEAR(damper.yield_stress_for({.force = 40640.562, .velocity = 0.1}), 5e4, 2e-3);
+  EXPECT_NEAR(damper.yield_stress_for({.force = -40640.562, .velocity = -0.1}), 5e4, 2e-3);
+  EXPECT_NEAR(damper.yield_stress_for({.force = 16357.723, .velocity = 0.5e-3}), 5e4, 2e-3);
   // The viscous force alone needs none (c0 is rounded to 1e-3 N s/m: 1e-4 N, 1.4e-4 Pa).
-  EXPECT_NEAR(damper.yield_stress_for(53005.624 * 0.1, 0.1), 0.0, 2e-4);
+  EXPECT_NEAR(damper.yield_stress_for({.force = 53005.624 * 0.1, .velocity = 0.1}), 0.0, 2e-4);
 }
 
 TEST(BinghamEq12, YieldStressForRoundTripsThroughTheForce) {
   const BinghamDamper damper(DamperGeometry{}, 2.25);
   for (const double v : {-0.3, -2e-3, -1e-4, 1e-5, 7e-4, 0.05}) {
     for (const double tau : {0.0, 146.25, 1e4, 6e4}) {
-      EXPECT_NEAR(damper.yield_stress_for(damper.force(v, tau), v), tau, 1e-9 * (tau + 1e4)) << v << " " << tau;
+      EXPECT_NEAR(damper.yield_stress_for({.force = damper.force({.velocity = v, .yield_stress = tau}), .velocity = v}), tau, 1e-9 * (tau + 1e4)) << v << " " << tau;
     }
   }
 }
@@ -147,11 +147,11 @@ TEST(BinghamEq12, YieldStressForRoundTripsThroughTheForce) {
 // the yield force in either direction).
 TEST(BinghamEq12, YieldStressForIsNegativeForForcesNoFieldGivesAndHoldsAtRest) {
   const BinghamDamper damper(DamperGeometry{}, 2.25);
-  EXPECT_LT(damper.yield_stress_for(-1e4, 0.05), 0.0);
-  EXPECT_LT(damper.yield_stress_for(1e4, -0.05), 0.0);
-  EXPECT_LT(damper.yield_stress_for(0.5 * 53005.624 * 0.05, 0.05), 0.0);
-  EXPECT_NEAR(damper.yield_stress_for(7068.0, 0.0), 1e4, 1e-9);
-  EXPECT_NEAR(damper.yield_stress_for(-7068.0, 0.0), 1e4, 1e-9);
+  EXPECT_LT(damper.yield_stress_for({.force = -1e4, .velocity = 0.05}), 0.0);
+  EXPECT_LT(damper.yield_stress_for({.force = 1e4, .velocity = -0.05}), 0.0);
+  EXPECT_LT(damper.yield_stress_for({.force = 0.5 * 53005.624 * 0.05, .velocity = 0.05}), 0.0);
+  EXPECT_NEAR(damper.yield_stress_for({.force = 7068.0, .velocity = 0.0}), 1e4, 1e-9);
+  EXPECT_NEAR(damper.yield_stress_for({.force = -7068.0, .velocity = 0.0}), 1e4, 1e-9);
 }
 
 TEST(BinghamEq12, SignRegularisationReachesThe995PercentPointAtThreeScales) {
@@ -159,7 +159,7 @@ TEST(BinghamEq12, SignRegularisationReachesThe995PercentPointAtThreeScales) {
   g.sign_velocity_scale = 2e-3;
   const BinghamDamper damper(g, 0.0 + 1e-12);
   const double yield = damper.yield_force(1e4);
-  EXPECT_NEAR(damper.force(6e-3, 1e4) / yield, std::tanh(3.0), 1e-6);
+  EXPECT_NEAR(damper.force({.velocity = 6e-3, .yield_stress = 1e4}) / yield, std::tanh(3.0), 1e-6);
 }
 
 }  // namespace

@@ -117,11 +117,11 @@ TEST(SealFriction, AddsAConstantForceAgainstTheMotionAndInvertsWithTheYieldStres
   const BinghamDamper with(g, 2.25);
   const BinghamDamper without(DamperGeometry{}, 2.25);
   // At 0 A and well past v_s the difference is the friction; against the motion both ways.
-  EXPECT_NEAR(with.force(0.1, 0.0) - without.force(0.1, 0.0), 120.0, 1e-9);
-  EXPECT_NEAR(with.force(-0.1, 0.0) - without.force(-0.1, 0.0), -120.0, 1e-9);
+  EXPECT_NEAR(with.force({.velocity = 0.1, .yield_stress = 0.0}) - without.force({.velocity = 0.1, .yield_stress = 0.0}), 120.0, 1e-9);
+  EXPECT_NEAR(with.force({.velocity = -0.1, .yield_stress = 0.0}) - without.force({.velocity = -0.1, .yield_stress = 0.0}), -120.0, 1e-9);
   for (const double tau : {0.0, 5e3, 4e4}) {
     for (const double v : {-0.2, -0.003, 0.0005, 0.05}) {
-      EXPECT_NEAR(with.yield_stress_for(with.force(v, tau), v), tau, 1e-6 * (tau + 1.0)) << v << " " << tau;
+      EXPECT_NEAR(with.yield_stress_for({.force = with.force({.velocity = v, .yield_stress = tau}), .velocity = v}), tau, 1e-6 * (tau + 1.0)) << v << " " << tau;
     }
   }
 }

@@ -209,7 +209,7 @@ TEST(ForceInverse, ClipsANonDissipativeDemandToTheLeastForce) {
     EXPECT_EQ(command.target_B, 0.0);
     EXPECT_EQ(command.yield_force, bingham.yield_force(zero_field_stress));
     if (k > 100) {
-      EXPECT_NEAR(delivered, bingham.force(v, zero_field_stress), 10.0) << k;
+      EXPECT_NEAR(delivered, bingham.force({.velocity = v, .yield_stress = zero_field_stress}), 10.0) << k;
     }
   }
 }
@@ -222,7 +222,7 @@ TEST(ForceInverse, TheClipLiesAtTheLeastForceOfTheMotionInBothDirections) {
   const mrd::model::BinghamDamper bingham(m.geometry, m.fluid.viscosity);
   const double zero_field_stress = 1083.2 * m.fluid.volume_fraction - 287.03;
   for (const double v : {0.05, -0.05}) {
-    const double least = bingham.force(v, zero_field_stress);
+    const double least = bingham.force({.velocity = v, .yield_stress = zero_field_stress});
     ASSERT_GT(least * v, 0.0);
     const auto clipped = [&](double force) {
       Observer law(m);

@@ -47,7 +47,7 @@ class ServedDemand {
       error_ = started.error;
       return;
     }
-    server_.publish(0.001, 0.0, first_demand, mrd::plant::ActiveFaults{});
+    server_.publish({.lvdt = 0.001, .coil_current = 0.0, .demand = first_demand}, mrd::plant::ActiveFaults{});
     layout_.tcp.port = server_.port();
     backend_ = std::make_unique<mrd::hal::modbus::ModbusBackend>(layout_, clock_);
     if (!backend_->start().ok) error_ = "the back end did not start";
@@ -172,18 +172,18 @@ TEST(PlantDemand, TheModbusServerCountsDemandsAndServesTheDemandFaults) {
   // The first demand sent is count 1, which the back end takes as its reference.
   EXPECT_TRUE(served.no_demand_over_polls()) << "the count found at the start gave a demand";
 
-  served.server().publish(0.001, 0.0, 200.0, mrd::plant::ActiveFaults{});
+  served.server().publish({.lvdt = 0.001, .coil_current = 0.0, .demand = 200.0}, mrd::plant::ActiveFaults{});
   auto d = served.next_demand();
   ASSERT_TRUE(d.has_value());
   EXPECT_DOUBLE_EQ(d->value, 200.0);
   EXPECT_EQ(d->sequence, 2u);
 
   // Stale: periods go by with new demands the server does not serve.
-  for (int i = 0; i < 5; ++i) served.server().publish(0.001, 0.0, 300.0 + i, faults_with(FaultKind::kDemandStale));
+  for (int i = 0; i < 5; ++i) served.server().publish({.lvdt = 0.001, .coil_current = 0.0, .demand = 300.0 + i}, faults_with(FaultKind::kDemandStale));
   EXPECT_TRUE(served.no_demand_over_polls()) << "a stale demand was served as new";
 
   // Invalid: the fault's value, counted like any demand.
-  served.server().publish(0.001, 0.0, 400.0, faults_with(FaultKind::kDemandInvalid, 120e3));
+  served.server().publish({.lvdt = 0.001, .coil_current = 0.0, .demand = 400.0}, faults_with(FaultKind::kDemandInvalid, 120e3));
   d = served.next_demand();
   ASSERT_TRUE(d.has_value());
   EXPECT_DOUBLE_EQ(d->value, 120e3);
@@ -192,7 +192,7 @@ TEST(PlantDemand, TheModbusServerCountsDemandsAndServesTheDemandFaults) {
   EXPECT_EQ(checker.check(d, served.now()), mrd::control::SampleCheck::kOutOfRange);
 
   // Not the outer controller: nothing counted, nothing new.
-  served.server().publish(0.001, 0.0, std::nullopt, mrd::plant::ActiveFaults{});
+  served.server().publish({.lvdt = 0.001, .coil_current = 0.0, .demand = std::nullopt}, mrd::plant::ActiveFaults{});
   EXPECT_TRUE(served.no_demand_over_polls());
 }
 

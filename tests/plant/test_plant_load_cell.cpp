@@ -19,7 +19,7 @@ TEST(PlantLoadCell, TheModbusServerServesTheMeasuredForceTheControllersBackEndRe
   mrd::plant::ModbusServer server(layout, "127.0.0.1", 0, "", 1);
   const auto started = server.start();
   ASSERT_TRUE(started.ok) << started.error;
-  server.publish(0.001, 0.0, 0.0, mrd::plant::ActiveFaults{});
+  server.publish({.lvdt = 0.001, .coil_current = 0.0, .demand = 0.0}, mrd::plant::ActiveFaults{});
   server.publish_load_cell(-27182.8);
 
   layout.tcp.port = server.port();

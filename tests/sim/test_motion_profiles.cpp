@@ -11,6 +11,7 @@
 namespace {
 namespace motion_profiles {  // its own names in the unity build
 
+using mrd::sim::DisplacementProfile;
 using mrd::sim::PlaybackProfile;
 using mrd::sim::RandomProfile;
 using mrd::sim::SineProfile;
@@ -107,6 +108,20 @@ TEST(PlaybackProfile, InterpolatesFromTheFirstSampleAndHoldsTheLast) {
   EXPECT_DOUBLE_EQ(playback.duration(), 3.0);
   expect_motion(playback, {{-1.0, 0.0, 0.0}, {0.0, 0.0, 0.010}, {0.5, 0.005, 0.010}, {1.0, 0.010, -0.010},
                            {1.5, 0.005, -0.010}, {2.0, 0.0, -0.010}, {3.0, -0.010, 0.0}, {5.0, -0.010, 0.0}});
+}
+
+// The one profile type the rig and the run generator hold: it moves as the profile it holds and
+// ends where that one ends, never for an endless sine or random motion.
+TEST(DisplacementProfile, MovesAsTheProfileItHoldsAndEndsWhereItEnds) {
+  const DisplacementProfile sine = SineProfile{.amplitude = 0.005, .frequency = 4.0};
+  const double peak_speed = 0.005 * 8.0 * 3.14159265358979324;
+  expect_motion(sine, {{0.0, 0.0, peak_speed}, {1.0 / 16.0, 0.005, 0.0}});
+  EXPECT_EQ(sine.duration(), 0.0);
+  EXPECT_EQ(DisplacementProfile(RandomProfile(0.02, 0.5, 3.0, 2.0, 1e-3, 5)).duration(), 0.0);
+  EXPECT_DOUBLE_EQ(DisplacementProfile(SineSequenceProfile(0.01, {1.0, 2.0, 0.5}, 2)).duration(), 7.0);
+  const DisplacementProfile playback = PlaybackProfile({10.0, 11.0, 13.0}, {0.0, 0.010, -0.010});
+  EXPECT_DOUBLE_EQ(playback.duration(), 3.0);
+  expect_motion(playback, {{0.5, 0.005, 0.010}, {1.5, 0.005, -0.010}});
 }
 
 }  // namespace motion_profiles

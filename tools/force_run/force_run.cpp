@@ -51,10 +51,10 @@ model::DamperModel with_yield_drift(model::DamperModel m, double fraction) {
 ReachableForce reachable_force(const model::DamperModel& damper, double min_yield_stress, double max_yield_stress,
                                double desired, double velocity) {
   const model::BinghamDamper bingham(damper.geometry, damper.fluid.viscosity, damper.fluid.flow_index);
-  const double needed = bingham.yield_stress_for(desired, velocity);
+  const double needed = bingham.yield_stress_for({.force = desired, .velocity = velocity});
   const double tau = std::clamp(needed, min_yield_stress, max_yield_stress);
   // At v = 0 the fluid holds any force up to its yield force (BinghamDamper::yield_stress_for).
-  const double force = velocity == 0.0 ? std::copysign(bingham.sliding_force(tau), desired) : bingham.force(velocity, tau);
+  const double force = velocity == 0.0 ? std::copysign(bingham.sliding_force(tau), desired) : bingham.force({.velocity = velocity, .yield_stress = tau});
   return {force, needed >= min_yield_stress && needed <= max_yield_stress};
 }
 
@@ -185,7 +185,7 @@ ForceRunResult run_force_tracking(const DemandProfile& profile, const ForceRunOp
         correction->update({.status = control::LoadCellStatus::kFresh,
                             .measured = measured,
                             .predicted = predicted.force,
-                            .viscous = observer.damper().force(v, 0.0),
+                            .viscous = observer.damper().force({.velocity = v, .yield_stress = 0.0}),
                             .velocity = v});
         observer.set_yield_scale(correction->scale());
         f.yield_scale.push_back(correction->scale());

@@ -48,7 +48,7 @@ double InverseBingham::current_for(double B) const {
 double InverseBingham::command(const StrategyInput& in, const model::Observer&) {
   double tau = min_yield_stress_;
   if (std::isfinite(in.demand.force) && std::isfinite(in.demand.velocity)) {
-    tau = std::fmin(std::fmax(damper_.yield_stress_for(in.demand.force, in.demand.velocity), min_yield_stress_),
+    tau = std::fmin(std::fmax(damper_.yield_stress_for({.force = in.demand.force, .velocity = in.demand.velocity}), min_yield_stress_),
                     max_yield_stress_);
   }
   return driver_.update(current_for(yield_stress_.induction(tau)));

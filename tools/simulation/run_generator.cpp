@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <memory>
-#include <variant>
 
 #include "model/current_schedule.hpp"
 #include "model/observer.hpp"
@@ -29,28 +28,12 @@ bool is_random(RunProfile p) { return p == RunProfile::kRandom || p == RunProfil
 bool scheduled(RunProfile p) { return p == RunProfile::kTable4 || p == RunProfile::kPaperSines; }
 
 // The rig's motion: one of the three displacement profiles.
-class Motion {
- public:
-  explicit Motion(const RunOptions& o) {
-    if (is_sine(o.profile)) {
-      motion_ = sim::SineProfile{o.amplitude, o.frequency};
-    } else if (o.profile == RunProfile::kPaperSines) {
-      motion_ = sim::SineSequenceProfile(o.amplitude, kPaperFrequencies, o.cycles);
-    } else {
-      motion_ = sim::RandomProfile(o.amplitude, o.damper.random_low, o.damper.random_high, o.duration,
-                                   1.0 / o.rate, o.seed + 17);
-    }
-  }
-  [[nodiscard]] double x(double t) const {
-    return std::visit([t](const auto& m) { return m.displacement(t); }, motion_);
-  }
-  [[nodiscard]] double v(double t) const {
-    return std::visit([t](const auto& m) { return m.velocity(t); }, motion_);
-  }
-
- private:
-  std::variant<sim::SineProfile, sim::SineSequenceProfile, sim::RandomProfile> motion_;
-};
+sim::DisplacementProfile make_motion(const RunOptions& o) {
+  if (is_sine(o.profile)) return sim::SineProfile{o.amplitude, o.frequency};
+  if (o.profile == RunProfile::kPaperSines) return sim::SineSequenceProfile(o.amplitude, kPaperFrequencies, o.cycles);
+  return sim::RandomProfile(o.amplitude, o.damper.random_low, o.damper.random_high, o.duration, 1.0 / o.rate,
+                            o.seed + 17);
+}
 
 // The samples of one pass of the plant with `effects`.
 std::vector<RunSample> run_plant(const RunOptions& o, const model::EffectSet& effects) {
@@ -61,7 +44,7 @@ std::vector<RunSample> run_plant(const RunOptions& o, const model::EffectSet& ef
                                                    .lvdt_noise_rms = o.lvdt_noise,
                                                    .force_noise_rms = o.force_noise,
                                                    .seed = static_cast<unsigned>(o.seed)});
-  const Motion motion(o);
+  const sim::DisplacementProfile motion = make_motion(o);
   model::CurrentSchedule schedule(o.damper.schedule);
   sim::RandomTelegraph telegraph(0.0, o.current, o.dwell, T, o.seed + 29);
   const auto n = static_cast<std::size_t>(std::llround(o.duration * o.rate));
@@ -71,8 +54,8 @@ std::vector<RunSample> run_plant(const RunOptions& o, const model::EffectSet& ef
   for (std::size_t k = 0; k < n; ++k) {
     const double t = static_cast<double>(k) * T;
     if (o.profile == RunProfile::kTelegraph) command = telegraph.step();
-    const double x = motion.x(t);
-    const sim::PlantReading r = plant.step({.displacement = x, .velocity = motion.v(t), .coil_current = command});
+    const double x = motion.displacement(t);
+    const sim::PlantReading r = plant.step({.displacement = x, .velocity = motion.velocity(t), .coil_current = command});
     samples.push_back({t, r.lvdt_displacement, r.sensor_velocity, command, r.measured_force, r.B,
                        r.temperature, x, r.force});
     // The schedule sees this period's reading; its current flows from the next period on.

@@ -56,7 +56,7 @@ TEST(ObserverEffects, AllOffIsTheBaseModelBitForBit) {
     const auto e = observer.step({.displacement = x_at(k), .velocity = v_at(k), .coil_current = i_at(k)});
     const double B = ja.apply_current(i_at(k));
     ASSERT_EQ(e.B, B);
-    ASSERT_EQ(e.force, bingham.force(v_at(k), tau(B)));
+    ASSERT_EQ(e.force, bingham.force({.velocity = v_at(k), .yield_stress = tau(B)}));
   }
   // Two copies of the same J-A would agree bit for bit through a clamp or a reset too.
   EXPECT_EQ(observer.magnetics().guard_events(), 0u);

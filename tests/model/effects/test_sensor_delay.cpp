@@ -57,7 +57,8 @@ TEST(SensorDelay, PredictionIsExactForConstantAcceleration) {
   const double d = 4e-3;
   const double t = 0.7;
   const double tm = t - d;
-  const auto now = predict_motion({.displacement = 1 + 2 * tm + 3 * tm * tm, .velocity = 2 + 6 * tm}, 6.0, d);
+  const auto now =
+      predict_motion({.displacement = 1 + 2 * tm + 3 * tm * tm, .velocity = 2 + 6 * tm}, {.delay = d, .acceleration = 6.0});
   EXPECT_NEAR(now.displacement, 1 + 2 * t + 3 * t * t, 1e-14);
   EXPECT_NEAR(now.velocity, 2 + 6 * t, 1e-14);
 }
