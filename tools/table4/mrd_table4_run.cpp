@@ -6,7 +6,7 @@
 #include <string>
 
 #include "common/cli/command_line.hpp"
-#include "tools/table4_report.hpp"
+#include "tools/table4/table4_report.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"Simulated Table 4 run through the observer and the hysteresis compensator"};

@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "common/cli/command_line.hpp"
-#include "tools/loop_scan.hpp"
+#include "tools/ja_scan/loop_scan.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"Scan J-A major loops over field amplitude"};

@@ -1,4 +1,4 @@
-#include "tools/loop_scan.hpp"
+#include "tools/ja_scan/loop_scan.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -1,4 +1,4 @@
-#include "tools/table4_report.hpp"
+#include "tools/table4/table4_report.hpp"
 
 #include <cerrno>
 #include <cstdio>

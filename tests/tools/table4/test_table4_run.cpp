@@ -1,4 +1,4 @@
-#include "tools/table4_run.hpp"
+#include "tools/table4/table4_run.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "tools/table4_run.hpp"
+#include "tools/table4/table4_run.hpp"
 
 namespace mrd::tools {
 
