@@ -393,13 +393,18 @@ def parse_args(argv=None):
     p.add_argument("--duration", type=float, default=6.0)
     p.add_argument("--effect", action="append", default=[], help="NAME:SIZE, repeatable")
     p.add_argument("--seed", type=int, default=1)
+    p.add_argument("--rate", type=float, default=RATE,
+                   help="sample rate [Hz]; a finer run lets a logger's jitter pick real samples "
+                        "(tools/residual/logger-faults.sh)")
     p.add_argument("--out", required=True)
     p.add_argument("--manifest")
     return p.parse_args(argv)
 
 
 def main():
+    global RATE
     args = parse_args()
+    RATE = args.rate
     t, x, I, F, v, size, truth = simulate(args)
     with open(args.out, "w") as f:
         f.write("time_s,displacement_mm,current_A,force_N,velocity_mm_s\n")

@@ -8,6 +8,9 @@
 #                10 kHz written at 1 kHz without its velocity column; jitter picks 10 kHz samples
 #   independent  tests/generator/damper_truth.py, telegraph current, 8 s with a field lag
 #                (coil_lag:2); jitter by interpolation
+#   independent-fine  the same at 10 kHz written at 1 kHz: jitter picks 10 kHz samples, and
+#                the telegraph's switches fall between the written rows, as a real command's do
+#                (not in "all")
 #   measured     Quiroz's sine test 5mm3Hz0x75A.txt (data/damper/quiroz-utfsm), its own format
 #                and velocity column, 0.75 A; jitter by interpolation
 # Prints, per source and variant, the effects named, the RMS after on the kept samples and its
@@ -39,19 +42,23 @@ for source in "${sources[@]}"; do
       # Columns: time_s, displacement_mm, current_A, force_N after the velocity is dropped.
       $inject "$dir/source.csv" "$dir" --drop-columns velocity --fine-every 10 --force-column 3 > "$dir/variants"
       ;;
-    independent)
+    independent | independent-fine)
+      fine=()
+      [[ $source == independent-fine ]] && fine=(--rate 10000)
       "$python" "$root/tests/generator/damper_truth.py" --profile telegraph --duration 8 --effect coil_lag:2 \
-        --out "$dir/source.csv"
+        "${fine[@]}" --out "$dir/source.csv"
       header=$(head -1 "$dir/source.csv")
       force=$("$python" -c "import sys; print(sys.argv[1].split(',').index('force_N'))" "$header")
-      $inject "$dir/source.csv" "$dir" --force-column "$force" > "$dir/variants"
+      fine=()
+      [[ $source == independent-fine ]] && fine=(--fine-every 10)
+      $inject "$dir/source.csv" "$dir" "${fine[@]}" --force-column "$force" > "$dir/variants"
       ;;
     measured)
       extension=.txt
       residual_args=(--columns 1=time_s,2=displacement_mm,3=velocity_mm_s,4=force_N --current 0.75)
       $inject "$root/data/damper/quiroz-utfsm/sine/5mm3Hz0x75A.txt" "$dir" --force-column 3 > "$dir/variants"
       ;;
-    *) echo "unknown source '$source': simulated, independent, measured or all" >&2; exit 1 ;;
+    *) echo "unknown source '$source': simulated, independent, independent-fine, measured or all" >&2; exit 1 ;;
   esac
   echo
   echo "$source:"
