@@ -5,7 +5,7 @@ cmake_minimum_required(VERSION 3.25)
 # model/effects/effect_set.hpp) names every effect by design and is not counted. Everything else
 # loops over the descriptors. Comments do not count; tests do not count.
 # Run as a script: cmake -DSOURCE_DIR=<repo> [-DMAX_FILES=3] [-DSTAMP=<file>] -P cmake/check_effect_names.cmake
-if(NOT DEFINED MAX_FILES)
+if(NOT DEFINED MAX_FILES OR MAX_FILES STREQUAL "")
   set(MAX_FILES 3)
 endif()
 set(registries "model/effects/effect_set.hpp")

@@ -52,11 +52,11 @@ double JilesAtherton::apply_field(double H) {
     ExactLangevin exact;
     const bool tabulated = settings_.langevin == LangevinEvaluation::kTabulated;
     if (settings_.integrator == Integrator::kRk4) {
-      tabulated ? integrate<Integrator::kRk4>(H, langevin_cursor_)
-                : integrate<Integrator::kRk4>(H, exact);
+      tabulated ? integrate_or_recall<Integrator::kRk4>(H, langevin_cursor_)
+                : integrate_or_recall<Integrator::kRk4>(H, exact);
     } else {
-      tabulated ? integrate<Integrator::kHeun>(H, langevin_cursor_)
-                : integrate<Integrator::kHeun>(H, exact);
+      tabulated ? integrate_or_recall<Integrator::kHeun>(H, langevin_cursor_)
+                : integrate_or_recall<Integrator::kHeun>(H, exact);
     }
   }
   return B();
@@ -100,6 +100,29 @@ template <typename Langevin>
   // sharing one division.
   return {one_minus_c_ * pinning + p_.c * dMan_dHe * denominator, pinning * coupling,
           1.0 / (denominator * coupling), Man, guarded};
+}
+
+template <Integrator kMethod, typename Langevin>
+void JilesAtherton::integrate_or_recall(double H_target, Langevin& langevin) {
+  const double tolerance = settings_.jump_recall_tolerance * p_.Ms;
+  if (!(tolerance > 0.0) || std::fabs(H_target - state_.H) <= kRecalledJumpSteps * max_field_step_) {
+    integrate<kMethod>(H_target, langevin);
+    return;
+  }
+  for (std::size_t j = 0; j < jumps_kept_; ++j) {
+    const KeptJump& kept = kept_jumps_[j];
+    if (kept.to.H == H_target && kept.from.H == state_.H && std::fabs(kept.from.M - state_.M) <= tolerance &&
+        std::fabs(kept.from.M_irr - state_.M_irr) <= tolerance) {
+      state_ = {H_target, state_.M + (kept.to.M - kept.from.M), state_.M_irr + (kept.to.M_irr - kept.from.M_irr)};
+      ++recalled_jumps_;
+      return;
+    }
+  }
+  const MagneticState from = state_;
+  integrate<kMethod>(H_target, langevin);
+  kept_jumps_[next_kept_] = {from, state_};
+  next_kept_ = (next_kept_ + 1) % kKeptJumps;
+  jumps_kept_ = std::min(jumps_kept_ + 1, kKeptJumps);
 }
 
 template <Integrator kMethod, typename Langevin>

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 
 #include "model/jiles_atherton_params.hpp"
@@ -34,6 +36,14 @@ struct JilesAthertonSettings {
   // it), takes a few long steps. For the fits' searches, which repeat a run thousands of
   // times; the observer keeps 0.
   double field_step_growth = 0.0;
+  // 0: off. r > 0: a jump of more than kRecalledJumpSteps grid steps, between fields a kept jump
+  // joined, from a state within r Ms of that jump's start, takes the kept jump's change of M and
+  // M_irr instead of being integrated again (the last kKeptJumps jumps integrated are kept). A
+  // current switching between a few levels repeats its jumps; J-A's minor loops ratchet (for the
+  // default material M moves 0.03 A/m a cycle between 0 and 1.2 A), so an exact repeat never
+  // comes and the match is within r. For the fits' searches, which replay a run thousands of
+  // times; what is reported comes from the model's own integration, and the observer keeps 0.
+  double jump_recall_tolerance = 0.0;
   // Denominator guard, as a fraction of k (Eq. 10) or of 1 (the reversible coupling).
   double denominator_floor = 1e-2;
   Integrator integrator = Integrator::kRk4;
@@ -85,6 +95,11 @@ class JilesAtherton {
   [[nodiscard]] std::uint64_t recoveries() const { return recoveries_; }
   // RK sub-steps taken since construction: the work the history cost.
   [[nodiscard]] std::uint64_t substeps() const { return substeps_; }
+  // Jumps taken from the kept ones (jump_recall_tolerance) instead of integrated.
+  [[nodiscard]] std::uint64_t recalled_jumps() const { return recalled_jumps_; }
+
+  static constexpr std::size_t kKeptJumps = 8;
+  static constexpr double kRecalledJumpSteps = 8.0;
 
   [[nodiscard]] const JilesAthertonParams& params() const { return p_; }
   [[nodiscard]] const MagneticCircuit& circuit() const { return circuit_; }
@@ -112,6 +127,14 @@ class JilesAtherton {
   template <Integrator kMethod, typename Langevin>
   void integrate_on_grid(double H_target, double max_step, Langevin& langevin);
   void settle_on_anhysteretic();
+  template <Integrator kMethod, typename Langevin>
+  void integrate_or_recall(double H_target, Langevin& langevin);
+
+  // A jump integrated, kept for jump_recall_tolerance.
+  struct KeptJump {
+    MagneticState from;
+    MagneticState to;
+  };
 
   JilesAthertonParams p_;
   MagneticCircuit circuit_;
@@ -131,6 +154,10 @@ class JilesAtherton {
   std::uint64_t guard_events_ = 0;
   std::uint64_t substeps_ = 0;
   std::uint64_t recoveries_ = 0;
+  std::uint64_t recalled_jumps_ = 0;
+  std::array<KeptJump, kKeptJumps> kept_jumps_{};
+  std::size_t jumps_kept_ = 0;
+  std::size_t next_kept_ = 0;  // the slot the next jump integrated overwrites, oldest first
 };
 
 }  // namespace mrd::model

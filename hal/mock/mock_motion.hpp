@@ -1,6 +1,7 @@
 #pragma once
 
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <random>
@@ -30,10 +31,13 @@ class MockMotion {
     const double t = std::chrono::duration<double>(now - *start_).count();
     const double noise = noise_.stddev() > 0.0 ? noise_(rng_) : 0.0;
     hal.lvdt.set_value(sine_.displacement(t) + noise);
-    hal.demand.set_value(demand_damping_ * sine_.velocity(t));
+    // c A w cos(w t) multiplied in this order, as the mock always has: its runs stay bit for bit.
+    const double w = sine_.angular_frequency();
+    const double demand = demand_damping_ * sine_.amplitude * w * std::cos(w * t);
+    hal.demand.set_value(demand);
     // The mock load cell reads the demand: a rig that delivers exactly what is asked (a number
     // for the wiring, as the demand is).
-    hal.load_cell.set_value(demand_damping_ * sine_.velocity(t));
+    hal.load_cell.set_value(demand);
   }
 
  private:

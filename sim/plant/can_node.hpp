@@ -47,9 +47,9 @@ class CanNode {
   [[nodiscard]] hal::StartResult start();
   void stop();
 
-  // Loop side, once per period at plant time t [s].
-  // `demand` [N] (none: the plant is not the outer controller) goes out as a Force_Demand
-  // frame when the controller receives it (demand_frame).
+  // Loop side, once per period at plant time t [s]: the LVDT and current feedback frames.
+  // `readings.demand` [N] (none: the plant is not the outer controller) goes out as a
+  // Force_Demand frame when the controller receives it (demand_frame).
   void send(double t, const SensorReadings& readings, const ActiveFaults& faults);
   // Loop side, after send(): the rig's measured force [N] as a Load_Cell frame when the
   // controller receives one (force mode's load-cell feedback).

@@ -48,7 +48,7 @@ class ModbusServer {
   [[nodiscard]] int port() const { return port_; }
 
   // Loop side: this period's LVDT value, coil current and faults.
-  // `demand` [N] (none: the plant is not the outer controller) goes to the demand registers
+  // `readings.demand` [N] (none: the plant is not the outer controller) goes to the demand registers
   // when the controller reads them, and counts in its counter register when it has one;
   // demand_stale freezes both, demand_invalid writes the fault's value instead.
   void publish(const SensorReadings& readings, const ActiveFaults& faults);

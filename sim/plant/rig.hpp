@@ -2,7 +2,6 @@
 
 #include <array>
 #include <optional>
-#include <variant>
 #include <vector>
 
 #include "sim/damper_plant.hpp"

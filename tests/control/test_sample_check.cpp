@@ -143,6 +143,21 @@ TEST(SampleCheck, AStepFasterThanTheMaximumSpeedIsAJumpAndASpikeCostsTwoSamples)
   EXPECT_DOUBLE_EQ(c.held_value(), 0.0010);
 }
 
+// At the limit exactly: 1 mm in 1 ms at 1 m/s is motion, not a jump.
+TEST(SampleCheck, AStepOfExactlyTheMaximumSpeedIsNoJump) {
+  SampleChecker c({.max_age = kMaxAge, .max_speed = 1.0});
+  ASSERT_EQ(c.check(valued(0.0, kNow, 1), kNow), SampleCheck::kFresh);
+  EXPECT_EQ(c.check(valued(0.001, kNow + 1ms, 2), kNow + 1ms), SampleCheck::kFresh);
+}
+
+// Two samples with one timestamp are judged over a microsecond: noise passes, a step does not.
+TEST(SampleCheck, TwoSamplesAtOneTimeAreJudgedOverAMicrosecond) {
+  SampleChecker c({.max_age = kMaxAge, .max_speed = 1.0});
+  ASSERT_EQ(c.check(valued(0.0, kNow, 1), kNow), SampleCheck::kFresh);
+  EXPECT_EQ(c.check(valued(0.5e-6, kNow, 2), kNow), SampleCheck::kFresh);
+  EXPECT_EQ(c.check(valued(2.0e-6, kNow, 3), kNow), SampleCheck::kJump);
+}
+
 TEST(SampleCheck, TheTimingIsFreshOnlyInThePeriodThatTookTheSampleWithItsIntervalAndAge) {
   SampleChecker c = checker();
   const SampleCheck first = c.check(valued(0.001, kNow, 1), kNow);
@@ -160,7 +175,15 @@ TEST(SampleCheck, TheTimingIsFreshOnlyInThePeriodThatTookTheSampleWithItsInterva
 TEST(SampleCheck, EveryVerdictHasItsOwnNameAndOnlyFreshMissingAndStaleAreNotBadValues) {
   using mrd::control::is_bad_value;
   using mrd::control::to_string;
+  // The telemetry's `sample` column spells these.
+  EXPECT_EQ(to_string(SampleCheck::kFresh), "fresh");
+  EXPECT_EQ(to_string(SampleCheck::kMissing), "missing");
+  EXPECT_EQ(to_string(SampleCheck::kStale), "stale");
+  EXPECT_EQ(to_string(SampleCheck::kCorrupted), "corrupted");
+  EXPECT_EQ(to_string(SampleCheck::kNotFinite), "not_finite");
   EXPECT_EQ(to_string(SampleCheck::kOutOfRange), "out_of_range");
+  EXPECT_EQ(to_string(SampleCheck::kFrozen), "frozen");
+  EXPECT_EQ(to_string(SampleCheck::kJump), "jump");
   EXPECT_EQ(to_string(SampleCheck::kFromFuture), "from_future");
   EXPECT_FALSE(is_bad_value(SampleCheck::kFresh));
   EXPECT_FALSE(is_bad_value(SampleCheck::kMissing));

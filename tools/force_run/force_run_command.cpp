@@ -73,7 +73,6 @@ bool write_trace(const std::string& path, const DemandProfile& profile, const Fo
   return static_cast<bool>(out);
 }
 
-namespace plot = plot;
 
 // The trace's forces are in N, drawn in kN.
 plot::Column in_kN(plot::Column c) { return c.times(1e-3); }

@@ -40,6 +40,9 @@ struct ResidualOptions {
   // after each refines on the whole fitting series.
   std::size_t max_swarm_samples = 24000;
   int evaluations_per_parameter = 40;
+  // JilesAthertonSettings::jump_recall_tolerance for the searches (0: off, the default until the
+  // studies are re-run with it; docs/CLOSING-THE-LOOP.md, "Timing").
+  double jump_recall = 0.0;
   unsigned threads = 0;  // 0: every core
   std::uint64_t seed = 1;
   bool discover = true;  // step 7: regress what the named effects left on the library of terms

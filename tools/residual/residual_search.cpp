@@ -96,6 +96,7 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   ResidualOptions options = given;
   const model::JilesAthertonSettings integration = given.start.integration;
   if (!(integration.field_step_growth > 0.0)) options.start.integration.field_step_growth = kSearchFieldStepGrowth;
+  options.start.integration.jump_recall_tolerance = given.jump_recall;
   const auto reported = [&](model::DamperModel m) {
     m.integration = integration;
     return m;

@@ -30,23 +30,32 @@ Reduced without_effect(Search& s, const model::DamperModel& current, const Effec
   return out;
 }
 
+Effects rivals_outside_the_set(const AcceptedSet& set, std::size_t k) {
+  Effects open;
+  for (const model::EffectInfo* rival : set.rivals[k])
+    if (std::ranges::find(set.effects, rival) == set.effects.end()) open.push_back(rival);
+  return open;
+}
+
 void revise_set(Search& s, AcceptedSet& set, ResidualResult& result) {
   for (std::size_t k = 0; set.effects.size() >= 2 && k < set.effects.size(); ++k) {
-    if (set.rivals[k].empty()) continue;
+    // A rival accepted in a later round is in the set already: a swap would name it twice.
+    const Effects rivals = rivals_outside_the_set(set, k);
+    if (rivals.empty()) continue;
     const model::EffectInfo* held = set.effects[k];
     const Reduced rest = without_effect(s, set.model, set.effects, held);
-    Round round = try_candidates(s, rest.model, rest.validation, set.rivals[k], 0);
-    std::size_t best = set.rivals[k].size();
+    Round round = try_candidates(s, rest.model, rest.validation, rivals, 0);
+    std::size_t best = rivals.size();
     for (std::size_t i = 0; i < round.trials.size(); ++i) {
       if (round.trials[i].verdict == TrialVerdict::kNotPhysical) continue;
-      if (best == set.rivals[k].size() || round.trials[i].validation_rms < round.trials[best].validation_rms) best = i;
+      if (best == rivals.size() || round.trials[i].validation_rms < round.trials[best].validation_rms) best = i;
     }
-    if (best == set.rivals[k].size() || !(round.trials[best].validation_rms < set.validation)) continue;
+    if (best == rivals.size() || !(round.trials[best].validation_rms < set.validation)) continue;
     result.revisions.push_back(format("swapped %s for %s: validation RMS %.4g -> %.4g N beside the others",
                                       std::string(held->name).c_str(), round.trials[best].effect.c_str(),
                                       set.validation, round.trials[best].validation_rms));
-    set.effects[k] = set.rivals[k][best];
-    set.rivals[k].erase(set.rivals[k].begin() + static_cast<std::ptrdiff_t>(best));
+    set.effects[k] = rivals[best];
+    std::erase(set.rivals[k], rivals[best]);
     set.rivals[k].push_back(held);
     set.validation = round.trials[best].validation_rms;
     set.model = polish_accepted(s, round.fits[best].model, set.effects, set.validation);

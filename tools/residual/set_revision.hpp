@@ -11,6 +11,10 @@ namespace mrd::tools::search {
 Reduced without_effect(Search& s, const model::DamperModel& current, const Effects& accepted,
                        const model::EffectInfo* dropped);
 
+// The candidates that passed in effect k's round and are not in the set: what k may be swapped
+// for (one accepted in a later round is in the set already).
+Effects rivals_outside_the_set(const AcceptedSet& set, std::size_t k);
+
 // Step 6: with two or more accepted, each is reconsidered beside the others: it is swapped for a
 // candidate that passed in its round when that one now validates better, and dropped when the
 // set no longer earns the claim criterion over the set without it. Each swap and drop goes to
