@@ -155,10 +155,15 @@ FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const Fi
     if (!run.has_velocity()) {
       double cutoff = options.velocity_cutoff;
       if (cutoff <= 0.0) cutoff = motion_velocity_cutoff(run.displacement, rate);
-      // A span set aside is no motion either: a long one splits the filter like a gap (its
-      // straight bridge would bend the velocity for the filter's length on both sides).
+      // A span where the displacement was faulted is no motion either: a long one splits the
+      // filter like a gap (its straight bridge would bend the velocity for the filter's length on
+      // both sides). A fault of the force alone leaves the motion measured.
       std::vector<std::uint8_t> unmeasured = gap_filled.filled;
-      for (std::size_t i = 0; i < screening.excluded.size(); ++i) unmeasured[i] |= screening.excluded[i];
+      if (screening.excluded_samples > 0) {
+        const std::vector<std::uint8_t> moved =
+            faulted_samples(screening, unmeasured.size(), &FaultedInputs::displacement);
+        for (std::size_t i = 0; i < unmeasured.size(); ++i) unmeasured[i] |= moved[i];
+      }
       velocity = zero_phase_velocity_by_stretch(run.displacement, run.time, run.sample_rate, cutoff, unmeasured);
       s.notes.push_back(run.name + ": velocity from the displacement, zero-phase low-pass at " +
                         std::to_string(cutoff) + " Hz" +

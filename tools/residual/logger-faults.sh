@@ -15,8 +15,10 @@
 #                and velocity column, 0.75 A; jitter by interpolation
 # Prints, per source and variant, the effects named, the RMS after on the kept samples and its
 # ratio to the unfaulted run's (**bold** over 1.05, "differs" where the effects are not the
-# unfaulted run's), and that RMS in the first and last second against the rest (from the
-# residual trace --plot writes).
+# unfaulted run's), that ratio again against the unfaulted run's error on the same samples (the
+# ones the variant kept: a gap that removes a hard stretch lowers the error on what is left),
+# and the RMS in the first and last second against the rest (from the residual trace --plot
+# writes).
 # Usage: tools/residual/logger-faults.sh [BUILD_DIR] [OUT_DIR] [SOURCE...] (default: simulated;
 #        all: the three). EFFECT=... sets the simulated run's effect.
 set -euo pipefail
@@ -63,14 +65,14 @@ for source in "${sources[@]}"; do
   echo
   echo "$source:"
   echo
-  echo "| variant | named | rms_after [N] | / unfaulted | set aside | first and last 1 s [N] | in between [N] |"
-  echo "|---|---|---:|---:|---:|---:|---:|"
+  echo "| variant | named | rms_after [N] | / unfaulted | / unfaulted, same samples | set aside | first and last 1 s [N] | in between [N] |"
+  echo "|---|---|---:|---:|---:|---:|---:|---:|"
   while read -r variant; do
     "$build/tools/mrd-residual" "$dir/$variant$extension" "${residual_args[@]}" --json "$dir/$variant.json" \
       --plot "$dir/$variant.plot" > "$dir/$variant.summary" 2> "$dir/$variant.err" ||
       { echo "| $variant | failed: $(tail -1 "$dir/$variant.err") |"; continue; }
     "$python" - "$dir" "$variant" <<'PY'
-import json, math, sys
+import bisect, json, math, sys
 out, variant = sys.argv[1], sys.argv[2]
 def load(name):
     return json.load(open(f"{out}/{name}.json"))
@@ -80,13 +82,26 @@ if sorted(r.get("effects", [])) != sorted(clean.get("effects", [])):
     named += " (differs)"
 ratio = r["rms_after_N"] / clean["rms_after_N"]
 ratio_text = f"**{ratio:.3f}**" if ratio > 1.05 else f"{ratio:.3f}"
-rows = [list(map(float, l.split())) for l in open(f"{out}/{variant}.plot/residual.dat") if l.strip() and not l.startswith("#")]
+def residual_rows(name):
+    return [list(map(float, l.split())) for l in open(f"{out}/{name}.plot/residual.dat") if l.strip() and not l.startswith("#")]
+rows, clean_rows = residual_rows(variant), residual_rows("clean")
 t0, t1 = rows[0][0], rows[-1][0]
+# The unfaulted run's error on the samples this variant kept (nearest time): a gap that removes
+# the run's hardest stretch lowers the error on what is left without the fit being any better.
+clean_times = [x[0] for x in clean_rows]
+def unfaulted_at(t):
+    k = bisect.bisect_left(clean_times, t)
+    near = min((j for j in (k - 1, k) if 0 <= j < len(clean_rows)), key=lambda j: abs(clean_times[j] - t))
+    return clean_rows[near][7]
+same = [unfaulted_at(x[0]) for x in rows if x[8] == 0]
+kept = [x[7] for x in rows if x[8] == 0]
 edge = [x[7] for x in rows if x[8] == 0 and (x[0] - t0 < 1.0 or t1 - x[0] < 1.0)]
 mid = [x[7] for x in rows if x[8] == 0 and 1.0 <= x[0] - t0 and t1 - x[0] >= 1.0]
 rms = lambda v: math.sqrt(sum(e * e for e in v) / len(v)) if v else float("nan")
 aside = r["screening"]["excluded_samples"]
-print(f"| {variant} | {named} | {r['rms_after_N']:.4g} | {ratio_text} | {aside} | {rms(edge):.4g} | {rms(mid):.4g} |")
+same_ratio = rms(kept) / rms(same)
+same_text = f"**{same_ratio:.3f}**" if same_ratio > 1.05 else f"{same_ratio:.3f}"
+print(f"| {variant} | {named} | {r['rms_after_N']:.4g} | {ratio_text} | {same_text} | {aside} | {rms(edge):.4g} | {rms(mid):.4g} |")
 PY
   done < "$dir/variants"
 done

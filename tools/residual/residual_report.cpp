@@ -60,6 +60,17 @@ std::string robust_summary(const ResidualResult& r) {
   return out;
 }
 
+// Where the logged current's steps were placed within their rows, when there were any.
+std::string switch_timing_summary(const SwitchTiming& t) {
+  if (t.steps == 0) return {};
+  if (!t.applied)
+    return format("switch timing: %zu current steps taken at their rows (timing them within the row would lower the "
+                  "fitting RMS %.4g N by no more than fitting noise would)\n", t.steps, t.rms_before);
+  return format("switch timing: %zu current steps placed within their rows, %zu from the force after them "
+                "(median %.2f of a period before the row); fitting RMS %.4g -> %.4g N after the final refit\n",
+                t.steps, t.estimated, t.median_phase, t.rms_before, t.rms_after);
+}
+
 // Each candidate once: the trial of the round it was accepted in, else its last.
 std::vector<const CandidateTrial*> final_trials(const ResidualResult& r) {
   std::vector<const CandidateTrial*> out;
@@ -136,6 +147,7 @@ std::string residual_summary(const std::vector<record::RecordedRun>& runs, const
     }
   }
   out += robust_summary(r);
+  out += switch_timing_summary(r.switch_timing);
   out += format("after: RMS %.4g N, max %.4g N (%.1f%% of before)\n", r.after.all, r.after.max,
                 r.before.all > 0.0 ? 100.0 * r.after.all / r.before.all : 0.0);
   out += "unexplained: " + r.unexplained + "\n";
@@ -256,6 +268,13 @@ std::string residual_json(const ResidualResult& r, const ForceFitFigures* fit) {
                       {"down_weighted_share", r.robust_after.down_weighted_share},
                       {"base_refits", r.robust_refits},
                       {"spans", down_weighted}}},
+                    {"switch_timing",
+                     {{"steps", r.switch_timing.steps},
+                      {"estimated", r.switch_timing.estimated},
+                      {"applied", r.switch_timing.applied},
+                      {"median_phase", r.switch_timing.median_phase},
+                      {"fitting_rms_before_N", r.switch_timing.rms_before},
+                      {"fitting_rms_after_N", r.switch_timing.rms_after}}},
                     {"set_revisions", r.revisions},
                     {"unexplained", r.unexplained}};
   if (fit != nullptr) out["fit"] = force_fit_json(*fit);

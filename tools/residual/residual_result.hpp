@@ -13,6 +13,7 @@
 #include "tools/residual/residual_structure.hpp"
 #include "tools/residual/robust_weights.hpp"
 #include "tools/residual/screening.hpp"
+#include "tools/residual/switch_timing.hpp"
 #include "tools/residual/term_discovery.hpp"
 
 // What find_missing_effects (residual_search.hpp) takes and gives: its options, its trials and
@@ -136,6 +137,9 @@ struct ResidualResult {
   int robust_refits = 0;
   RobustWeights robust_after;  // its weights: per sample of the full series
   std::vector<DownWeightedSpan> down_weighted;
+  // Where in its row each step of the logged current happened, estimated against the final
+  // model (switch_timing.hpp); the final fit and predicted_after use the timed current when applied.
+  SwitchTiming switch_timing;
   std::vector<double> predicted_before;  // per sample of the full series [N]
   std::vector<double> predicted_after;
   std::int64_t evaluations = 0;  // observer passes over the fitting series

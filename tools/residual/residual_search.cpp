@@ -10,15 +10,21 @@
 #include "tools/residual/base_identification.hpp"
 #include "tools/residual/candidate_effects.hpp"
 #include "tools/residual/greedy_rounds.hpp"
+#include "tools/residual/joint_refinement.hpp"
 #include "tools/residual/library_terms.hpp"
 #include "tools/residual/search_context.hpp"
 #include "tools/residual/set_revision.hpp"
+#include "tools/residual/switch_timing.hpp"
 
 // The orchestration of docs/CLOSING-THE-LOOP.md's steps; each step lives in its own file, in
 // mrd::tools::search.
 namespace mrd::tools {
 
 namespace {
+
+// Rounds of switch timing and refit at most, each kept while it lowers the fitting RMS by kTimingRoundGain.
+constexpr int kTimingRounds = 5;
+constexpr double kTimingRoundGain = 0.02;
 
 std::vector<double> residual_of(const FitSeries& s, const std::vector<double>& predicted) {
   std::vector<double> r(s.size());
@@ -88,6 +94,49 @@ void describe_final_residual(const FitSeries& full, const ResidualOptions& optio
   result.unexplained = describe(result.structure_after);
 }
 
+// The logged current's steps timed within their rows against the final model (switch_timing.hpp),
+// where that pays, on the fitting series and the full one alike (so only where the fits run on
+// every sample). Each round times the steps against the model, then identifies the model again
+// under that timing: the model the search found took every step at its previous row, and gives
+// that up a round at a time. The best round is kept. Whether the timing was.
+bool time_steps_within_rows(search::Search& s, const search::Effects& set_effects, model::DamperModel& model,
+                            ResidualResult& result) {
+  if (s.fit_series.size() != s.full.size()) return false;
+  const std::vector<double> logged = s.fit_series.current;
+  SwitchTiming timing = time_current_steps(model, s.fit_series);
+  result.switch_timing = timing;
+  if (!timing.applied) return false;
+  const double rms_logged = timing.rms_before;
+  struct Round {
+    double rms;
+    std::vector<double> current;
+    model::DamperModel model;
+    SwitchTiming timing;
+  };
+  Round best{rms_logged, logged, model, timing};
+  model::DamperModel timed = model;
+  for (int round = 0; round < kTimingRounds; ++round) {
+    if (round > 0) {
+      s.fit_series.current = logged;
+      timing = time_current_steps(timed, s.fit_series, {.chance_multiple = 0.0});
+    }
+    std::int64_t spent = 0;
+    timed = search::refine_jointly(s, timed, set_effects, search::effect_coordinates(set_effects, timed, s.scales),
+                                   {{15, 0.02, 12}, {8, 0.02}}, spent).model;
+    s.evaluations += spent;
+    const double now = residual_rms(s.fit_series, s.predicted(timed)).fitting;
+    const bool paid = now < (1.0 - kTimingRoundGain) * best.rms;
+    if (now < best.rms) best = {now, s.fit_series.current, timed, timing};
+    if (!paid) break;
+  }
+  s.fit_series.current = s.full.current = best.current;
+  model = best.model;
+  result.switch_timing = best.timing;
+  result.switch_timing.rms_before = rms_logged;
+  result.switch_timing.rms_after = best.rms;
+  return true;
+}
+
 }  // namespace
 
 ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions& given) {
@@ -150,11 +199,15 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   // 7. discovery on what it leaves.
   model::DamperModel current =
       set.effects.empty() ? result.base : reported(search::refit_on_every_sample(s, set.model, set.model).model);
+  if (time_steps_within_rows(s, set.effects, current, result)) {
+    current = reported(current);
+    clock.done("switch timing");
+  }
   search::discover(s, current, result);
   clock.done("discovery");
   result.final_model = current;
   result.evaluations = s.evaluations;
-  describe_final_residual(full, options, result);
+  describe_final_residual(s.full, options, result);
   // Its Jacobian with the searches' J-A sub-steps: a difference quotient, not a reported figure.
   model::DamperModel linearised = result.final_model;
   linearised.integration = options.start.integration;

@@ -297,33 +297,71 @@ void set_aside(Screening& screening, const record::RecordedRun& run, std::vector
   screening.excluded_samples = static_cast<std::size_t>(std::ranges::count(screening.excluded, std::uint8_t{1}));
 }
 
-void bridge_excluded_inputs(record::RecordedRun& run, const Screening& screening) {
-  const std::size_t n = run.size();
+FaultedInputs inputs_reached(const ScreenedSpan& span) {
+  switch (span.reason) {
+    case ScreenReason::kSettling: return {};  // the record is sound; the model's state is not known
+    case ScreenReason::kImplausible: return {.displacement = true, .velocity = true};  // the rod "standing"
+    default: break;
+  }
+  if (span.channel == "force") return {};
+  if (span.channel == "displacement") return {.displacement = true, .velocity = true};
+  if (span.channel == "velocity") return {.velocity = true};
+  return {.displacement = true, .velocity = true, .coil = true};
+}
+
+std::vector<std::uint8_t> faulted_samples(const Screening& screening, std::size_t samples, bool FaultedInputs::*which) {
+  std::vector<std::uint8_t> faulted(samples, 0);
+  std::vector<std::uint8_t> covered(samples, 0);
+  for (const ScreenedSpan& span : screening.spans) {
+    const bool reached = inputs_reached(span).*which;
+    // A reader's row is reported at the sample after it but sets nothing aside.
+    for (std::size_t i = span.first; i <= span.last && i < std::min(samples, screening.excluded.size()); ++i) {
+      covered[i] = 1;
+      if (reached && screening.excluded[i]) faulted[i] = 1;
+    }
+  }
+  for (std::size_t i = 0; i < std::min(samples, screening.excluded.size()); ++i)
+    if (screening.excluded[i] && !covered[i]) faulted[i] = 1;
+  return faulted;
+}
+
+namespace {
+
+// `channel` interpolated linearly across each stretch of `faulted` samples, between the sound
+// samples either side (or holding the one there is).
+void bridge(std::vector<double>& channel, const std::vector<double>& time, const std::vector<std::uint8_t>& faulted) {
+  const std::size_t n = channel.size();
+  if (n != faulted.size()) return;
   std::size_t i = 0;
   while (i < n) {
-    if (!screening.excluded[i]) {
+    if (!faulted[i]) {
       ++i;
       continue;
     }
     std::size_t j = i;
-    while (j < n && screening.excluded[j]) ++j;
-    // [i, j) excluded; bridge between the kept samples i - 1 and j (or hold the one there is).
-    for (std::vector<double>* c : {&run.displacement, &run.velocity, &run.coil}) {
-      if (c->size() != n) continue;
-      const bool before = i > 0, after = j < n;
-      for (std::size_t k = i; k < j; ++k) {
-        if (before && after) {
-          const double w = (run.time[k] - run.time[i - 1]) / (run.time[j] - run.time[i - 1]);
-          (*c)[k] = (*c)[i - 1] + w * ((*c)[j] - (*c)[i - 1]);
-        } else if (before) {
-          (*c)[k] = (*c)[i - 1];
-        } else if (after) {
-          (*c)[k] = (*c)[j];
-        }
+    while (j < n && faulted[j]) ++j;
+    const bool before = i > 0, after = j < n;
+    for (std::size_t k = i; k < j; ++k) {
+      if (before && after) {
+        const double w = (time[k] - time[i - 1]) / (time[j] - time[i - 1]);
+        channel[k] = channel[i - 1] + w * (channel[j] - channel[i - 1]);
+      } else if (before) {
+        channel[k] = channel[i - 1];
+      } else if (after) {
+        channel[k] = channel[j];
       }
     }
     i = j;
   }
+}
+
+}  // namespace
+
+void bridge_excluded_inputs(record::RecordedRun& run, const Screening& screening) {
+  const std::size_t n = run.size();
+  bridge(run.displacement, run.time, faulted_samples(screening, n, &FaultedInputs::displacement));
+  bridge(run.velocity, run.time, faulted_samples(screening, n, &FaultedInputs::velocity));
+  bridge(run.coil, run.time, faulted_samples(screening, n, &FaultedInputs::coil));
 }
 
 }  // namespace mrd::tools

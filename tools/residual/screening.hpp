@@ -85,9 +85,25 @@ std::vector<ScreenedSpan> settling_spans(const record::RecordedRun& run,
                                          const std::vector<std::pair<std::size_t, std::size_t>>& gaps,
                                          bool from_start, double share = 0.95, double longest_s = 2.0);
 
-// The model's inputs (displacement, velocity, coil) interpolated linearly across the excluded
-// samples, so that the model's state runs through a fault sanely; the force is left as it is
-// (excluded samples are not fitted).
+// The model's inputs a span's fault reaches. A fault of the force alone leaves the motion and
+// the coil current as recorded; only a logging gap (or a row) reaches the coil's.
+struct FaultedInputs {
+  bool displacement = false;
+  bool velocity = false;
+  bool coil = false;
+};
+[[nodiscard]] FaultedInputs inputs_reached(const ScreenedSpan& span);
+
+// Per sample of a run of `samples`: 1 where an excluded sample's span reaches the input that
+// `which` picks (excluded samples no span covers reach every input).
+[[nodiscard]] std::vector<std::uint8_t> faulted_samples(const Screening& screening, std::size_t samples,
+                                                        bool FaultedInputs::*which);
+
+// Each of the model's inputs (displacement, velocity, coil) interpolated linearly across the
+// samples where a fault reaches it, so that the model's state runs through a fault sanely and
+// follows the recorded coil current through a fault of the force (bridged there, a telegraph
+// current's switches would be lost, and with them the lag's and the core's state for several
+// time constants after the span). The force is left as it is (excluded samples are not fitted).
 void bridge_excluded_inputs(record::RecordedRun& run, const Screening& screening);
 
 }  // namespace mrd::tools

@@ -32,7 +32,9 @@ struct Search {
         pool(opts.threads),
         seed(opts.seed) {}
 
-  const FitSeries& full;
+  // The series as given: a copy, since the final step may time its current's steps within
+  // their rows (switch_timing.hpp).
+  FitSeries full;
   const ResidualOptions& options;
   FitSeries fit_series;    // what the fits run on; its loss is least squares unless --robust-fit
   FitSeries swarm_series;  // the runs' openings: where the swarms that move B explore

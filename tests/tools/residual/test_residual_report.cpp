@@ -32,7 +32,10 @@ TEST(ResidualReport, JsonHasExactlyTheDocumentedKeys) {
   EXPECT_EQ(top, (std::set<std::string>{"samples", "rms_before_N", "noise_floor_N", "fit_before_percent", "fit_after_percent", "parameters",
                                         "max_before_N", "effects", "effect", "rms_after_N", "max_after_N", "effect_params",
                                         "candidates", "ambiguous", "ambiguity_tests", "discovered", "screening",
-                                        "robust", "set_revisions", "unexplained", "unphysical"}));
+                                        "robust", "switch_timing", "set_revisions", "unexplained", "unphysical"}));
+  for (const char* key : {"steps", "estimated", "applied", "median_phase", "fitting_rms_before_N", "fitting_rms_after_N"})
+    EXPECT_TRUE(json["switch_timing"].contains(key)) << key;
+  EXPECT_EQ(json["switch_timing"]["steps"].get<std::size_t>(), r.switch_timing.steps);
   EXPECT_EQ(json["unphysical"].size(), r.unphysical.size());
   EXPECT_EQ(json["parameters"][0]["determined"].get<bool>(), determined(r.parameters[0]));
   EXPECT_EQ(json["effect"], "gas_spring");

@@ -174,6 +174,46 @@ TEST(Screening, BridgedInputsAreLinearAcrossTheSpan) {
               1e-15);
 }
 
+// Each input bridged only where a fault reaches it: across a fault of the force the recorded
+// coil current (here a telegraph, switching every 7 samples) and the motion stay, so that the
+// model's lag and core follow the switches through the span; a fault of the LVDT bridges the
+// motion alone; a logging gap's row (or an excluded sample no span names) bridges all three.
+TEST(Screening, AFaultBridgesOnlyTheInputsItReaches) {
+  auto run = clean_run();
+  for (std::size_t i = 0; i < run.size(); ++i) run.coil[i] = (i / 7) % 2 == 0 ? 0.0 : 1.0;
+  const auto recorded = run;
+  Screening s;
+  s.excluded.assign(run.size(), 0);
+  const auto fault = [&](std::size_t first, std::size_t last, const char* channel, ScreenReason reason) {
+    s.spans.push_back({first, last, run.time[first], run.time[last], channel, reason});
+    for (std::size_t i = first; i <= last; ++i) s.excluded[i] = 1;
+  };
+  fault(100, 140, "force", ScreenReason::kClipped);
+  fault(300, 340, "force", ScreenReason::kImplausible);
+  fault(500, 505, "displacement", ScreenReason::kSpike);
+  fault(700, 720, "time", ScreenReason::kGap);
+  for (std::size_t i = 900; i < 910; ++i) s.excluded[i] = 1;
+  bridge_excluded_inputs(run, s);
+  const auto linear = [&](const std::vector<double>& c, std::size_t before, std::size_t after, std::size_t k) {
+    return c[before] + (c[after] - c[before]) * (run.time[k] - run.time[before]) / (run.time[after] - run.time[before]);
+  };
+  for (std::size_t k : {100u, 120u, 140u}) {
+    EXPECT_EQ(run.coil[k], recorded.coil[k]) << k;
+    EXPECT_EQ(run.displacement[k], recorded.displacement[k]) << k;
+  }
+  for (std::size_t k : {307u, 321u, 335u}) {
+    EXPECT_EQ(run.coil[k], recorded.coil[k]) << k;
+    EXPECT_NEAR(run.displacement[k], linear(recorded.displacement, 299, 341, k), 1e-15) << k;
+  }
+  EXPECT_EQ(run.coil[503], recorded.coil[503]);
+  EXPECT_NEAR(run.displacement[503], linear(recorded.displacement, 499, 506, 503), 1e-15);
+  for (std::size_t k : {705u, 714u}) {
+    EXPECT_NEAR(run.coil[k], linear(recorded.coil, 699, 721, k), 1e-15) << k;
+    EXPECT_NEAR(run.displacement[k], linear(recorded.displacement, 699, 721, k), 1e-15) << k;
+  }
+  EXPECT_NEAR(run.coil[903], linear(recorded.coil, 899, 910, 903), 1e-15);
+}
+
 // A rig at its end stop: the LVDT jitters within half a per cent of the stroke while the load
 // cell rings at 25 Hz through both signs and clips. No damper reverses its force without moving;
 // the same ringing with the rod dithering at 3 % of the stroke is a damper's, and is kept.
