@@ -65,9 +65,9 @@ std::string switch_timing_summary(const SwitchTiming& t) {
   if (t.steps == 0) return {};
   if (!t.applied)
     return format("switch timing: %zu current steps taken at their rows (timing them within the row would lower the "
-                  "fitting RMS %.4g N by no more than fitting noise would)\n", t.steps, t.rms_before);
+                  "RMS %.4g N by no more than fitting noise would)\n", t.steps, t.rms_before);
   return format("switch timing: %zu current steps placed within their rows, %zu from the force after them "
-                "(median %.2f of a period before the row); fitting RMS %.4g -> %.4g N after the final refit\n",
+                "(median %.2f of a period before the row); RMS on the kept samples %.4g -> %.4g N with the model refitted\n",
                 t.steps, t.estimated, t.median_phase, t.rms_before, t.rms_after);
 }
 
@@ -273,8 +273,8 @@ std::string residual_json(const ResidualResult& r, const ForceFitFigures* fit) {
                       {"estimated", r.switch_timing.estimated},
                       {"applied", r.switch_timing.applied},
                       {"median_phase", r.switch_timing.median_phase},
-                      {"fitting_rms_before_N", r.switch_timing.rms_before},
-                      {"fitting_rms_after_N", r.switch_timing.rms_after}}},
+                      {"rms_before_N", r.switch_timing.rms_before},
+                      {"rms_after_N", r.switch_timing.rms_after}}},
                     {"set_revisions", r.revisions},
                     {"unexplained", r.unexplained}};
   if (fit != nullptr) out["fit"] = force_fit_json(*fit);

@@ -94,47 +94,65 @@ void describe_final_residual(const FitSeries& full, const ResidualOptions& optio
   result.unexplained = describe(result.structure_after);
 }
 
-// The logged current's steps timed within their rows against the final model (switch_timing.hpp),
-// where that pays, on the fitting series and the full one alike (so only where the fits run on
-// every sample). Each round times the steps against the model, then identifies the model again
-// under that timing: the model the search found took every step at its previous row, and gives
-// that up a round at a time. The best round is kept. Whether the timing was.
-bool time_steps_within_rows(search::Search& s, const search::Effects& set_effects, model::DamperModel& model,
-                            ResidualResult& result) {
-  if (s.fit_series.size() != s.full.size()) return false;
+// Step 7b's rounds (switch_timing.hpp): each times the steps against the model, then identifies
+// the model again under that timing (the model the search found took every step at its previous
+// row, and gives that up a round at a time), while a round lowers the RMS by kTimingRoundGain.
+// The best round is kept; `report` says what was written. Whether the phases were.
+bool timing_rounds(search::Search& s, const search::Effects& set_effects, model::DamperModel& model,
+                   SwitchTiming& report) {
   const std::vector<double> logged = s.fit_series.current;
   SwitchTiming timing = time_current_steps(model, s.fit_series);
-  result.switch_timing = timing;
+  report = timing;
   if (!timing.applied) return false;
-  const double rms_logged = timing.rms_before;
   struct Round {
     double rms;
     std::vector<double> current;
     model::DamperModel model;
     SwitchTiming timing;
   };
-  Round best{rms_logged, logged, model, timing};
-  model::DamperModel timed = model;
+  Round best{timing.rms_before, logged, model, timing};
+  model::DamperModel refitted = model;
   for (int round = 0; round < kTimingRounds; ++round) {
     if (round > 0) {
       s.fit_series.current = logged;
-      timing = time_current_steps(timed, s.fit_series, {.chance_multiple = 0.0});
+      timing = time_current_steps(refitted, s.fit_series, {.chance_multiple = 0.0});
+      if (!timing.applied) break;
     }
     std::int64_t spent = 0;
-    timed = search::refine_jointly(s, timed, set_effects, search::effect_coordinates(set_effects, timed, s.scales),
-                                   {{15, 0.02, 12}, {8, 0.02}}, spent).model;
+    refitted = search::refine_jointly(s, refitted, set_effects,
+                                      search::effect_coordinates(set_effects, refitted, s.scales),
+                                      {{15, 0.02, 12}, {8, 0.02}}, spent)
+                   .model;
     s.evaluations += spent;
-    const double now = residual_rms(s.fit_series, s.predicted(timed)).fitting;
+    const double now = residual_rms(s.fit_series, s.predicted(refitted)).fitting;
     const bool paid = now < (1.0 - kTimingRoundGain) * best.rms;
-    if (now < best.rms) best = {now, s.fit_series.current, timed, timing};
+    if (now < best.rms) best = {now, s.fit_series.current, refitted, timing};
     if (!paid) break;
   }
-  s.fit_series.current = s.full.current = best.current;
+  s.fit_series.current = best.current;
   model = best.model;
-  result.switch_timing = best.timing;
-  result.switch_timing.rms_before = rms_logged;
-  result.switch_timing.rms_after = best.rms;
-  return true;
+  const double rms_logged = report.rms_before;
+  report = best.timing;
+  report.rms_before = rms_logged;
+  report.rms_after = best.rms;
+  report.applied = best.current != logged;
+  return report.applied;
+}
+
+// The logged current's steps timed within their rows against the final model, on the fitting
+// series and the full one alike (so only where the fits run on every sample). The model coming
+// in was refitted on every kept sample (refit_on_every_sample): the rounds refit and compare on
+// every kept sample too, or a refit on the fitting blocks alone would look like a gain.
+bool time_steps_within_rows(search::Search& s, const search::Effects& set_effects, model::DamperModel& model,
+                            ResidualResult& result) {
+  if (s.fit_series.size() != s.full.size()) return false;
+  const std::vector<SampleRole> roles = s.fit_series.role;
+  for (SampleRole& role : s.fit_series.role)
+    if (role == SampleRole::kValidation) role = SampleRole::kFitting;
+  const bool timed = timing_rounds(s, set_effects, model, result.switch_timing);
+  s.fit_series.role = roles;
+  if (timed) s.full.current = s.fit_series.current;
+  return timed;
 }
 
 }  // namespace

@@ -56,8 +56,10 @@ void write_phases(const std::vector<CurrentStep>& steps, const std::vector<doubl
 }
 
 // One Gauss-Newton pass: each phase moved by the least-squares step along the force's change
-// for a probe `offset` of it, over the fitting samples of its window (the windows do not overlap,
-// so one observer pass probes every step at once).
+// for a probe `offset` of it, over the kept samples of its window. One observer pass probes
+// every step at once: the windows do not overlap, though a probe's effect runs on past its window
+// through the lag and the core's memory into the next step's; the next pass corrects for what
+// that mixed in.
 void gauss_newton_pass(const model::DamperModel& model, FitSeries& s, std::vector<CurrentStep>& steps,
                        std::vector<double>& force) {
   std::vector<double> offset(steps.size());
@@ -106,7 +108,8 @@ std::vector<std::size_t> current_steps(const FitSeries& s, double step_share) {
       low = std::min(low, s.current[i]);
       high = std::max(high, s.current[i]);
     }
-    // A run at one current has no step to time, its first row included: the coil was on before.
+    // A run at one current has no step to time, its first row included: its coil was on before
+    // the record began, and the model's start from no current is the settling's question.
     if (!(high > low)) continue;
     const double threshold = step_share * (high - low);
     if (std::abs(s.current[span.from]) > threshold) rows.push_back(span.from);

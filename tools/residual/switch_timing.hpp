@@ -20,11 +20,11 @@ namespace mrd::tools {
 // that reproduces the sub-row switch to O((T / tau)^2).
 struct SwitchTiming {
   std::size_t steps = 0;      // rows where the current stepped by more than the threshold
-  std::size_t estimated = 0;  // those with fitting samples after them (others take the median)
+  std::size_t estimated = 0;  // those with kept samples after them (others take the median)
   double median_phase = 0.0;  // of the estimated steps
-  double rms_before = 0.0;    // [N] fitting RMS with every step at its previous row
+  double rms_before = 0.0;    // [N] RMS of the fitting samples with every step at its previous row
   double rms_after = 0.0;     // [N] with the estimated phases
-  bool applied = false;       // whether the phases lowered the fitting RMS (else none is written)
+  bool applied = false;       // whether the phases were written (they lowered that RMS enough)
 };
 
 struct SwitchTimingOptions {
@@ -42,8 +42,9 @@ struct SwitchTimingOptions {
 // the observer starts with no current flowing).
 [[nodiscard]] std::vector<std::size_t> current_steps(const FitSeries& series, double step_share);
 
-// Estimates every step's phase for `model` from the fitting samples after it and writes the
-// blended current into `series` when that lowers its fitting RMS.
+// Estimates every step's phase for `model` from the kept samples after it (validation samples
+// too: a phase is a fact of the log, like a gap's place) and writes the blended current into
+// `series` when that lowers the RMS of its fitting samples enough (else `series` is left as it was).
 SwitchTiming time_current_steps(const model::DamperModel& model, FitSeries& series,
                                 const SwitchTimingOptions& options = {});
 

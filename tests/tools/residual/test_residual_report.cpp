@@ -33,7 +33,7 @@ TEST(ResidualReport, JsonHasExactlyTheDocumentedKeys) {
                                         "max_before_N", "effects", "effect", "rms_after_N", "max_after_N", "effect_params",
                                         "candidates", "ambiguous", "ambiguity_tests", "discovered", "screening",
                                         "robust", "switch_timing", "set_revisions", "unexplained", "unphysical"}));
-  for (const char* key : {"steps", "estimated", "applied", "median_phase", "fitting_rms_before_N", "fitting_rms_after_N"})
+  for (const char* key : {"steps", "estimated", "applied", "median_phase", "rms_before_N", "rms_after_N"})
     EXPECT_TRUE(json["switch_timing"].contains(key)) << key;
   EXPECT_EQ(json["switch_timing"]["steps"].get<std::size_t>(), r.switch_timing.steps);
   EXPECT_EQ(json["unphysical"].size(), r.unphysical.size());
