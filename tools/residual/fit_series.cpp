@@ -121,6 +121,29 @@ void check_enough_kept(const FitSeries& s, const std::vector<record::RecordedRun
                            std::to_string(kMinFitSamples) + (why.empty() ? "" : " (set aside: " + why + ")"));
 }
 
+// The run's velocity: recorded, or zero_phase_velocity of its displacement (noted in `notes`).
+std::vector<double> velocity_of(const record::RecordedRun& run, const record::GapFilledRun& gap_filled,
+                                const Screening& screening, const FitSeriesOptions& options,
+                                std::vector<std::string>& notes) {
+  if (run.has_velocity()) return run.velocity;
+  double cutoff = options.velocity_cutoff;
+  if (cutoff <= 0.0) cutoff = motion_velocity_cutoff(run.displacement, run.sample_rate);
+  // A span where the displacement was faulted is no motion either: a long one splits the filter
+  // like a gap (its straight bridge would bend the velocity for the filter's length on both
+  // sides). A fault of the force alone leaves the motion measured.
+  std::vector<std::uint8_t> unmeasured = gap_filled.filled;
+  if (screening.excluded_samples > 0) {
+    const std::vector<std::uint8_t> moved = faulted_samples(screening, unmeasured.size(), &FaultedInputs::displacement);
+    for (std::size_t i = 0; i < unmeasured.size(); ++i) unmeasured[i] |= moved[i];
+  }
+  notes.push_back(run.name + ": velocity from the displacement, zero-phase low-pass at " + std::to_string(cutoff) +
+                  " Hz" +
+                  (gap_filled.gaps.empty() && screening.excluded_samples == 0
+                       ? ""
+                       : ", on each stretch between the logging gaps and the spans set aside"));
+  return zero_phase_velocity_by_stretch(run.displacement, run.time, run.sample_rate, cutoff, unmeasured);
+}
+
 }  // namespace
 
 FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const FitSeriesOptions& options) {
@@ -151,26 +174,7 @@ FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const Fi
     s.run_periods.push_back(1.0 / rate);
     const double gain =
         run.coil_signal == record::CoilSignal::kCommandVoltage ? *options.amps_per_volt : 1.0;
-    std::vector<double> velocity = run.velocity;
-    if (!run.has_velocity()) {
-      double cutoff = options.velocity_cutoff;
-      if (cutoff <= 0.0) cutoff = motion_velocity_cutoff(run.displacement, rate);
-      // A span where the displacement was faulted is no motion either: a long one splits the
-      // filter like a gap (its straight bridge would bend the velocity for the filter's length on
-      // both sides). A fault of the force alone leaves the motion measured.
-      std::vector<std::uint8_t> unmeasured = gap_filled.filled;
-      if (screening.excluded_samples > 0) {
-        const std::vector<std::uint8_t> moved =
-            faulted_samples(screening, unmeasured.size(), &FaultedInputs::displacement);
-        for (std::size_t i = 0; i < unmeasured.size(); ++i) unmeasured[i] |= moved[i];
-      }
-      velocity = zero_phase_velocity_by_stretch(run.displacement, run.time, run.sample_rate, cutoff, unmeasured);
-      s.notes.push_back(run.name + ": velocity from the displacement, zero-phase low-pass at " +
-                        std::to_string(cutoff) + " Hz" +
-                        (gap_filled.gaps.empty() && screening.excluded_samples == 0
-                             ? ""
-                             : ", on each stretch between the logging gaps and the spans set aside"));
-    }
+    const std::vector<double> velocity = velocity_of(run, gap_filled, screening, options, s.notes);
     // After the velocity: the samples beside a gap are measurements, set aside but not bridged;
     // so are those the model's J-A state cannot yet follow.
     set_aside_gaps(gap_filled, options.screening.margin_s, screening);

@@ -195,6 +195,38 @@ Json candidate_json(const CandidateTrial& t) {
 
 }  // namespace
 
+namespace {
+
+// What the screening set aside: the count and every span, with the reader's line where it has one.
+Json screening_json(const ResidualResult& r) {
+  std::size_t excluded = 0;
+  Json spans = Json::array();
+  for (const auto& [run, s] : r.screenings) {
+    excluded += s.excluded_samples;
+    for (const ScreenedSpan& span : s.spans) {
+      Json entry = {{"run", run},
+                    {"start_s", span.start_s},
+                    {"end_s", span.end_s},
+                    {"channel", span.channel},
+                    {"reason", std::string(to_string(span.reason))}};
+      if (span.line > 0) entry["line"] = span.line;
+      spans.push_back(std::move(entry));
+    }
+  }
+  return {{"excluded_samples", excluded}, {"spans", spans}};
+}
+
+Json switch_timing_json(const SwitchTiming& t) {
+  return {{"steps", t.steps},
+          {"estimated", t.estimated},
+          {"applied", t.applied},
+          {"median_phase", t.median_phase},
+          {"rms_before_N", t.rms_before},
+          {"rms_after_N", t.rms_after}};
+}
+
+}  // namespace
+
 std::string residual_json(const ResidualResult& r, const ForceFitFigures* fit) {
   Json effect_params = Json::object();
   for (const auto& e : r.accepted) {
@@ -212,20 +244,6 @@ std::string residual_json(const ResidualResult& r, const ForceFitFigures* fit) {
                           {"kind", t.interference ? "interference" : "damper"},
                           {"validation_gain", t.validation_gain},
                           {"evidence", evidence_json(t.evidence)}});
-  }
-  std::size_t excluded = 0;
-  Json spans = Json::array();
-  for (const auto& [run, s] : r.screenings) {
-    excluded += s.excluded_samples;
-    for (const ScreenedSpan& span : s.spans) {
-      Json entry = {{"run", run},
-                    {"start_s", span.start_s},
-                    {"end_s", span.end_s},
-                    {"channel", span.channel},
-                    {"reason", std::string(to_string(span.reason))}};
-      if (span.line > 0) entry["line"] = span.line;
-      spans.push_back(std::move(entry));
-    }
   }
   Json down_weighted = Json::array();
   for (const DownWeightedSpan& span : r.down_weighted)
@@ -261,20 +279,14 @@ std::string residual_json(const ResidualResult& r, const ForceFitFigures* fit) {
                     {"ambiguous", ambiguous},
                     {"ambiguity_tests", ambiguity_tests},
                     {"discovered", discovered},
-                    {"screening", {{"excluded_samples", excluded}, {"spans", spans}}},
+                    {"screening", screening_json(r)},
                     {"robust",
                      {{"asked", r.robust_fit},
                       {"sigma_N", r.robust_after.sigma},
                       {"down_weighted_share", r.robust_after.down_weighted_share},
                       {"base_refits", r.robust_refits},
                       {"spans", down_weighted}}},
-                    {"switch_timing",
-                     {{"steps", r.switch_timing.steps},
-                      {"estimated", r.switch_timing.estimated},
-                      {"applied", r.switch_timing.applied},
-                      {"median_phase", r.switch_timing.median_phase},
-                      {"rms_before_N", r.switch_timing.rms_before},
-                      {"rms_after_N", r.switch_timing.rms_after}}},
+                    {"switch_timing", switch_timing_json(r.switch_timing)},
                     {"set_revisions", r.revisions},
                     {"unexplained", r.unexplained}};
   if (fit != nullptr) out["fit"] = force_fit_json(*fit);

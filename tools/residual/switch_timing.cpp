@@ -1,9 +1,9 @@
 #include "tools/residual/switch_timing.hpp"
 
 #include <algorithm>
-#include <ranges>
 #include <cmath>
 #include <limits>
+#include <ranges>
 
 #include "tools/residual/model_fit.hpp"
 
@@ -48,9 +48,11 @@ std::vector<CurrentStep> steps_of(const FitSeries& s, const SwitchTimingOptions&
   return steps;
 }
 
-void write_phases(const std::vector<CurrentStep>& steps, const std::vector<double>& offset, FitSeries& s) {
+// Each step's row given the current its period held on average, at its phase (moved by `offset`
+// when given, one per step).
+void write_phases(const std::vector<CurrentStep>& steps, FitSeries& s, const std::vector<double>* offset = nullptr) {
   for (std::size_t j = 0; j < steps.size(); ++j) {
-    const double theta = std::clamp(steps[j].phase + offset[j], 0.0, 1.0);
+    const double theta = std::clamp(steps[j].phase + (offset != nullptr ? (*offset)[j] : 0.0), 0.0, 1.0);
     s.current[steps[j].row] = theta * steps[j].before + (1.0 - theta) * steps[j].after;
   }
 }
@@ -64,7 +66,7 @@ void gauss_newton_pass(const model::DamperModel& model, FitSeries& s, std::vecto
                        std::vector<double>& force) {
   std::vector<double> offset(steps.size());
   for (std::size_t j = 0; j < steps.size(); ++j) offset[j] = steps[j].phase < 0.5 ? 0.25 : -0.25;
-  write_phases(steps, offset, s);
+  write_phases(steps, s, &offset);
   std::vector<double> probed;
   predict_force(model, s, probed);
   for (std::size_t j = 0; j < steps.size(); ++j) {
@@ -80,8 +82,7 @@ void gauss_newton_pass(const model::DamperModel& model, FitSeries& s, std::vecto
     steps[j].phase = std::clamp(steps[j].phase + along / norm, 0.0, 1.0);
     steps[j].estimated = true;
   }
-  std::ranges::fill(offset, 0.0);
-  write_phases(steps, offset, s);
+  write_phases(steps, s);
   predict_force(model, s, force);
 }
 
@@ -129,19 +130,13 @@ SwitchTiming time_current_steps(const model::DamperModel& model, FitSeries& seri
   out.rms_before = out.rms_after = residual_rms(series, force).fitting;
   if (steps.empty()) return out;
   const std::vector<double> logged = series.current;
-  for (CurrentStep& step : steps) step.phase = options.start_phase;
-  if (options.iterations == 0) {
-    for (CurrentStep& step : steps) step.estimated = true;
-    write_phases(steps, std::vector<double>(steps.size(), 0.0), series);
-    predict_force(model, series, force);
-  }
   for (int pass = 0; pass < options.iterations; ++pass) gauss_newton_pass(model, series, steps, force);
   out.median_phase = median_of_estimated(steps);
   for (CurrentStep& step : steps) {
     if (step.estimated) ++out.estimated;
     else step.phase = out.median_phase;
   }
-  write_phases(steps, std::vector<double>(steps.size(), 0.0), series);
+  write_phases(steps, series);
   predict_force(model, series, force);
   const double rms = residual_rms(series, force).fitting;
   const auto kept = static_cast<double>(std::ranges::count_if(series.role, [](SampleRole r) { return r != SampleRole::kExcluded; }));

@@ -31,7 +31,6 @@ struct SwitchTimingOptions {
   double step_share = 0.1;  // a step of more than this share of the run's current range
   double window = 0.1;      // [s] of force after a step that can inform its phase
   int iterations = 3;       // Gauss-Newton passes over all steps (each two observer passes)
-  double start_phase = 0.0; // every step's phase before the passes (with none: the phase written)
   // The phases are written only when they lower the fitting mean square by this many times what
   // fitting one phase per step to white noise would (steps / kept samples of it; 0: whenever
   // they lower it at all).
