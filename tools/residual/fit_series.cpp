@@ -64,9 +64,7 @@ void mark_switch_settling(FitSeries& s, const FitSeriesOptions& options) {
     const double step = options.switch_step * (std::max(*hi, 0.0) - std::min(*lo, 0.0));
     if (!(step > 0.0)) continue;
     std::size_t marked_to = begin;  // marks [.., marked_to) are set
-    for (std::size_t i = begin; i < end; ++i) {
-      const double before = i == begin ? 0.0 : s.current[i - 1];
-      if (!(std::fabs(s.current[i] - before) > step)) continue;
+    for (const std::size_t i : current_step_rows(s, begin, end, step)) {
       std::size_t j = std::max(i, marked_to);
       for (; j < end && s.time[j] - s.time[i] < options.switch_settling; ++j) s.after_switch[j] = 1;
       marked_to = j;
@@ -128,8 +126,8 @@ std::vector<double> velocity_of(const record::RecordedRun& run, const record::Ga
   if (run.has_velocity()) return run.velocity;
   double cutoff = options.velocity_cutoff;
   if (cutoff <= 0.0) cutoff = motion_velocity_cutoff(run.displacement, run.sample_rate);
-  // A span where the displacement was faulted is no motion either: a long one splits the filter
-  // like a gap (its straight bridge would bend the velocity for the filter's length on both
+  // A span where the displacement was faulted is no motion either: it is bridged or split like a
+  // gap (filtered through as recorded, it would bend the velocity for the filter's length on both
   // sides). A fault of the force alone leaves the motion measured.
   std::vector<std::uint8_t> unmeasured = gap_filled.filled;
   if (screening.excluded_samples > 0) {
@@ -140,7 +138,7 @@ std::vector<double> velocity_of(const record::RecordedRun& run, const record::Ga
                   " Hz" +
                   (gap_filled.gaps.empty() && screening.excluded_samples == 0
                        ? ""
-                       : ", on each stretch between the logging gaps and the spans set aside"));
+                       : ", bridged across the logging gaps and the spans set aside (split where too long)"));
   return zero_phase_velocity_by_stretch(run.displacement, run.time, run.sample_rate, cutoff, unmeasured);
 }
 
@@ -209,6 +207,13 @@ FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const Fi
   check_enough_kept(s, runs);
   mark_switch_settling(s, options);
   return s;
+}
+
+std::vector<std::size_t> current_step_rows(const FitSeries& s, std::size_t begin, std::size_t end, double threshold) {
+  std::vector<std::size_t> rows;
+  for (std::size_t i = begin; i < end; ++i)
+    if (std::fabs(s.current[i] - (i == begin ? 0.0 : s.current[i - 1])) > threshold) rows.push_back(i);
+  return rows;
 }
 
 FitSeries without_excluded(const FitSeries& series, const std::vector<double>& per_sample,

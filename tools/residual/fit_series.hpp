@@ -107,6 +107,10 @@ FitSeries without_excluded(const FitSeries& series, const std::vector<double>& p
 // decides whether a run can show the magnetics at all.
 bool current_varies(const FitSeries& series);
 
+// The rows in [begin, end) where the coil current steps by more than `threshold` from the row
+// before (from no current at `begin`): what the switch settling and the switch timing start from.
+std::vector<std::size_t> current_step_rows(const FitSeries& s, std::size_t begin, std::size_t end, double threshold);
+
 // A time for every sample on one axis for plots: each run's own clock from 0, the next run
 // starting a sample period after the one before ends (so a 22.4 s run at 200 Hz spans 22.4 s).
 std::vector<double> series_time(const FitSeries& s);

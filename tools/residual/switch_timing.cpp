@@ -112,10 +112,8 @@ std::vector<std::size_t> current_steps(const FitSeries& s, double step_share) {
     // A run at one current has no step to time, its first row included: its coil was on before
     // the record began, and the model's start from no current is the settling's question.
     if (!(high > low)) continue;
-    const double threshold = step_share * (high - low);
-    if (std::abs(s.current[span.from]) > threshold) rows.push_back(span.from);
-    for (std::size_t i = span.from + 1; i < span.to; ++i)
-      if (std::abs(s.current[i] - s.current[i - 1]) > threshold) rows.push_back(i);
+    const std::vector<std::size_t> run_rows = current_step_rows(s, span.from, span.to, step_share * (high - low));
+    rows.insert(rows.end(), run_rows.begin(), run_rows.end());
   }
   return rows;
 }

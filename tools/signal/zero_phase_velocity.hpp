@@ -14,9 +14,12 @@ namespace mrd::tools {
 [[nodiscard]] std::vector<double> zero_phase_velocity(std::span<const double> displacement,
                                                       double sample_rate, double cutoff);
 
-// The same on each stretch between logging gaps (record::fill_gaps's `filled`, one flag per
-// sample): no filter runs across a gap, each stretch's ends padded like a record's; across a gap,
-// the slope of its bridge. Gaps under a tenth of the cutoff's period are filtered through.
+// The same across logging gaps and spans set aside (record::fill_gaps's `filled`, one flag per
+// sample). A gap of up to 1.5 periods of the cutoff with a quarter period of measured motion on
+// both sides is bridged by the quintic that meets each side's value, slope and curvature, and
+// filtered through; any other gap under a tenth of the cutoff's period is filtered through on its
+// recorded bridge; the rest split the record into stretches, each padded at its ends like a
+// record, and take their chord's slope.
 [[nodiscard]] std::vector<double> zero_phase_velocity_by_stretch(std::span<const double> displacement,
                                                                  std::span<const double> time, double sample_rate,
                                                                  double cutoff, const std::vector<std::uint8_t>& filled);

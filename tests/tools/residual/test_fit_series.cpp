@@ -142,7 +142,7 @@ TEST(ZeroPhaseVelocity, TheRecordsEdgesKeepTheirVelocity) {
 }
 
 // A logging gap costs only the gap: its samples are filled at the nominal period and set aside,
-// the rate is the logger's, and the velocity on either side is computed without crossing it.
+// the rate is the logger's, and the velocity on either side never runs across its straight bridge.
 TEST(FitSeries, ALoggingGapCostsOnlyTheGap) {
   mrd::record::RecordedRun run = sine_run(1000, 8, false);
   for (std::vector<double>* c : {&run.time, &run.displacement, &run.coil, &run.force})
@@ -200,6 +200,27 @@ TEST(ZeroPhaseVelocity, UnmeasuredSpansAtTheRecordsEndsTakeTheChord) {
   ASSERT_EQ(v.size(), 1000u);
   for (const std::size_t i : {0u, 49u, 500u, 900u, 999u}) EXPECT_NEAR(v[i], 0.01, 1e-6) << i;
   EXPECT_EQ(zero_phase_velocity_by_stretch(x, t, 1000.0, 5.0, std::vector<std::uint8_t>(1000, 1)), std::vector<double>(1000, 0.01));
+}
+
+// A span whose displacement was faulted (an LVDT stuck at its stop for a third of a second) with
+// motion measured on both sides: the motion is bridged between the two and filtered through, so
+// the kept samples beside it keep their velocity, where a reversal's timing depends on it.
+TEST(ZeroPhaseVelocity, ASpanWithMotionOnBothSidesIsBridgedNotSplit) {
+  const double rate = 1000.0, amplitude = 0.02 * 2.0 * std::numbers::pi;
+  std::vector<double> x, t;
+  for (int i = 0; i < 8000; ++i) {
+    t.push_back(i / rate);
+    x.push_back(0.02 * std::sin(2.0 * std::numbers::pi * t.back()));
+  }
+  std::vector<std::uint8_t> unmeasured(x.size(), 0);
+  const std::vector<double> whole = zero_phase_velocity_by_stretch(x, t, rate, 3.0, unmeasured);
+  std::fill(unmeasured.begin() + 4100, unmeasured.begin() + 4470, 1);
+  std::fill(x.begin() + 4100, x.begin() + 4470, 0.0199);  // the stuck reading, never used
+  const std::vector<double> v = zero_phase_velocity_by_stretch(x, t, rate, 3.0, unmeasured);
+  double worst = 0.0;
+  for (int i = 3900; i < 4670; ++i)
+    if (!unmeasured[i]) worst = std::max(worst, std::fabs(v[i] - whole[i]));
+  EXPECT_LT(worst, 5e-3 * amplitude);  // 0.23 %; split into two padded stretches, 2 %
 }
 
 TEST(ZeroPhaseVelocity, CutoffFollowsTheMotion) {
