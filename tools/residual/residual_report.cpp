@@ -193,10 +193,6 @@ Json candidate_json(const CandidateTrial& t) {
           {"evidence", evidence_json(t.evidence)}};
 }
 
-}  // namespace
-
-namespace {
-
 // What the screening set aside: the count and every span, with the reader's line where it has one.
 Json screening_json(const ResidualResult& r) {
   std::size_t excluded = 0;

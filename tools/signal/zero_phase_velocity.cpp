@@ -160,12 +160,11 @@ std::vector<double> zero_phase_velocity_by_stretch(std::span<const double> displ
   for (std::size_t i = 0; i < n;) {
     std::size_t j = i;
     while (j < n && filled[j]) ++j;
-    if (j > i && j - i <= longest_bridge && i >= fit && n - j >= fit && measured(i - fit, i) && measured(j, j + fit)) {
-      bridge_between(x, i - 1, j, fit);
+    const bool bridged =
+        j > i && j - i <= longest_bridge && i >= fit && n - j >= fit && measured(i - fit, i) && measured(j, j + fit);
+    if (bridged) bridge_between(x, i - 1, j, fit);
+    if (bridged || (j > i && j - i <= short_gap))
       std::fill(split.begin() + static_cast<std::ptrdiff_t>(i), split.begin() + static_cast<std::ptrdiff_t>(j), 0);
-    } else if (j > i && j - i <= short_gap) {
-      std::fill(split.begin() + static_cast<std::ptrdiff_t>(i), split.begin() + static_cast<std::ptrdiff_t>(j), 0);
-    }
     i = j > i ? j : i + 1;
   }
   std::vector<double> v(n, 0.0);
