@@ -134,12 +134,18 @@ double median_of_estimated(const std::vector<CurrentStep>& steps) {
 void estimate_phases(const model::DamperModel& model, FitSeries& series, std::vector<CurrentStep>& steps,
                      const SwitchTimingOptions& options, std::vector<double>& force, SwitchTiming& out) {
   out.steps = steps.size();
+  // A ramp's starting phase writes a step where the log had a ramp: the first pass's probes are
+  // measured from that, not from the logged ramp.
+  if (std::ranges::any_of(steps, [](const CurrentStep& step) { return step.rows > 1; })) {
+    write_phases(steps, series);
+    predict_force(model, series, force);
+  }
   for (int pass = 0; pass < options.iterations; ++pass) gauss_newton_pass(model, series, steps, force);
   out.median_phase = median_of_estimated(steps);
   out.estimated = 0;
   for (CurrentStep& step : steps) {
     if (step.estimated) ++out.estimated;
-    else if (step.rows == 1) step.phase = out.median_phase;  // a ramp keeps its logged charge
+    else if (step.rows == 1) step.phase = out.median_phase;  // a ramp keeps its logged charge, as a step
   }
   write_phases(steps, series);
   predict_force(model, series, force);

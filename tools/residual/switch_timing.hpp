@@ -23,7 +23,8 @@ namespace mrd::tools {
 struct SwitchTiming {
   std::size_t steps = 0;      // switches: rows where the current stepped by more than the threshold
                               // (a ramp of up to three rows in one direction counts once)
-  std::size_t estimated = 0;  // those with kept samples after them (others take the median)
+  std::size_t estimated = 0;  // those with kept samples after them (others take the median; a
+                              // ramp, the phase that keeps its logged charge)
   double median_phase = 0.0;  // of the estimated one-row steps
   double rms_before = 0.0;    // [N] RMS of the fitting samples with every step at its previous row
   double rms_after = 0.0;     // [N] with the estimated phases
