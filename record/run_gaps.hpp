@@ -18,6 +18,7 @@ struct GapFilledRun {
   std::vector<std::uint8_t> filled;  // per sample of `run`: 1 where no logger wrote it
   // Each gap's filled samples [first, last] in `run`, in order.
   std::vector<std::pair<std::size_t, std::size_t>> gaps;
+  bool resampled = false;  // taken unevenly and put on the even grid (resample_on_even_grid)
 };
 // The run itself (no sample filled) when it has no gap, or when long steps are too many to be
 // gaps (over 1 % of them, or 10: a time column coarser than the period; a note says so). A run

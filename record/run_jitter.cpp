@@ -44,6 +44,7 @@ GapFilledRun resample_on_even_grid(const RecordedRun& run, const TimeJitter& jit
   for (std::size_t c = 0; c < from.size(); ++c)
     if (!from[c]->empty()) to[c]->assign(grid_size, 0.0);
   out.filled.assign(grid_size, 0);
+  out.resampled = true;
   std::size_t i = 1;  // run.time[i - 1] <= t < run.time[i], or i = n - 1 at the end
   for (std::size_t k = 0; k < grid_size; ++k) {
     const double t = run.time.front() + static_cast<double>(k) * period;

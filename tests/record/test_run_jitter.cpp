@@ -88,7 +88,9 @@ TEST(RunJitter, AJitteredRunResampledIsTheEvenRunAgain) {
     // On the grid, the force is the knee's to a linear interpolation's error.
     EXPECT_LT(rms_force_error(resampled.run), 0.2 * unresampled) << jitter;
     EXPECT_NE(resampled.run.notes.back().find("resampled"), std::string::npos);
+    EXPECT_TRUE(resampled.resampled) << jitter;
   }
+  EXPECT_FALSE(mrd::record::fill_gaps(even).resampled);
 }
 
 TEST(RunJitter, AGapInAJitteredRunIsFilledAndFlagged) {

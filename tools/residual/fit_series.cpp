@@ -181,6 +181,7 @@ FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const Fi
     check_motion(even, screening);
     s.run_starts.push_back(s.size());
     s.run_names.push_back(recorded.name);
+    s.run_resampled.push_back(gap_filled.resampled ? 1 : 0);
     const std::size_t n = run.size();
     // Half the blocks validate: a fixed shuffle, the same for every run and every call.
     std::vector<SampleRole> held_out(static_cast<std::size_t>(blocks));
@@ -228,6 +229,7 @@ FitSeries without_excluded(const FitSeries& series, const std::vector<double>& p
     out.run_starts.push_back(out.size());
     out.run_periods.push_back(series.run_periods[r]);
     if (r < series.run_names.size()) out.run_names.push_back(series.run_names[r]);
+    if (r < series.run_resampled.size()) out.run_resampled.push_back(series.run_resampled[r]);
     for (std::size_t i = series.run_starts[r]; i < end; ++i) {
       if (series.role[i] == SampleRole::kExcluded) continue;
       append_sample(out, series, i);
@@ -256,6 +258,7 @@ FitSeries decimate(const FitSeries& series, std::size_t wanted, double min_rate)
     out.sample_period = r == 0 ? out.run_periods[0] : std::min(out.sample_period, out.run_periods[r]);
     out.run_starts.push_back(out.size());
     if (r < series.run_names.size()) out.run_names.push_back(series.run_names[r]);
+    if (r < series.run_resampled.size()) out.run_resampled.push_back(series.run_resampled[r]);
     for (std::size_t from = series.run_starts[r]; from < ends[r]; from += factor) {
       const std::size_t to = std::min(from + factor, ends[r]);
       const std::size_t mid = from + (to - from) / 2;
@@ -288,6 +291,7 @@ FitSeries run_openings(const FitSeries& series, std::size_t max_samples) {
     out.run_starts.push_back(out.size());
     out.run_periods.push_back(series.run_periods[r]);
     if (r < series.run_names.size()) out.run_names.push_back(series.run_names[r]);
+    if (r < series.run_resampled.size()) out.run_resampled.push_back(series.run_resampled[r]);
     for (std::size_t i = series.run_starts[r]; i < series.run_starts[r] + take[r]; ++i) append_sample(out, series, i);
   }
   return out;

@@ -33,6 +33,9 @@ struct FitSeries {
   // The first sample of each run: the model starts again from a demagnetised core there.
   std::vector<std::size_t> run_starts;
   std::vector<std::string> run_names;  // one per run start, for the reports
+  // One per run start: 1 where the reader put samples taken unevenly on the even grid, every
+  // channel interpolated (record::resample_on_even_grid); empty: none was.
+  std::vector<std::uint8_t> run_resampled;
   std::vector<SampleRole> role;  // one per sample
   // 1 for a sample within the settling span after a step of the coil current (empty: none). A
   // transient there is the model's question (a coil lag, eddy currents) that the effect search

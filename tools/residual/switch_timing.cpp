@@ -39,13 +39,19 @@ struct CurrentStep {
 // up to half a period late have two of the grid's rows between them, three steps at most.
 constexpr std::size_t kMaxRampRows = 3;
 
-// Steps at consecutive rows, in one direction, read as one switch (see CurrentStep).
+// Steps at consecutive rows, in one direction, read as one switch (see CurrentStep), on a run the
+// reader resampled: on a run logged evenly a ramp is what the coil's current did (a driver's
+// slew limit, an inductance) and each row keeps its own step.
 std::vector<std::size_t> ramp_starts(const FitSeries& s, const std::vector<std::size_t>& rows) {
   const auto starts_a_run = [&s](std::size_t i) { return std::ranges::binary_search(s.run_starts, i); };
+  const auto resampled = [&s](std::size_t i) {
+    const auto run = static_cast<std::size_t>(std::ranges::upper_bound(s.run_starts, i) - s.run_starts.begin()) - 1;
+    return run < s.run_resampled.size() && s.run_resampled[run] != 0;
+  };
   std::vector<std::size_t> starts;
   for (std::size_t j = 0; j < rows.size(); ++j) {
     const std::size_t i = rows[j];
-    const bool continues = j > 0 && i == rows[j - 1] + 1 && !starts_a_run(i) && !starts_a_run(rows[j - 1]) &&
+    const bool continues = j > 0 && i == rows[j - 1] + 1 && !starts_a_run(i) && !starts_a_run(rows[j - 1]) && resampled(i) &&
                            i - rows[starts.back()] < kMaxRampRows &&
                            (s.current[i] - s.current[i - 1]) * (s.current[i - 1] - s.current[i - 2]) > 0.0;
     if (!continues) starts.push_back(j);

@@ -112,6 +112,7 @@ FitSeries jittered_run(double jitter, std::vector<double>& phases) {
     samples.push_back(steps[static_cast<std::size_t>(previous)]);
   }
   FitSeries s = empty_series("jittered");
+  s.run_resampled = {1};
   std::size_t i = 0;
   for (int k = 0; k < kRows; ++k) {
     const double t = k * kPeriod;
@@ -186,6 +187,11 @@ TEST(SwitchTiming, ARampFromInterpolationIsOneSwitch) {
   ASSERT_TRUE(t.applied);
   EXPECT_EQ(t.steps, truth.size());
   EXPECT_LT(t.rms_after, 0.105 * t.rms_before) << t.rms_before << " -> " << t.rms_after;
+  // The same rows from a run logged evenly: a ramp there is what the current did, a step a row.
+  std::vector<double> unused;
+  FitSeries even = jittered_run(0.3, unused);
+  even.run_resampled = {0};
+  EXPECT_GT(time_current_steps(lagged_damper(), even).steps, truth.size() + 10);
 }
 
 }  // namespace
