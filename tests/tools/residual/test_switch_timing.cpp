@@ -9,6 +9,7 @@
 
 #include "model/effects/coil_lag.hpp"
 #include "model/observer.hpp"
+#include "record/run_jitter.hpp"
 
 namespace {
 
@@ -95,9 +96,8 @@ FitSeries logged_run(bool on_rows, std::vector<double>& phases) {
 }
 
 // The rig logged unevenly: row k sampled at the rig's step up to `jitter` of a period off its grid
-// time, then put back on the even grid by linear interpolation of every channel, as
-// record::resample_on_even_grid does. A switch now shows as a ramp over the rows between the two
-// samples either side of it. The default damper's sign knee is far shorter than a period, so a
+// time, then put back on the even grid by record::resample_on_even_grid, as the reader does. A
+// switch now shows as a ramp over the rows between the two samples either side of it. The default damper's sign knee is far shorter than a period, so a
 // reversal's force is a step between two samples too: the rows beside each reversal are set aside,
 // their interpolation error is not the switches'.
 FitSeries jittered_run(double jitter, std::vector<double>& phases) {
@@ -111,18 +111,20 @@ FitSeries jittered_run(double jitter, std::vector<double>& phases) {
     previous = std::clamp(k * kFine + wander(rng), previous + 1, kRows * kFine - 1);
     samples.push_back(steps[static_cast<std::size_t>(previous)]);
   }
+  mrd::record::RecordedRun logged;
+  for (const RigSample& sample : samples) {
+    logged.time.push_back(sample.t);
+    logged.displacement.push_back(sample.x);
+    logged.velocity.push_back(sample.v);
+    logged.coil.push_back(sample.current);
+    logged.force.push_back(sample.force);
+  }
+  logged.sample_rate = 1.0 / kPeriod;
+  const mrd::record::GapFilledRun even = mrd::record::resample_on_even_grid(logged, mrd::record::measure_jitter(logged.time));
   FitSeries s = empty_series("jittered");
   s.run_resampled = {1};
-  std::size_t i = 0;
-  for (int k = 0; k < kRows; ++k) {
-    const double t = k * kPeriod;
-    while (i + 2 < samples.size() && samples[i + 1].t <= t) ++i;
-    const RigSample& a = samples[i];
-    const RigSample& b = samples[i + 1];
-    const double f = std::clamp((t - a.t) / (b.t - a.t), 0.0, 1.0);
-    const auto lerp = [f](double p, double q) { return p + f * (q - p); };
-    append(s, {t, lerp(a.x, b.x), lerp(a.v, b.v), lerp(a.current, b.current), lerp(a.force, b.force)});
-  }
+  for (std::size_t k = 0; k < even.run.size(); ++k)
+    append(s, {even.run.time[k], even.run.displacement[k], even.run.velocity[k], even.run.coil[k], even.run.force[k]});
   for (std::size_t k = 1; k < s.size(); ++k)
     if (s.velocity[k] * s.velocity[k - 1] <= 0.0)
       for (std::size_t r = k > 2 ? k - 2 : 0; r < std::min(s.size(), k + 2); ++r) s.role[r] = SampleRole::kExcluded;
