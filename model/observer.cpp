@@ -13,6 +13,7 @@ Observer::Observer(const DamperModel& model, const ObserverSettings& settings)
       effects_(model.effects, settings.sample_period) {}
 
 ObserverEstimate Observer::step(const Measurement& m) {
+  effects_.set_step(m.step_duration.value_or(sample_period_));
   const PredictedMotion motion = track(m);
   // One well-predicted branch: with every effect off this is the base model unchanged.
   if (!effects_.active()) [[likely]] return base_force(motion, magnetics_.apply_current(m.coil_current));
@@ -22,6 +23,7 @@ ObserverEstimate Observer::step(const Measurement& m) {
 }
 
 ObserverEstimate Observer::step_at_induction(const Measurement& m, double B) {
+  effects_.set_step(m.step_duration.value_or(sample_period_));
   const PredictedMotion motion = track(m);
   if (!effects_.active()) return base_force(motion, B);
   return force_with_effects(effects_.motion(motion, velocity_filter_.acceleration()),
@@ -29,7 +31,8 @@ ObserverEstimate Observer::step_at_induction(const Measurement& m, double B) {
 }
 
 PredictedMotion Observer::track(const Measurement& m) {
-  const SampleTiming timing = m.timing.value_or(SampleTiming{.fresh = true, .interval = sample_period_, .age = 0.0});
+  const SampleTiming timing =
+      m.timing.value_or(SampleTiming{.fresh = true, .interval = m.step_duration.value_or(sample_period_), .age = 0.0});
   // Without a velocity sensor the tracker gives the velocity; with one, it runs only for an
   // effect that needs the acceleration.
   if ((!m.velocity || effects_.needs_acceleration()) && timing.fresh) {

@@ -33,6 +33,9 @@ struct Measurement {
   // The sample's own timing; without it the sample is fresh, one period after the last.
   std::optional<SampleTiming> timing;
   double coil_current = 0.0;  // [A], the current that flowed this period (measured, or the last command)
+  // [s] since the previous step, for a run replayed at the times its samples were taken;
+  // without it one sample period. The loop runs at its fixed rate and leaves it out.
+  std::optional<double> step_duration;
 };
 
 struct ObserverEstimate {

@@ -22,10 +22,14 @@ constexpr double kMaxFilledShare = 4.0;
 
 }  // namespace
 
-GapFilledRun fill_gaps(const RecordedRun& run) {
-  GapFilledRun out;
+GapFilledRun fill_gaps(const RecordedRun& run, UnevenTimes uneven) {
   const std::size_t n = run.size();
   const double period = run.sample_rate > 0.0 ? 1.0 / run.sample_rate : 0.0;
+  if (const TimeJitter jitter = measure_jitter(run.time); period > 0.0 && jitter.uneven(period)) {
+    const double added = std::floor(run.duration() / period) + 1.0 - static_cast<double>(n);
+    if (added > kMaxFilledShare * static_cast<double>(n)) throw_far_off(run, added);
+    return uneven == UnevenTimes::kResample ? resample_on_even_grid(run, jitter) : keep_recorded_times(run, jitter);
+  }
   std::size_t long_steps = 0;
   double missing_total = 0.0;
   for (std::size_t i = 1; i < n && period > 0.0; ++i) {
@@ -34,26 +38,30 @@ GapFilledRun fill_gaps(const RecordedRun& run) {
     ++long_steps;
     missing_total += dt / period;
   }
-  if (const TimeJitter jitter = measure_jitter(run.time); period > 0.0 && jitter.uneven(period)) {
-    const double added = std::floor(run.duration() / period) + 1.0 - static_cast<double>(n);
-    if (added > kMaxFilledShare * static_cast<double>(n)) throw_far_off(run, added);
-    return resample_on_even_grid(run, jitter);
-  }
-  out.run = run;
-  out.filled.assign(n, 0);
-  if (long_steps == 0) return out;
-  // Many long steps are a time column coarser than the period, not gaps.
-  if (long_steps > std::max<std::size_t>(10, n / 100)) {
-    out.run.notes.push_back(std::to_string(long_steps) +
-                            " time steps longer than 1.5 periods: too many to be logging gaps, left as they are");
+  if (long_steps == 0 || long_steps > std::max<std::size_t>(10, n / 100)) {
+    GapFilledRun out{.run = run, .filled = std::vector<std::uint8_t>(n, 0)};
+    // Many long steps are a time column coarser than the period, not gaps.
+    if (long_steps > 0)
+      out.run.notes.push_back(std::to_string(long_steps) +
+                              " time steps longer than 1.5 periods: too many to be logging gaps, left as they are");
     return out;
   }
   if (missing_total > kMaxFilledShare * static_cast<double>(n)) throw_far_off(run, missing_total);
+  GapFilledRun out = fill_steps_longer_than(run, 1.5 * period);
+  out.run.notes.push_back(std::to_string(out.gaps.size()) + " logging gaps filled with " +
+                          std::to_string(out.run.size() - n) +
+                          " samples at the nominal period (inputs bridged, not fitted)");
+  return out;
+}
 
+GapFilledRun fill_steps_longer_than(const RecordedRun& run, double longest_step) {
+  GapFilledRun out;
+  const std::size_t n = run.size();
+  const double period = 1.0 / run.sample_rate;
+  out.run = run;
   RecordedRun& f = out.run;
   f.time.clear();
   for (std::vector<double>* c : f.channels()) c->clear();
-  out.filled.clear();
   const auto from = run.channels();
   const auto to = f.channels();
   const auto append = [&](std::size_t i) {
@@ -62,11 +70,11 @@ GapFilledRun fill_gaps(const RecordedRun& run) {
       if (!from[c]->empty()) to[c]->push_back((*from[c])[i]);
     out.filled.push_back(0);
   };
-  append(0);
+  if (n > 0) append(0);
   for (std::size_t i = 1; i < n; ++i) {
     const double dt = run.time[i] - run.time[i - 1];
-    if (dt > 1.5 * period) {
-      const auto missing = static_cast<std::size_t>(std::lround(dt / period)) - 1;
+    if (dt > longest_step) {
+      const auto missing = static_cast<std::size_t>(std::max(std::lround(dt / period), 1L)) - 1;
       const std::size_t first = f.size();
       for (std::size_t k = 1; k <= missing; ++k) {
         const double w = static_cast<double>(k) / static_cast<double>(missing + 1);
@@ -86,8 +94,6 @@ GapFilledRun fill_gaps(const RecordedRun& run) {
       if (first <= row.next_sample + added) added += last - first + 1;
     row.next_sample += added;
   }
-  f.notes.push_back(std::to_string(out.gaps.size()) + " logging gaps filled with " +
-                    std::to_string(f.size() - n) + " samples at the nominal period (inputs bridged, not fitted)");
   return out;
 }
 

@@ -44,7 +44,7 @@ GapFilledRun resample_on_even_grid(const RecordedRun& run, const TimeJitter& jit
   for (std::size_t c = 0; c < from.size(); ++c)
     if (!from[c]->empty()) to[c]->assign(grid_size, 0.0);
   out.filled.assign(grid_size, 0);
-  out.resampled = true;
+  out.timing = RunTiming::kResampled;
   std::size_t i = 1;  // run.time[i - 1] <= t < run.time[i], or i = n - 1 at the end
   for (std::size_t k = 0; k < grid_size; ++k) {
     const double t = run.time.front() + static_cast<double>(k) * period;
@@ -69,6 +69,19 @@ GapFilledRun resample_on_even_grid(const RecordedRun& run, const TimeJitter& jit
                 "every channel resampled onto it",
                 jitter.wander / period, jitter.resolution / period);
   g.notes.emplace_back(note);
+  return out;
+}
+
+GapFilledRun keep_recorded_times(const RecordedRun& run, const TimeJitter& jitter) {
+  const double period = 1.0 / run.sample_rate;
+  GapFilledRun out = fill_steps_longer_than(run, 1.5 * period + 2.0 * jitter.wander);
+  out.timing = RunTiming::kRecorded;
+  char note[200];
+  std::snprintf(note, sizeof note,
+                "timestamps wander %.3g periods about an even grid (the time column resolves %.3g of one): "
+                "each sample kept at its recorded time, %zu logging gaps filled",
+                jitter.wander / period, jitter.resolution / period, out.gaps.size());
+  out.run.notes.emplace_back(note);
   return out;
 }
 

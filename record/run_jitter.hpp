@@ -30,4 +30,9 @@ struct TimeJitter {
 // reader's set-aside rows point at the grid sample after their time.
 [[nodiscard]] GapFilledRun resample_on_even_grid(const RecordedRun& run, const TimeJitter& jitter);
 
+// The same run at its recorded times (RunTiming::kRecorded): only a step longer than 1.5
+// periods plus twice the wander is a gap, filled at the nominal period and flagged, as
+// fill_gaps does. For tools that step the model by each sample's own interval.
+[[nodiscard]] GapFilledRun keep_recorded_times(const RecordedRun& run, const TimeJitter& jitter);
+
 }  // namespace mrd::record

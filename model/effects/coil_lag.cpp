@@ -28,6 +28,11 @@ CoilLag::CoilLag(const CoilLagParams& params, double sample_period)
 
 double CoilLag::gain_over(double dt) const { return dt == period_ ? gain_ : lag_gain(dt, time_constant_); }
 
+void CoilLag::set_step(double dt) {
+  gain_ = lag_gain(dt, time_constant_);
+  period_ = dt;
+}
+
 double CoilLag::step(double command) {
   if (std::isfinite(command)) current_ += gain_ * (command - current_);
   return current_;

@@ -37,6 +37,8 @@ class CoilLag {
   double step(double command);
   [[nodiscard]] double current() const { return current_; }
   void reset(double current = 0.0) { current_ = current; }
+  // The next steps' length [s], for samples taken unevenly (EffectChain::set_step).
+  void set_step(double dt);
 
   // The lag inverted over one period `dt` [s]: the command that, held over dt, brings the
   // current from its present value to `target_current` [A] exactly,

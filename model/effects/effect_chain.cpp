@@ -27,11 +27,20 @@ std::tuple<typename E::Element...> make_elements(EffectList<E...>, const EffectS
 EffectChain::EffectChain(const EffectSet& effects, double sample_period)
     : config_(effects),
       active_(effects.any_enabled()),
+      step_(sample_period),
       elements_(make_elements(AllEffects{}, effects, sample_period)) {
   std::size_t i = 0;
   effects.for_each([&]<typename E>(const typename E::Params& p) {
     enabled_[i++] = p.enabled;
     if constexpr (requires { E::kNeedsAcceleration; }) needs_acceleration_ = needs_acceleration_ || p.enabled;
+  });
+}
+
+void EffectChain::set_step(double dt) {
+  if (dt == step_ || !(dt > 0.0)) return;
+  step_ = dt;
+  for_each_enabled([&]<typename E>(typename E::Element& e) {
+    if constexpr (requires { e.set_step(dt); }) e.set_step(dt);
   });
 }
 

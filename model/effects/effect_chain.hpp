@@ -35,6 +35,11 @@ class EffectChain {
   // the rig has a velocity sensor).
   [[nodiscard]] bool needs_acceleration() const { return needs_acceleration_; }
 
+  // The length [s] of the steps from here on: the sample period unless the samples were taken
+  // unevenly (an offline run at its recorded times). Each time-dependent element (a lag, a
+  // cooling, an integration over dx = v dt, a derivative) takes it; repeating a length costs a
+  // comparison.
+  void set_step(double dt);
   [[nodiscard]] PredictedMotion motion(const PredictedMotion& reading, double acceleration) const;
   double coil_current(double command);
   // Hook 2 inverted, for a force or B command: the currents that can flow at the end of `dt`
@@ -83,6 +88,7 @@ class EffectChain {
   bool needs_acceleration_ = false;
   std::array<bool, AllEffects::size> enabled_{};
   double coil_current_ = 0.0;
+  double step_;  // [s]
   Elements<AllEffects>::type elements_;
 };
 

@@ -106,6 +106,8 @@ class LearnedTerms {
     return f;
   }
   void reset() { has_previous_ = false; }
+  // The next steps' length [s], for samples taken unevenly (EffectChain::set_step).
+  void set_step(double dt) { inverse_period_ = 1.0 / dt; }
 
  private:
   std::array<double, kLearnedTermCount> coefficients_;

@@ -72,6 +72,8 @@ class PreyieldHysteresis {
   [[nodiscard]] double z() const { return z_; }
   [[nodiscard]] double z_max() const { return z_max_; }
   void reset() { z_ = 0.0; }
+  // The next steps' length [s], for samples taken unevenly (EffectChain::set_step).
+  void set_step(double dt) { period_ = dt; }
 
  private:
   [[nodiscard]] double slope(double z, double s) const;  // dz/dx

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cmath>
 #include <string_view>
 #include <utility>
 #include <array>
@@ -56,6 +57,8 @@ class ThermalDrift {
   // One period of dissipated power [W]: advances the lumped temperature (ignored while a
   // measured temperature is set) and updates the factors.
   void heat(double power);
+  // The next steps' length [s], for samples taken unevenly (EffectChain::set_step).
+  void set_step(double dt) { decay_ = std::exp(-dt / p_.cooling_time_constant); }
   // A measured fluid temperature [degC] replaces the lumped state; NaN returns to the model.
   void set_measured_temperature(double celsius);
   [[nodiscard]] double temperature() const;

@@ -88,9 +88,9 @@ TEST(RunJitter, AJitteredRunResampledIsTheEvenRunAgain) {
     // On the grid, the force is the knee's to a linear interpolation's error.
     EXPECT_LT(rms_force_error(resampled.run), 0.2 * unresampled) << jitter;
     EXPECT_NE(resampled.run.notes.back().find("resampled"), std::string::npos);
-    EXPECT_TRUE(resampled.resampled) << jitter;
+    EXPECT_EQ(resampled.timing, mrd::record::RunTiming::kResampled) << jitter;
   }
-  EXPECT_FALSE(mrd::record::fill_gaps(even).resampled);
+  EXPECT_EQ(mrd::record::fill_gaps(even).timing, mrd::record::RunTiming::kEven);
 }
 
 TEST(RunJitter, AGapInAJitteredRunIsFilledAndFlagged) {
@@ -110,6 +110,37 @@ TEST(RunJitter, AGapInAJitteredRunIsFilledAndFlagged) {
   EXPECT_EQ(flagged, filled.gaps[0].second - filled.gaps[0].first + 1);
   // The row set aside before the recorded sample 1500 (1.6 s) points at the grid's 1.6 s.
   EXPECT_NEAR(filled.run.time[filled.run.set_aside_rows[0].next_sample], run.time[1500], 1e-3);
+}
+
+// Kept at its recorded times (for a tool that steps each sample by its own interval): every
+// logged sample stays as it was, force included, and only the gap gets samples, at the nominal
+// period and flagged; a run without a gap comes back whole.
+TEST(RunJitter, AJitteredRunKeptAtItsTimesFillsOnlyItsGap) {
+  const RecordedRun whole = sampled(1000.0, 0.3, 1e-6);
+  const mrd::record::GapFilledRun kept_whole = mrd::record::fill_gaps(whole, mrd::record::UnevenTimes::kKeep);
+  EXPECT_EQ(kept_whole.timing, mrd::record::RunTiming::kRecorded);
+  EXPECT_EQ(kept_whole.run.time, whole.time);
+  EXPECT_EQ(kept_whole.run.force, whole.force);
+  EXPECT_TRUE(kept_whole.gaps.empty());
+  EXPECT_NE(kept_whole.run.notes.back().find("recorded time"), std::string::npos);
+
+  RecordedRun run = whole;
+  const auto from = static_cast<std::ptrdiff_t>(1000), to = static_cast<std::ptrdiff_t>(1100);
+  for (std::vector<double>* c : {&run.time, &run.displacement, &run.coil, &run.force}) c->erase(c->begin() + from, c->begin() + to);
+  const mrd::record::GapFilledRun kept = mrd::record::fill_gaps(run, mrd::record::UnevenTimes::kKeep);
+  ASSERT_EQ(kept.gaps.size(), 1u);
+  const auto [first, last] = kept.gaps[0];
+  EXPECT_EQ(first, 1000u);
+  EXPECT_NEAR(static_cast<double>(last - first + 1), 100.0, 1.0);
+  std::vector<double> logged_times;
+  for (std::size_t i = 0; i < kept.run.size(); ++i) {
+    if (kept.filled[i] != 0) {
+      ASSERT_NEAR(kept.run.time[i] - kept.run.time[i - 1], 1e-3, 2e-5) << i;
+      continue;
+    }
+    logged_times.push_back(kept.run.time[i]);
+  }
+  EXPECT_EQ(logged_times, run.time);
 }
 
 }  // namespace

@@ -139,7 +139,9 @@ std::vector<double> velocity_of(const record::RecordedRun& run, const record::Ga
                   (gap_filled.gaps.empty() && screening.excluded_samples == 0
                        ? ""
                        : ", bridged across the logging gaps and the spans set aside (split where too long)"));
-  return zero_phase_velocity_by_stretch(run.displacement, run.time, run.sample_rate, cutoff, unmeasured);
+  if (gap_filled.timing != record::RunTiming::kRecorded)
+    return zero_phase_velocity_by_stretch(run.displacement, run.time, run.sample_rate, cutoff, unmeasured);
+  return zero_phase_velocity_at_times(run.displacement, run.time, run.sample_rate, cutoff, unmeasured);
 }
 
 }  // namespace
@@ -152,9 +154,11 @@ FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const Fi
   const int blocks = std::max(options.blocks, 2);
   for (const record::RecordedRun& recorded : runs) {
     check_run(recorded, options);
-    // A logging gap becomes samples at the nominal period, bridged and never fitted: the time
-    // steps stay even and the model's state runs through it.
-    const record::GapFilledRun gap_filled = record::fill_gaps(recorded);
+    // A logging gap becomes samples at the nominal period, bridged and never fitted: the model's
+    // state runs through it. Samples taken unevenly stay at their times (the model steps each by
+    // its own interval): put on a grid, a telegraph current's force would be interpolated across
+    // its switches, an error no model on the grid can undo.
+    const record::GapFilledRun gap_filled = record::fill_gaps(recorded, record::UnevenTimes::kKeep);
     const record::RecordedRun& even = gap_filled.run;
     // Screened: the faulted spans set aside, the model's inputs bridged across them.
     Screening screening;
@@ -181,7 +185,7 @@ FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const Fi
     check_motion(even, screening);
     s.run_starts.push_back(s.size());
     s.run_names.push_back(recorded.name);
-    s.run_resampled.push_back(gap_filled.resampled ? 1 : 0);
+    s.run_timing.push_back(gap_filled.timing);
     const std::size_t n = run.size();
     // Half the blocks validate: a fixed shuffle, the same for every run and every call.
     std::vector<SampleRole> held_out(static_cast<std::size_t>(blocks));
@@ -229,7 +233,7 @@ FitSeries without_excluded(const FitSeries& series, const std::vector<double>& p
     out.run_starts.push_back(out.size());
     out.run_periods.push_back(series.run_periods[r]);
     if (r < series.run_names.size()) out.run_names.push_back(series.run_names[r]);
-    if (r < series.run_resampled.size()) out.run_resampled.push_back(series.run_resampled[r]);
+    if (r < series.run_timing.size()) out.run_timing.push_back(series.run_timing[r]);
     for (std::size_t i = series.run_starts[r]; i < end; ++i) {
       if (series.role[i] == SampleRole::kExcluded) continue;
       append_sample(out, series, i);
@@ -258,7 +262,7 @@ FitSeries decimate(const FitSeries& series, std::size_t wanted, double min_rate)
     out.sample_period = r == 0 ? out.run_periods[0] : std::min(out.sample_period, out.run_periods[r]);
     out.run_starts.push_back(out.size());
     if (r < series.run_names.size()) out.run_names.push_back(series.run_names[r]);
-    if (r < series.run_resampled.size()) out.run_resampled.push_back(series.run_resampled[r]);
+    if (r < series.run_timing.size()) out.run_timing.push_back(series.run_timing[r]);
     for (std::size_t from = series.run_starts[r]; from < ends[r]; from += factor) {
       const std::size_t to = std::min(from + factor, ends[r]);
       const std::size_t mid = from + (to - from) / 2;
@@ -291,7 +295,7 @@ FitSeries run_openings(const FitSeries& series, std::size_t max_samples) {
     out.run_starts.push_back(out.size());
     out.run_periods.push_back(series.run_periods[r]);
     if (r < series.run_names.size()) out.run_names.push_back(series.run_names[r]);
-    if (r < series.run_resampled.size()) out.run_resampled.push_back(series.run_resampled[r]);
+    if (r < series.run_timing.size()) out.run_timing.push_back(series.run_timing[r]);
     for (std::size_t i = series.run_starts[r]; i < series.run_starts[r] + take[r]; ++i) append_sample(out, series, i);
   }
   return out;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "record/recorded_run.hpp"
+#include "record/run_gaps.hpp"
 #include "tools/residual/fit_loss.hpp"
 #include "tools/residual/screening.hpp"
 
@@ -33,9 +34,10 @@ struct FitSeries {
   // The first sample of each run: the model starts again from a demagnetised core there.
   std::vector<std::size_t> run_starts;
   std::vector<std::string> run_names;  // one per run start, for the reports
-  // One per run start: 1 where the reader put samples taken unevenly on the even grid, every
-  // channel interpolated (record::resample_on_even_grid); empty: none was.
-  std::vector<std::uint8_t> run_resampled;
+  // One per run start: how its samples sit in time (record::RunTiming). A run taken unevenly is
+  // kept at its recorded times (make_fit_series), and the model steps each sample by its own
+  // interval, `time` [i] - `time` [i - 1]; empty: every run even.
+  std::vector<record::RunTiming> run_timing;
   std::vector<SampleRole> role;  // one per sample
   // 1 for a sample within the settling span after a step of the coil current (empty: none). A
   // transient there is the model's question (a coil lag, eddy currents) that the effect search
@@ -53,6 +55,9 @@ struct FitSeries {
   std::vector<std::string> notes;  // how the series was made, for the reports
 
   [[nodiscard]] std::size_t size() const { return displacement.size(); }
+  [[nodiscard]] record::RunTiming timing_of_run(std::size_t run) const {
+    return run < run_timing.size() ? run_timing[run] : record::RunTiming::kEven;
+  }
   [[nodiscard]] bool settles_after_switch(std::size_t i) const { return i < after_switch.size() && after_switch[i] != 0; }
 };
 

@@ -11,7 +11,8 @@ wrote, one name a line (a gap that would not leave 1 s of the run on either side
 Jitter: with --fine-every N the source is N times finer than the run it writes (every N-th row),
 and a jittered sample is a neighbouring fine row, so every variant carries the same noise (what
 tools/residual/logger-faults.sh does with a 10 kHz simulation). Without it the run is interpolated
-linearly at the jittered times, which also averages the noise of neighbouring samples a little.
+linearly at the jittered times, which also averages the noise of neighbouring samples a little;
+--held-columns (a switched current) keep the level of the period the time falls in.
 """
 import argparse
 import math
@@ -56,11 +57,17 @@ def number(cell):
     return float(cell.replace(",", "."))
 
 
-def interpolated(rows, time, at):
-    """The row linearly interpolated at time `at` (every cell a number)."""
+def interpolated(rows, time, at, held=()):
+    """The row at time `at`: linearly interpolated (every cell a number), but for the `held`
+    columns, a command's steps, which read the value of the period `at` falls in (a row's value
+    holds over the period that ends at it): sampled at any time, a switched current is one of
+    its levels, never a blend of two."""
     i = max(1, min(len(time) - 1, next_index(time, at)))
     w = (at - time[i - 1]) / (time[i] - time[i - 1])
-    return [repr(number(a) + w * (number(b) - number(a))) for a, b in zip(rows[i - 1], rows[i])]
+    row = [repr(number(a) + w * (number(b) - number(a))) for a, b in zip(rows[i - 1], rows[i])]
+    for c in held:
+        row[c] = rows[i - 1][c] if w <= 0.0 else rows[i][c]
+    return row
 
 
 def next_index(time, at):
@@ -85,6 +92,9 @@ def main():
     p.add_argument("--empty-column", type=int, default=1, help="0-based column of the empty cells")
     p.add_argument("--drop-columns", help="leave out the header's columns starting with this")
     p.add_argument("--fine-every", type=int, help="the source is this many times finer than the run")
+    p.add_argument("--held-columns", type=int, nargs="*", default=[],
+                   help="0-based columns of step signals (a switched current), held, not interpolated, "
+                        "at a jittered time")
     p.add_argument("--seed", type=int, default=5)
     a = p.parse_args()
     os.makedirs(a.out_dir, exist_ok=True)
@@ -136,7 +146,7 @@ def main():
             picked = []
             for i, t in enumerate(time):
                 at = t + percent / 100 * period * (2.0 * rng.random() - 1.0) if 0 < i < n - 1 else t
-                row = interpolated(data, time, at)
+                row = interpolated(data, time, at, a.held_columns)
                 row[tc] = repr(at)
                 picked.append(row)
         write(f"jitter_{percent}pc", picked)

@@ -7,7 +7,7 @@
 #   simulated    mrd-simulate-run, 1 kN, Table 4 for 12 s with EFFECT (default gas_spring), at
 #                10 kHz written at 1 kHz without its velocity column; jitter picks 10 kHz samples
 #   independent  tests/generator/damper_truth.py, telegraph current, 8 s with a field lag
-#                (coil_lag:2); jitter by interpolation
+#                (coil_lag:2); jitter by interpolation, the current held at its level
 #   independent-fine  the same at 10 kHz written at 1 kHz: jitter picks 10 kHz samples, and
 #                the telegraph's switches fall between the written rows, as a real command's do
 #                (not in "all")
@@ -51,7 +51,8 @@ for source in "${sources[@]}"; do
         "${fine[@]}" --out "$dir/source.csv"
       header=$(head -1 "$dir/source.csv")
       force=$("$python" -c "import sys; print(sys.argv[1].split(',').index('force_N'))" "$header")
-      fine=()
+      current=$("$python" -c "import sys; print(sys.argv[1].split(',').index('current_A'))" "$header")
+      fine=(--held-columns "$current")
       [[ $source == independent-fine ]] && fine=(--fine-every 10)
       $inject "$dir/source.csv" "$dir" "${fine[@]}" --force-column "$force" > "$dir/variants"
       ;;

@@ -12,6 +12,22 @@ namespace mrd::tools {
 
 namespace {
 
+// Sample i of the series as the observer takes it: on a run kept at its recorded times, each
+// step is the sample's own interval (the run's first a period).
+struct SampleMeasurement {
+  const FitSeries& series;
+  std::size_t from;     // the run's first sample
+  double period;        // [s]
+  bool recorded_times;  // the run's timing is record::RunTiming::kRecorded
+
+  [[nodiscard]] model::Measurement operator()(std::size_t i) const {
+    model::Measurement m{.displacement = series.displacement[i], .velocity = series.velocity[i],
+                         .coil_current = series.current[i]};
+    if (recorded_times) m.step_duration = i == from ? period : series.time[i] - series.time[i - 1];
+    return m;
+  }
+};
+
 // One observer per run, from a demagnetised core, fed each sample; `step` returns the estimate.
 template <typename Step>
 void run_observer(const model::DamperModel& model, const FitSeries& series, Step step) {
@@ -21,10 +37,12 @@ void run_observer(const model::DamperModel& model, const FitSeries& series, Step
     settings.sample_period = series.run_periods[r];
     const std::size_t from = series.run_starts[r];
     const std::size_t to = r + 1 < series.run_starts.size() ? series.run_starts[r + 1] : series.size();
+    const SampleMeasurement sample{.series = series, .from = from, .period = settings.sample_period,
+                                  .recorded_times = series.timing_of_run(r) == record::RunTiming::kRecorded};
     model::Observer observer(model, settings);
     for (std::size_t i = from; i < to; ++i) {
       if (with_temperature) observer.set_measured_temperature(series.temperature[i]);
-      step(observer, i);
+      step(observer, sample(i), i);
     }
   }
 }
@@ -33,10 +51,7 @@ void run_observer(const model::DamperModel& model, const FitSeries& series, Step
 
 InductionTrace::InductionTrace(const model::DamperModel& model, const FitSeries& series)
     : magnetics_(model), B_(series.size()) {
-  run_observer(model, series, [&](model::Observer& o, std::size_t i) {
-    B_[i] = o.step({.displacement = series.displacement[i], .velocity = series.velocity[i],
-                    .coil_current = series.current[i]}).B;
-  });
+  run_observer(model, series, [&](model::Observer& o, const model::Measurement& m, std::size_t i) { B_[i] = o.step(m).B; });
 }
 
 bool InductionTrace::serves(const model::DamperModel& m) const {
@@ -52,24 +67,21 @@ void predict_force(const model::DamperModel& model, const FitSeries& series,
   force.resize(series.size());
   if (trace != nullptr && trace->induction().size() == series.size() && trace->serves(model)) {
     const std::vector<double>& B = trace->induction();
-    run_observer(model, series, [&](model::Observer& o, std::size_t i) {
-      force[i] = o.step_at_induction({.displacement = series.displacement[i], .velocity = series.velocity[i], .coil_current = series.current[i]}, B[i]).force;
+    run_observer(model, series, [&](model::Observer& o, const model::Measurement& m, std::size_t i) {
+      force[i] = o.step_at_induction(m, B[i]).force;
     });
     return;
   }
-  run_observer(model, series, [&](model::Observer& o, std::size_t i) {
-    force[i] = o.step({.displacement = series.displacement[i], .velocity = series.velocity[i],
-                       .coil_current = series.current[i]}).force;
-  });
+  run_observer(model, series,
+               [&](model::Observer& o, const model::Measurement& m, std::size_t i) { force[i] = o.step(m).force; });
 }
 
 void predict_force_and_induction(const model::DamperModel& model, const FitSeries& series,
                                  std::vector<double>& force, std::vector<double>& B) {
   force.resize(series.size());
   B.resize(series.size());
-  run_observer(model, series, [&](model::Observer& o, std::size_t i) {
-    const model::ObserverEstimate e = o.step({.displacement = series.displacement[i], .velocity = series.velocity[i],
-                                              .coil_current = series.current[i]});
+  run_observer(model, series, [&](model::Observer& o, const model::Measurement& m, std::size_t i) {
+    const model::ObserverEstimate e = o.step(m);
     force[i] = e.force;
     B[i] = e.B;
   });

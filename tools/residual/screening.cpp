@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "record/run_jitter.hpp"
 #include "tools/signal/signal_scale.hpp"
 
 namespace mrd::tools {
@@ -179,11 +180,15 @@ void find_implausible(const record::RecordedRun& run, const ScreeningOptions& o,
   }
 }
 
+// A step longer than 1.5 periods, plus twice the wander on a run kept at the times its samples
+// were taken unevenly (record::fill_gaps' own rule): a jittered step is no gap.
 void find_gaps(const record::RecordedRun& run, std::vector<ScreenedSpan>& spans) {
   const double period = run.sample_rate > 0.0 ? 1.0 / run.sample_rate : 0.0;
   if (period <= 0.0) return;
+  const record::TimeJitter jitter = record::measure_jitter(run.time);
+  const double longest = 1.5 * period + (jitter.uneven(period) ? 2.0 * jitter.wander : 0.0);
   for (std::size_t i = 1; i < run.size(); ++i) {
-    if (run.time[i] - run.time[i - 1] > 1.5 * period) spans.push_back({i, i, 0, 0, "time", ScreenReason::kGap});
+    if (run.time[i] - run.time[i - 1] > longest) spans.push_back({i, i, 0, 0, "time", ScreenReason::kGap});
   }
 }
 

@@ -17,15 +17,12 @@ namespace mrd::tools {
 // previous row, as the observer takes a logged step; 1: at its own row). It is estimated per
 // step from the force that follows it, and written into the series as the current the period
 // held on average, theta u_{k-1} + (1 - theta) u_k: for a first-order lag of time constant tau,
-// that reproduces the sub-row switch to O((T / tau)^2). A run sampled unevenly and interpolated
-// onto the even grid shows a switch as a ramp over the rows between its two samples: such a ramp
-// is one switch, its phase in [0, rows] periods (switch_timing.cpp, CurrentStep).
+// that reproduces the sub-row switch to O((T / tau)^2). On a run kept at the times its samples
+// were taken unevenly, the period before a row is that row's own interval.
 struct SwitchTiming {
-  std::size_t steps = 0;      // switches: rows where the current stepped by more than the threshold
-                              // (a ramp of up to three rows in one direction counts once)
-  std::size_t estimated = 0;  // those with kept samples after them (others take the median; a
-                              // ramp, the phase that keeps its logged charge)
-  double median_phase = 0.0;  // of the estimated one-row steps
+  std::size_t steps = 0;      // rows where the current stepped by more than the threshold
+  std::size_t estimated = 0;  // those with kept samples after them (others take the median)
+  double median_phase = 0.0;  // of the estimated steps
   double rms_before = 0.0;    // [N] RMS of the fitting samples with every step at its previous row
   double rms_after = 0.0;     // [N] with the estimated phases
   bool applied = false;       // whether the phases were written (they lowered that RMS enough)

@@ -43,7 +43,11 @@ std::vector<double> zero_phase_acceleration(const FitSeries& s) {
     const std::vector<double> x(s.displacement.begin() + static_cast<std::ptrdiff_t>(begin),
                                 s.displacement.begin() + static_cast<std::ptrdiff_t>(end));
     const std::span<const double> v(s.velocity.data() + begin, end - begin);
-    const std::vector<double> run_a = zero_phase_velocity(v, rate, motion_velocity_cutoff(x, rate));
+    const double cutoff = motion_velocity_cutoff(x, rate);
+    const std::vector<double> run_a =
+        s.timing_of_run(r) == record::RunTiming::kRecorded
+            ? zero_phase_velocity_at_times(v, std::span<const double>(s.time.data() + begin, end - begin), rate, cutoff, {})
+            : zero_phase_velocity(v, rate, cutoff);
     std::copy(run_a.begin(), run_a.end(), a.begin() + static_cast<std::ptrdiff_t>(begin));
   }
   return a;
@@ -162,8 +166,11 @@ SubsetFit fit_subset(const Library& lib, const std::vector<std::size_t>& subset,
   return out;
 }
 
+// Sample i's time from its run's start: its recorded time on a run kept at the times its
+// samples were taken unevenly, else its index in periods.
 double time_of(const FitSeries& s, std::size_t i, std::size_t& run) {
   while (run + 1 < s.run_starts.size() && i >= s.run_starts[run + 1]) ++run;
+  if (s.timing_of_run(run) == record::RunTiming::kRecorded) return s.time[i] - s.time[s.run_starts[run]];
   return static_cast<double>(i - s.run_starts[run]) * s.run_periods[run];
 }
 

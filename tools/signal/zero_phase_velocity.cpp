@@ -192,4 +192,33 @@ double motion_velocity_cutoff(const std::vector<double>& displacement, double sa
   return std::clamp(5.0 * f99, 2.0, 0.2 * sample_rate);
 }
 
+std::vector<double> zero_phase_velocity_at_times(std::span<const double> displacement, std::span<const double> time,
+                                                 double sample_rate, double cutoff,
+                                                 const std::vector<std::uint8_t>& filled) {
+  const std::size_t n = displacement.size();
+  if (n < 2) return std::vector<double>(n, 0.0);
+  const double period = 1.0 / sample_rate;
+  const double t0 = time.front();
+  const auto grid_size = static_cast<std::size_t>(std::floor((time.back() - t0) / period)) + 2;
+  std::vector<double> grid_time(grid_size), grid_x(grid_size);
+  std::vector<std::uint8_t> grid_filled(grid_size, 0);
+  std::size_t i = 1;  // time[i - 1] <= t < time[i], or i = n - 1 at the end
+  for (std::size_t k = 0; k < grid_size; ++k) {
+    const double t = t0 + static_cast<double>(k) * period;
+    while (i + 1 < n && time[i] <= t) ++i;
+    const double w = std::clamp((t - time[i - 1]) / (time[i] - time[i - 1]), 0.0, 1.0);
+    grid_time[k] = t;
+    grid_x[k] = displacement[i - 1] + w * (displacement[i] - displacement[i - 1]);
+    if (!filled.empty()) grid_filled[k] = filled[i - 1] | filled[i];
+  }
+  const std::vector<double> grid_v = zero_phase_velocity_by_stretch(grid_x, grid_time, sample_rate, cutoff, grid_filled);
+  std::vector<double> v(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    const double at = std::max(0.0, (time[j] - t0) / period);
+    const auto k = std::min(static_cast<std::size_t>(at), grid_size - 2);
+    v[j] = grid_v[k] + (at - static_cast<double>(k)) * (grid_v[k + 1] - grid_v[k]);
+  }
+  return v;
+}
+
 }  // namespace mrd::tools

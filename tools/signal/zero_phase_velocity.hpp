@@ -24,6 +24,14 @@ namespace mrd::tools {
                                                                  std::span<const double> time, double sample_rate,
                                                                  double cutoff, const std::vector<std::uint8_t>& filled);
 
+// The same for samples taken unevenly about the even grid of `sample_rate` (`time` their own
+// times): the displacement interpolated linearly onto the grid (a grid sample unmeasured when
+// either recorded neighbour is), filtered there, and the velocity interpolated back to each
+// sample's time. A motion is smooth at the grid's scale, so both interpolations cost little.
+[[nodiscard]] std::vector<double> zero_phase_velocity_at_times(std::span<const double> displacement,
+                                                               std::span<const double> time, double sample_rate,
+                                                               double cutoff, const std::vector<std::uint8_t>& filled);
+
 // A cutoff [Hz] for zero_phase_velocity from the motion itself: five times the frequency below
 // which 99 % of the displacement's power lies (its |H|^2 is 0.9984 there), within
 // [2 Hz, 0.2 x the sample rate].

@@ -84,4 +84,23 @@ TEST(LearnedTerms, TheObserverAddsTheTermsToTheBaseForce) {
   }
 }
 
+// A velocity rising at a constant 3 m/s^2, sampled unevenly: with each step's length the mass
+// term is m a exactly; a period a sample would make it m a T / dt.
+TEST(LearnedTerms, TheAccelerationTakesEachStepsOwnLength) {
+  mrd::model::DamperModel with_mass;
+  auto& p = with_mass.effects.get<LearnedTermsEffect>();
+  p.enabled = true;
+  p[LearnedTerm::kAcceleration] = 50.0;
+  mrd::model::Observer base{mrd::model::DamperModel{}}, learned(with_mass);
+  double t = 0.0;
+  for (int k = 0; k < 200; ++k) {
+    const double dt = k % 2 == 0 ? 0.7e-3 : 1.3e-3;
+    t += dt;
+    const mrd::model::Measurement m{.displacement = 1.5 * t * t, .velocity = 3.0 * t, .coil_current = 0.5,
+                                    .step_duration = dt};
+    const double added = learned.step(m).force - base.step(m).force;
+    if (k > 0) ASSERT_NEAR(added, 50.0 * 3.0, 1e-6) << k;
+  }
+}
+
 }  // namespace

@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
+#include <vector>
 #include <type_traits>
 
 #include "model/effects/sensor_delay.hpp"
@@ -105,6 +107,43 @@ TEST(ObserverEffects, CoilLagDelaysTheField) {
   EXPECT_NEAR(lagged.effects().coil_current(), -std::expm1(-1.0 / 20.0), 1e-12);
   for (int k = 0; k < 200; ++k) lagged.step({.displacement = 0.0, .velocity = 0.1, .coil_current = 1.0});  // 10 tau later it has caught up
   EXPECT_NEAR(lagged.estimate().B, base.step({.displacement = 0.0, .velocity = 0.1, .coil_current = 1.0}).B, 1e-3);
+}
+
+// Samples taken unevenly (a USB logger's), each step given its own length: the lag's current
+// and the pre-yield state are those of the continuous laws at the samples' true times, the lag's
+// 1 - exp(-t/tau) and, for n = 2 from z = 0 at a constant v, z = z_max tanh(A v t / z_max).
+TEST(ObserverEffects, StepsOfTheirOwnLengthKeepTheEffectsOnTheClock) {
+  const double tau = 10e-3;
+  const double v = 2e-3;  // [m/s]: 2 um a period, z covers its range in about 0.5 s
+  const auto m = with([](EffectSet& e) {
+    e.get<CoilLagEffect>() = {true, 10e-3};
+    e.get<PreyieldHysteresisEffect>().enabled = true;
+  });
+  const auto p = m.effects.get<PreyieldHysteresisEffect>();
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> jitter(0.6 * kT, 1.4 * kT);
+  std::vector<double> steps(600);
+  for (double& dt : steps) dt = jitter(rng);
+
+  Observer timed(m), counted(m);
+  double t = 0.0;
+  double worst_counted = 0.0;
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    t += steps[k];
+    timed.step({.displacement = v * t, .velocity = v, .coil_current = 1.0, .step_duration = steps[k]});
+    counted.step({.displacement = v * t, .velocity = v, .coil_current = 1.0});
+    const double lag = -std::expm1(-t / tau);
+    ASSERT_NEAR(timed.effects().coil_current(), lag, 1e-12) << k;
+    const double z = timed.effects().element<PreyieldHysteresisEffect>().z();
+    ASSERT_NEAR(z, p.z_max() * std::tanh(p.A * v * t / p.z_max()), 1e-4 * p.z_max()) << k;
+    worst_counted = std::max(worst_counted, std::fabs(counted.effects().coil_current() - lag));
+  }
+  // Counted a period a sample, the same run's current is off by up to a few per cent.
+  EXPECT_GT(worst_counted, 0.01);
+  // Without a length the steps are the sample period again.
+  const double before = timed.effects().coil_current();
+  timed.step({.displacement = v * t, .velocity = v, .coil_current = 0.0});
+  EXPECT_NEAR(timed.effects().coil_current(), before * std::exp(-kT / tau), 1e-12);
 }
 
 TEST(ObserverEffects, ThermalDriftLowersTheForceAsTheFluidHeats) {

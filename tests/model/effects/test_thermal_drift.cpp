@@ -34,6 +34,21 @@ TEST(ThermalDrift, HeatsTowardsTheBalanceOfPowerAndCoolingExactly) {
   EXPECT_NEAR(early.temperature() - 20.0, power / p.heat_capacity * T, 1e-6);
 }
 
+// Steps of their own length (samples taken unevenly) land on the same exact curve in time.
+TEST(ThermalDrift, StepsOfTheirOwnLengthHeatOnTheClock) {
+  const auto p = thermal_on();
+  ThermalDrift d(p, 1e-2);
+  const double power = 50.0;
+  double t = 0.0;
+  for (int k = 0; k < 3000; ++k) {
+    const double dt = k % 3 == 0 ? 0.5 : 0.02;  // [s]
+    d.set_step(dt);
+    d.heat(power);
+    t += dt;
+    ASSERT_NEAR(d.temperature(), 25.0 - 5.0 * std::exp(-t / p.cooling_time_constant), 1e-9) << k;
+  }
+}
+
 TEST(ThermalDrift, FactorsFallWhenHeatingAndRecoverWhenCooling) {
   const auto p = thermal_on();
   ThermalDrift d(p, 1e-2);

@@ -9,7 +9,7 @@
 
 #include "model/effects/coil_lag.hpp"
 #include "model/observer.hpp"
-#include "record/run_jitter.hpp"
+#include "record/run_gaps.hpp"
 
 namespace {
 
@@ -96,10 +96,9 @@ FitSeries logged_run(bool on_rows, std::vector<double>& phases) {
 }
 
 // The rig logged unevenly: row k sampled at the rig's step up to `jitter` of a period off its grid
-// time, then put back on the even grid by record::resample_on_even_grid, as the reader does. A
-// switch now shows as a ramp over the rows between the two samples either side of it. The default damper's sign knee is far shorter than a period, so a
-// reversal's force is a step between two samples too: the rows beside each reversal are set aside,
-// their interpolation error is not the switches'.
+// time, and read as mrd-residual reads it (record::fill_gaps keeps the recorded times). The
+// default damper's sign knee is far shorter than a period, so a reversal's force is a step
+// between two samples: the rows beside each reversal are set aside, as in the runs above.
 FitSeries jittered_run(double jitter, std::vector<double>& phases) {
   const std::vector<RigSample> steps = rig_steps(false, phases);
   std::mt19937 rng(3);
@@ -120,11 +119,11 @@ FitSeries jittered_run(double jitter, std::vector<double>& phases) {
     logged.force.push_back(sample.force);
   }
   logged.sample_rate = 1.0 / kPeriod;
-  const mrd::record::GapFilledRun even = mrd::record::resample_on_even_grid(logged, mrd::record::measure_jitter(logged.time));
+  const mrd::record::GapFilledRun read = mrd::record::fill_gaps(logged, mrd::record::UnevenTimes::kKeep);
   FitSeries s = empty_series("jittered");
-  s.run_resampled = {1};
-  for (std::size_t k = 0; k < even.run.size(); ++k)
-    append(s, {even.run.time[k], even.run.displacement[k], even.run.velocity[k], even.run.coil[k], even.run.force[k]});
+  s.run_timing = {read.timing};
+  for (std::size_t k = 0; k < read.run.size(); ++k)
+    append(s, {read.run.time[k], read.run.displacement[k], read.run.velocity[k], read.run.coil[k], read.run.force[k]});
   for (std::size_t k = 1; k < s.size(); ++k)
     if (s.velocity[k] * s.velocity[k - 1] <= 0.0)
       for (std::size_t r = k > 2 ? k - 2 : 0; r < std::min(s.size(), k + 2); ++r) s.role[r] = SampleRole::kExcluded;
@@ -177,23 +176,24 @@ TEST(SwitchTiming, StepsOnTheRowsAreLeftAsLogged) {
   EXPECT_EQ(s.current, logged);
 }
 
-// Logged with 30 % jitter and interpolated onto the grid, a switch shows as a ramp of up to three
-// rows: it is timed as one switch (its phase over the ramp's rows), not as a step per row whose
-// first has a row's force to tell its phase. Each switch is counted once, and the error after
-// timing is 9.8 % of what it was before (a row at a time: 66 steps, 11.5 %). What stays is the
-// force's own interpolation near each switch: a sample's time is not the row's.
-TEST(SwitchTiming, ARampFromInterpolationIsOneSwitch) {
+// Logged with 30 % jitter and kept at the recorded times, each row stepped by its own interval:
+// no force is interpolated, each switch falls within one row as on an even run, and timing takes
+// the error down as far as there (1.5 % of before; on the even grid, where the interpolation
+// made each switch a ramp over up to three rows, it stopped at 9.8 %). Stepped a period a row
+// instead, the same rows leave 20 times as much (175 N against 8.8 N).
+TEST(SwitchTiming, AJitteredRunAtItsRecordedTimesIsTimedLikeAnEvenOne) {
   std::vector<double> truth;
   FitSeries s = jittered_run(0.3, truth);
+  ASSERT_EQ(s.run_timing, std::vector<mrd::record::RunTiming>{mrd::record::RunTiming::kRecorded});
   const SwitchTiming t = time_current_steps(lagged_damper(), s);
   ASSERT_TRUE(t.applied);
   EXPECT_EQ(t.steps, truth.size());
-  EXPECT_LT(t.rms_after, 0.105 * t.rms_before) << t.rms_before << " -> " << t.rms_after;
-  // The same rows from a run logged evenly: a ramp there is what the current did, a step a row.
+  EXPECT_LT(t.rms_after, 0.02 * t.rms_before) << t.rms_before << " -> " << t.rms_after;
   std::vector<double> unused;
-  FitSeries even = jittered_run(0.3, unused);
-  even.run_resampled = {0};
-  EXPECT_GT(time_current_steps(lagged_damper(), even).steps, truth.size() + 10);
+  FitSeries counted = jittered_run(0.3, unused);
+  counted.run_timing = {mrd::record::RunTiming::kEven};
+  const SwitchTiming c = time_current_steps(lagged_damper(), counted);
+  EXPECT_GT(c.rms_after, 10.0 * t.rms_after) << c.rms_before << " -> " << c.rms_after;
 }
 
 }  // namespace
