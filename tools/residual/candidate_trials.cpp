@@ -23,6 +23,29 @@ struct CandidateFit {
   double validation = 0.0;    // [N RMS]
 };
 
+// Candidate k's fit written into the round: its trial's figures on the whole run, its
+// parameters, and kNotPhysical where the fit is implausible.
+void record_trial(const Search& s, const model::EffectInfo& effect, CandidateFit&& c, int round_number, std::size_t k,
+                  Round& round) {
+  CandidateTrial& trial = round.trials[k];
+  trial = CandidateTrial{};
+  trial.effect = std::string(effect.name);
+  trial.round = round_number;
+  trial.validation_rms = c.validation;
+  round.predicted[k] = std::move(c.force);
+  std::vector<double> force;
+  predict_force(c.fit.model, s.full, force);
+  const ResidualRms on_full = residual_rms(s.full, force);
+  trial.rms_after = on_full.all;
+  trial.max_after = on_full.max;
+  trial.parameters = effect.report(c.fit.model.effects);
+  if (const auto why = effect.implausible(c.fit.model.effects, s.scales)) {
+    trial.verdict = TrialVerdict::kNotPhysical;
+    trial.explanation = "not physical: " + *why;
+  }
+  round.fits[k] = std::move(c.fit);
+}
+
 // The candidates of one round on one round model: each fitted on its own (thread-safe: every
 // call works on its own copies), the results written into the round.
 class RoundFitter {
@@ -68,24 +91,7 @@ class RoundFitter {
   }
 
   void record(std::size_t k, CandidateFit&& c, int round_number) const {
-    const model::EffectInfo& effect = *candidates_[k];
-    CandidateTrial& trial = round_.trials[k];
-    trial = CandidateTrial{};
-    trial.effect = std::string(effect.name);
-    trial.round = round_number;
-    trial.validation_rms = c.validation;
-    round_.predicted[k] = std::move(c.force);
-    std::vector<double> force;
-    predict_force(c.fit.model, s_.full, force);
-    const ResidualRms on_full = residual_rms(s_.full, force);
-    trial.rms_after = on_full.all;
-    trial.max_after = on_full.max;
-    trial.parameters = effect.report(c.fit.model.effects);
-    if (const auto why = effect.implausible(c.fit.model.effects, s_.scales)) {
-      trial.verdict = TrialVerdict::kNotPhysical;
-      trial.explanation = "not physical: " + *why;
-    }
-    round_.fits[k] = std::move(c.fit);
+    record_trial(s_, *candidates_[k], std::move(c), round_number, k, round_);
   }
 
  private:
@@ -222,6 +228,44 @@ std::size_t judge_round(const Search& s, Round& round, double current_validation
     trial.explanation = format("passes, but %s lowers the validation error more", winner.effect.c_str());
   }
   return best;
+}
+
+std::size_t rebase_round_leader(Search& s, Round& round, const model::DamperModel& current, const Effects& candidates,
+                                int round_number) {
+  const std::size_t none = round.trials.size();
+  std::size_t leader = none;
+  for (std::size_t k = 0; k < round.trials.size(); ++k) {
+    if (round.trials[k].verdict != TrialVerdict::kBelowThreshold) continue;
+    if (leader == none || round.trials[k].validation_rms < round.trials[leader].validation_rms) leader = k;
+  }
+  if (leader == none) return none;
+  CandidateTrial& trial = round.trials[leader];
+  if (!(trial.validation_before > kRebaseRatio * s.noise_floor) || !(trial.validation_rms < trial.validation_before))
+    return none;
+  const model::EffectInfo& effect = *candidates[leader];
+  if (effect_space(effect, round.fits[leader].model, s.scales).bounds.dimension() == 0) return none;
+  ParameterSpace space;
+  const FittedModel alone = identify_base(s, current, space, true, kSecondStartSwarms);
+  FittedModel beside = identify_base_with(s, round.fits[leader].model, effect, kSecondStartSwarms);
+  if (effect.implausible(beside.model.effects, s.scales)) return none;
+  const std::vector<double> alone_force = s.predicted(alone.model);
+  std::vector<double> beside_force = s.predicted(beside.model);
+  const double alone_validation = residual_rms(s.fit_series, alone_force).validation;
+  const double beside_validation = residual_rms(s.fit_series, beside_force).validation;
+  const int comparisons = static_cast<int>(round.trials.size()) + round.second_starts + 1;
+  const ClaimEvidence evidence = s.weigh(alone_force, beside_force, comparisons);
+  if (!evidence.passes()) return none;
+  record_trial(s, effect, {.fit = std::move(beside), .force = std::move(beside_force), .validation = beside_validation},
+               round_number, leader, round);
+  CandidateTrial& rebased = round.trials[leader];
+  rebased.validation_before = alone_validation;
+  rebased.evidence = evidence;
+  rebased.verdict = TrialVerdict::kAccepted;
+  rebased.explanation =
+      format("accepted with the base identified again beside it: validation RMS %.4g (the base identified again "
+             "alone) -> %.4g N; %s",
+             alone_validation, beside_validation, evidence.describe().c_str());
+  return leader;
 }
 
 }  // namespace mrd::tools::search

@@ -47,4 +47,16 @@ Round try_candidates(Search& s, const model::DamperModel& current, double curren
 // Returns its index, or trials.size() when none passes.
 std::size_t judge_round(const Search& s, Round& round, double current_validation);
 
+// Step 5c, in the first round only, where no candidate passed while the base leaves more than
+// kRebaseRatio times the noise on the validation blocks: the base may sit in a basin that only
+// the missing effect leads out of (a lagged telegraph run's base without the lag lands anywhere
+// from 190 to 350 N RMS, and the lag fitted on the worse one gains too little to be claimed).
+// The physical candidate that lowered the validation error most is identified together with the
+// base (identify_base_with), and weighed against the base identified again alone with the same
+// effort; where that claim passes, it is the round's winner (its trial says how it was found).
+// Returns its index, or trials.size().
+inline constexpr double kRebaseRatio = 3.0;
+std::size_t rebase_round_leader(Search& s, Round& round, const model::DamperModel& current, const Effects& candidates,
+                                int round_number);
+
 }  // namespace mrd::tools::search

@@ -55,7 +55,9 @@ AcceptedSet greedy_rounds(Search& s, const model::DamperModel& base, ResidualRes
   set.validation = s.validation_rms(set.model);
   for (int round_number = 1; !candidates.empty(); ++round_number) {
     Round round = try_candidates(s, set.model, set.validation, candidates, round_number);
-    const std::size_t best = judge_round(s, round, set.validation);
+    std::size_t best = judge_round(s, round, set.validation);
+    if (best == round.trials.size() && set.effects.empty())
+      best = rebase_round_leader(s, round, set.model, candidates, round_number);
     if (best < round.trials.size()) {
       Effects alike = ambiguous_with_winner(round, candidates, best, s.options.minimum_reduction);
       Effects rivals;
