@@ -39,7 +39,7 @@ GapFilledRun fill_gaps(const RecordedRun& run, UnevenTimes uneven) {
     missing_total += dt / period;
   }
   if (long_steps == 0 || long_steps > std::max<std::size_t>(10, n / 100)) {
-    GapFilledRun out{.run = run, .filled = std::vector<std::uint8_t>(n, 0)};
+    GapFilledRun out{.run = run, .filled = std::vector<std::uint8_t>(n, 0), .gap_step = 1.5 * period};
     // Many long steps are a time column coarser than the period, not gaps.
     if (long_steps > 0)
       out.run.notes.push_back(std::to_string(long_steps) +
@@ -58,6 +58,7 @@ GapFilledRun fill_steps_longer_than(const RecordedRun& run, double longest_step)
   GapFilledRun out;
   const std::size_t n = run.size();
   const double period = 1.0 / run.sample_rate;
+  out.gap_step = longest_step;
   out.run = run;
   RecordedRun& f = out.run;
   f.time.clear();

@@ -9,10 +9,6 @@
 
 namespace mrd::record {
 
-// A run with its logging gaps filled: a step longer than 1.5 nominal periods gets samples at the
-// nominal period, every channel interpolated linearly across it. The inputs then carry a model's
-// state through the gap (the coil most likely moved between the samples on either side) and the
-// time steps stay even; the filled samples are no measurement and are flagged.
 // How a run's samples sit in time after fill_gaps.
 enum class RunTiming : std::uint8_t {
   kEven,       // as logged, evenly (or on a time column coarser than its jitter)
@@ -26,12 +22,19 @@ enum class UnevenTimes : std::uint8_t {
   kKeep,      // at their recorded times: for tools that step each sample by its own interval
 };
 
+// A run with its logging gaps filled: a step longer than `gap_step` gets samples at the
+// nominal period, every channel interpolated linearly across it. The inputs then carry a model's
+// state through the gap (the coil most likely moved between the samples on either side); the
+// filled samples are no measurement and are flagged.
 struct GapFilledRun {
   RecordedRun run;
   std::vector<std::uint8_t> filled;  // per sample of `run`: 1 where no logger wrote it
   // Each gap's filled samples [first, last] in `run`, in order.
   std::vector<std::pair<std::size_t, std::size_t>> gaps;
   RunTiming timing = RunTiming::kEven;
+  // [s] the step beyond which a step was a gap: 1.5 nominal periods, plus twice the wander on
+  // a run taken unevenly (0 without a rate).
+  double gap_step = 0.0;
 };
 // The run itself (no sample filled) when it has no gap, or when long steps are too many to be
 // gaps (over 1 % of them, or 10: a time column coarser than the period; a note says so). A run

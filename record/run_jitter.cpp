@@ -45,6 +45,7 @@ GapFilledRun resample_on_even_grid(const RecordedRun& run, const TimeJitter& jit
     if (!from[c]->empty()) to[c]->assign(grid_size, 0.0);
   out.filled.assign(grid_size, 0);
   out.timing = RunTiming::kResampled;
+  out.gap_step = 1.5 * period;  // on the grid
   std::size_t i = 1;  // run.time[i - 1] <= t < run.time[i], or i = n - 1 at the end
   for (std::size_t k = 0; k < grid_size; ++k) {
     const double t = run.time.front() + static_cast<double>(k) * period;

@@ -127,7 +127,11 @@ TEST(RunJitter, AJitteredRunKeptAtItsTimesFillsOnlyItsGap) {
   RecordedRun run = whole;
   const auto from = static_cast<std::ptrdiff_t>(1000), to = static_cast<std::ptrdiff_t>(1100);
   for (std::vector<double>* c : {&run.time, &run.displacement, &run.coil, &run.force}) c->erase(c->begin() + from, c->begin() + to);
+  run.set_aside_rows.push_back({"duplicate", 7, 1500, ""});
   const mrd::record::GapFilledRun kept = mrd::record::fill_gaps(run, mrd::record::UnevenTimes::kKeep);
+  // The row set aside before the recorded sample 1500 points at that same sample.
+  EXPECT_EQ(kept.run.time[kept.run.set_aside_rows[0].next_sample], run.time[1500]);
+  EXPECT_GT(kept.gap_step, 1.5e-3);
   ASSERT_EQ(kept.gaps.size(), 1u);
   const auto [first, last] = kept.gaps[0];
   EXPECT_EQ(first, 1000u);

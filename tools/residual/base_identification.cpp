@@ -88,12 +88,12 @@ FittedModel search_base_space(Search& s, const ParameterSpace& space, std::vecto
 }  // namespace
 
 FittedModel identify_base(Search& s, const model::DamperModel& origin, ParameterSpace& space, bool from_origin,
-                          int swarms, const Point* also_from) {
+                          int swarms, std::span<const Point> also_from) {
   space = base_space(origin, s.options.start, s.scales, Magnetics::kMaterial);
   space.linear = linear_effects_of(origin);
   std::vector<Point> chain_starts;
   if (from_origin) chain_starts.push_back(base_coordinates(origin, s.options.start, s.scales, Magnetics::kMaterial));
-  if (also_from != nullptr) chain_starts.push_back(*also_from);
+  chain_starts.insert(chain_starts.end(), also_from.begin(), also_from.end());
   return search_base_space(s, space, std::move(chain_starts), swarms);
 }
 
@@ -142,7 +142,7 @@ FittedModel refit_robustly(Search& s, ParameterSpace& space, FittedModel base, i
   const RobustWeights least_squares = sigma_of(base.model);
   if (least_squares.down_weighted_share < loss.refit_share) return base;
   set_loss(FitLoss::Kind::kCauchy, least_squares.sigma);
-  base = identify_base(s, s.options.start, space, true, 2, &base.theta);
+  base = identify_base(s, s.options.start, space, true, 2, std::span<const Point>(&base.theta, 1));
   const double sigma = sigma_of(base.model).sigma;
   set_loss(FitLoss::Kind::kCauchy, sigma);
   base = refine_with_restarts(s, space, s.fit_series, base.theta);

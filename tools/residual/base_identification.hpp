@@ -1,5 +1,6 @@
 #pragma once
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -16,7 +17,7 @@ namespace mrd::tools::search {
 // take 600x the sub-steps of the origin); a Levenberg-Marquardt chain there (20 + 30 passes a
 // coordinate) from each swarm's best and, with `from_origin`, from the origin's coordinates (the
 // config's damper, a prior, or a model already fitted), the chains side by side (and one more
-// from `also_from`, when given); then Levenberg-Marquardt on the whole fitting series from the
+// from each point of `also_from`); then Levenberg-Marquardt on the whole fitting series from the
 // best (20 + 15 a coordinate), its Jacobian's columns on the pool. `space` is the whole space.
 // Levenberg-Marquardt, not Nelder-Mead with restarts: on the random-damper study's clean runs it
 // ends lower in about half the passes (clean-19 1.55 -> 1.01 times the noise, 7,822 -> 2,331
@@ -32,7 +33,7 @@ namespace mrd::tools::search {
 inline constexpr int kExploringSubsteps = 128;
 
 FittedModel identify_base(Search& s, const model::DamperModel& origin, ParameterSpace& space, bool from_origin,
-                          int swarms, const Point* also_from = nullptr);
+                          int swarms, std::span<const Point> also_from = {});
 
 // identify_base with `effect`'s coordinates searched beside the base's (the effect must be
 // enabled in `origin`): after an effect is accepted, where its fit on the round's base and the

@@ -235,36 +235,50 @@ std::size_t rebase_round_leader(Search& s, Round& round, const model::DamperMode
   const std::size_t none = round.trials.size();
   std::size_t leader = none;
   for (std::size_t k = 0; k < round.trials.size(); ++k) {
-    if (round.trials[k].verdict != TrialVerdict::kBelowThreshold) continue;
+    if (round.trials[k].verdict != TrialVerdict::kBelowThreshold || !candidates[k]->changes_induction) continue;
     if (leader == none || round.trials[k].validation_rms < round.trials[leader].validation_rms) leader = k;
   }
-  if (leader == none) return none;
-  CandidateTrial& trial = round.trials[leader];
+  if (leader == none || !(s.noise_floor > 0.0)) return none;
+  const CandidateTrial& trial = round.trials[leader];
   if (!(trial.validation_before > kRebaseRatio * s.noise_floor) || !(trial.validation_rms < trial.validation_before))
     return none;
   const model::EffectInfo& effect = *candidates[leader];
   if (effect_space(effect, round.fits[leader].model, s.scales).bounds.dimension() == 0) return none;
-  ParameterSpace space;
-  const FittedModel alone = identify_base(s, current, space, true, kSecondStartSwarms);
   FittedModel beside = identify_base_with(s, round.fits[leader].model, effect, kSecondStartSwarms);
   if (effect.implausible(beside.model.effects, s.scales)) return none;
-  const std::vector<double> alone_force = s.predicted(alone.model);
+  // The base alone gets every start the effect's search had (the config's damper, and the base
+  // it found beside the effect) besides its own, and the same swarms; the round's own models
+  // (as it came, refined with no effect) stand too: the claim is weighed against the best.
+  model::DamperModel found_base = beside.model;
+  effect.disable(found_base.effects);
+  const Point extra[] = {base_coordinates(s.options.start, s.options.start, s.scales, Magnetics::kMaterial),
+                         base_coordinates(found_base, s.options.start, s.scales, Magnetics::kMaterial)};
+  ParameterSpace space;
+  const FittedModel alone = identify_base(s, current, space, true, kSecondStartSwarms, extra);
+  std::vector<double> baseline_force = s.predicted(alone.model);
+  double baseline = residual_rms(s.fit_series, baseline_force).validation;
+  for (auto [validation, force] : {std::pair{round.null_validation, &round.null_predicted},
+                                   std::pair{trial.validation_before, &round.current_predicted}}) {
+    if (validation < baseline && !force->empty()) {
+      baseline = validation;
+      baseline_force = *force;
+    }
+  }
   std::vector<double> beside_force = s.predicted(beside.model);
-  const double alone_validation = residual_rms(s.fit_series, alone_force).validation;
   const double beside_validation = residual_rms(s.fit_series, beside_force).validation;
   const int comparisons = static_cast<int>(round.trials.size()) + round.second_starts + 1;
-  const ClaimEvidence evidence = s.weigh(alone_force, beside_force, comparisons);
+  const ClaimEvidence evidence = s.weigh(baseline_force, beside_force, comparisons);
   if (!evidence.passes()) return none;
   record_trial(s, effect, {.fit = std::move(beside), .force = std::move(beside_force), .validation = beside_validation},
                round_number, leader, round);
   CandidateTrial& rebased = round.trials[leader];
-  rebased.validation_before = alone_validation;
+  rebased.validation_before = baseline;
   rebased.evidence = evidence;
   rebased.verdict = TrialVerdict::kAccepted;
   rebased.explanation =
-      format("accepted with the base identified again beside it: validation RMS %.4g (the base identified again "
-             "alone) -> %.4g N; %s",
-             alone_validation, beside_validation, evidence.describe().c_str());
+      format("accepted with the base identified again beside it: validation RMS %.4g (the best base without it) "
+             "-> %.4g N; %s",
+             baseline, beside_validation, evidence.describe().c_str());
   return leader;
 }
 

@@ -51,10 +51,13 @@ std::size_t judge_round(const Search& s, Round& round, double current_validation
 // kRebaseRatio times the noise on the validation blocks: the base may sit in a basin that only
 // the missing effect leads out of (a lagged telegraph run's base without the lag lands anywhere
 // from 190 to 350 N RMS, and the lag fitted on the worse one gains too little to be claimed).
-// The physical candidate that lowered the validation error most is identified together with the
-// base (identify_base_with), and weighed against the base identified again alone with the same
-// effort; where that claim passes, it is the round's winner (its trial says how it was found).
-// Returns its index, or trials.size().
+// The candidate that changes B (the magnetics are where the base's basins and such an effect
+// trade) and lowered the validation error most is identified together with the base
+// (identify_base_with). The base is identified again alone with the same swarms and every start
+// the effect's search had, and the claim is weighed against the best of that, the round's model
+// and its null refinement; where it passes, the candidate is the round's winner (its trial says
+// how it was found). The other candidates are not tried beside a new base, so no rival or
+// ambiguity is weighed for it. Returns its index, or trials.size().
 inline constexpr double kRebaseRatio = 3.0;
 std::size_t rebase_round_leader(Search& s, Round& round, const model::DamperModel& current, const Effects& candidates,
                                 int round_number);

@@ -162,7 +162,11 @@ FitSeries make_fit_series(const std::vector<record::RecordedRun>& runs, const Fi
     const record::RecordedRun& even = gap_filled.run;
     // Screened: the faulted spans set aside, the model's inputs bridged across them.
     Screening screening;
-    if (options.screen) screening = screen_run(even, options.screening);
+    if (options.screen) {
+      ScreeningOptions screening_options = options.screening;
+      screening_options.gap_step = gap_filled.gap_step;
+      screening = screen_run(even, screening_options);
+    }
     record::RecordedRun bridged;
     const record::RecordedRun* source = &even;
     if (screening.excluded_samples > 0) {

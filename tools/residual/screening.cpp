@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "record/run_jitter.hpp"
 #include "tools/signal/signal_scale.hpp"
 
 namespace mrd::tools {
@@ -180,13 +179,10 @@ void find_implausible(const record::RecordedRun& run, const ScreeningOptions& o,
   }
 }
 
-// A step longer than 1.5 periods, plus twice the wander on a run kept at the times its samples
-// were taken unevenly (record::fill_gaps' own rule): a jittered step is no gap.
-void find_gaps(const record::RecordedRun& run, std::vector<ScreenedSpan>& spans) {
+void find_gaps(const record::RecordedRun& run, double gap_step, std::vector<ScreenedSpan>& spans) {
   const double period = run.sample_rate > 0.0 ? 1.0 / run.sample_rate : 0.0;
   if (period <= 0.0) return;
-  const record::TimeJitter jitter = record::measure_jitter(run.time);
-  const double longest = 1.5 * period + (jitter.uneven(period) ? 2.0 * jitter.wander : 0.0);
+  const double longest = gap_step > 0.0 ? gap_step : 1.5 * period;
   for (std::size_t i = 1; i < run.size(); ++i) {
     if (run.time[i] - run.time[i - 1] > longest) spans.push_back({i, i, 0, 0, "time", ScreenReason::kGap});
   }
@@ -206,7 +202,7 @@ Screening screen_run(const record::RecordedRun& run, const ScreeningOptions& o) 
     find_flat_runs(run, ch, o, s.spans);
     if (std::string_view(ch.name) != "velocity") find_spikes(run, ch, o, s.spans);
   }
-  find_gaps(run, s.spans);
+  find_gaps(run, o.gap_step, s.spans);
   find_implausible(run, o, s.spans);
   std::vector<ScreenedSpan> found = std::move(s.spans);
   s.spans.clear();

@@ -54,6 +54,9 @@ struct ScreeningOptions {
   // other sign this many times (a sine's turning point crosses once).
   double implausible_force = 0.25;
   int implausible_reversals = 4;
+  // [s] a time step longer than this is a gap; 0: 1.5 nominal periods. make_fit_series passes
+  // record::fill_gaps' own (GapFilledRun::gap_step), which allows a jittered run its wander.
+  double gap_step = 0.0;
 };
 
 // The smallest step the channel takes: its resolution (quantisation), or its noise if finer;

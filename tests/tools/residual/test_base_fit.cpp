@@ -117,67 +117,81 @@ TEST(BaseFit, AConstantCurrentRunKeepsTheMagneticsItCannotSee) {
   EXPECT_LT(r.before.all, 1.3 * truth.force_noise) << residual_summary({run}, r);
 }
 
-// What is reported is refit on every kept sample, the held-out blocks' too: with the validation
-// blocks' force 10 % above the truth's, the truth fits the fitting blocks best, and its refit
-// splits the difference (it pays on the fitting blocks for what it gains on the others).
 // A first round that claims nothing while its base leaves far more than the noise: the lag of a
 // telegraph run fitted on a base whose coil is a tenth of the truth's gains too little to be
 // claimed. Identified together with the base, the lag is claimed against the base identified
-// again alone, near the noise and at the truth's time constant. A base within three times the
-// noise is left alone (no search runs).
+// again alone, near the noise and at the truth's time constant. The same run without the lag
+// claims nothing from the same far-off base, and a base within three times the noise is left
+// alone (no search runs).
+mrd::record::RecordedRun telegraph_run(const DamperClass& damper, std::vector<EffectRequest> effects) {
+  RunOptions o;
+  o.profile = RunProfile::kTelegraph;
+  o.damper = damper;
+  o.duration = 3.0;
+  o.seed = 5;
+  o.effects = std::move(effects);
+  std::ostringstream csv;
+  write_run_csv(csv, simulate_run(o), RunColumns{});
+  return mrd::record::parse_recorded_run(csv.str(), "telegraph.csv");
+}
+
+// A round on `current` whose one candidate, the coil lag at 4 ms, lowered the validation error a
+// little and was not claimed; then the rescue on it.
+std::size_t rebase_on(search::Search& s, const mrd::model::DamperModel& current, search::Round& round) {
+  const mrd::model::EffectInfo& lag = *mrd::model::find_effect("coil_lag");
+  round.trials.resize(1);
+  round.fits.resize(1);
+  round.fits[0].model = current;
+  round.fits[0].model.effects.get<mrd::model::CoilLagEffect>() = {.enabled = true, .time_constant = 4e-3};
+  round.predicted = {s.predicted(round.fits[0].model)};
+  round.current_predicted = s.predicted(current);
+  round.null_predicted = round.current_predicted;
+  round.trials[0].effect = "coil_lag";
+  round.trials[0].verdict = TrialVerdict::kBelowThreshold;
+  round.trials[0].validation_before = round.null_validation = s.validation_rms(current);
+  round.trials[0].validation_rms = 0.95 * round.trials[0].validation_before;
+  return search::rebase_round_leader(s, round, current, {&lag}, 1);
+}
+
 TEST(BaseFit, AFirstRoundThatClaimsNothingOnAFarOffBaseIdentifiesTheBaseBesideItsLeader) {
   DamperClass truth = *find_damper_class("1kN");
   truth.nominal_effects.get<mrd::model::CoilLagEffect>() = {.enabled = true, .time_constant = 15e-3};
-  RunOptions o;
-  o.profile = RunProfile::kTelegraph;
-  o.damper = truth;
-  o.duration = 3.0;
-  o.seed = 5;
-  o.effects = {{"coil_lag", 1.0}};
-  std::ostringstream csv;
-  write_run_csv(csv, simulate_run(o), RunColumns{});
-  const mrd::record::RecordedRun run = mrd::record::parse_recorded_run(csv.str(), "lagged.csv");
-  truth.model.effects.get<mrd::model::CoilLagEffect>() = {.enabled = true, .time_constant = 15e-3};
   ResidualOptions options;
   options.threads = 2;
   options.start = find_damper_class("1kN")->model;
-  search::Search s(make_fit_series({run}, {}), options);
-  s.noise_floor = truth.force_noise;
-  const mrd::model::EffectInfo& lag = *std::ranges::find(mrd::model::effect_infos(), std::string_view("coil_lag"),
-                                                         &mrd::model::EffectInfo::name);
-  const auto round_on = [&](const mrd::model::DamperModel& current) {
-    search::Round round;
-    round.trials.resize(1);
-    round.fits.resize(1);
-    round.fits[0].model = current;
-    round.fits[0].model.effects.get<mrd::model::CoilLagEffect>() = {.enabled = true, .time_constant = 4e-3};
-    round.predicted = {s.predicted(round.fits[0].model)};
-    round.trials[0].effect = "coil_lag";
-    round.trials[0].verdict = TrialVerdict::kBelowThreshold;
-    round.trials[0].validation_before = s.validation_rms(current);
-    // As a round leaves it: the lag fitted on that base, a little better, not claimed.
-    round.trials[0].validation_rms = 0.95 * round.trials[0].validation_before;
-    return round;
-  };
   mrd::model::DamperModel far_off = options.start;
   far_off.circuit.turns *= 0.1;
-  search::Round round = round_on(far_off);
+
+  search::Search lagged(make_fit_series({telegraph_run(truth, {{"coil_lag", 1.0}})}, {}), options);
+  lagged.noise_floor = truth.force_noise;
+  search::Round round;
+  const std::size_t winner = rebase_on(lagged, far_off, round);
   ASSERT_GT(round.trials[0].validation_before, 10.0 * truth.force_noise);
-  ASSERT_EQ(search::rebase_round_leader(s, round, far_off, {&lag}, 1), 0u);
+  ASSERT_EQ(winner, 0u) << round.trials[0].explanation;
   const CandidateTrial& claimed = round.trials[0];
   EXPECT_EQ(claimed.verdict, TrialVerdict::kAccepted);
   EXPECT_NE(claimed.explanation.find("identified again beside it"), std::string::npos) << claimed.explanation;
   EXPECT_LT(claimed.validation_rms, 1.5 * truth.force_noise) << claimed.explanation;
   EXPECT_NEAR(round.fits[0].model.effects.get<mrd::model::CoilLagEffect>().time_constant, 15e-3, 3e-3);
 
-  const mrd::model::DamperModel& near = truth.model;
-  search::Round close = round_on(near);
-  ASSERT_LT(close.trials[0].validation_before, 3.0 * truth.force_noise);
-  const std::int64_t spent = s.evaluations;
-  EXPECT_EQ(search::rebase_round_leader(s, close, near, {&lag}, 1), 1u);
-  EXPECT_EQ(s.evaluations, spent);
+  search::Search clean(make_fit_series({telegraph_run(truth, {})}, {}), options);
+  clean.noise_floor = truth.force_noise;
+  search::Round clean_round;
+  EXPECT_EQ(rebase_on(clean, far_off, clean_round), 1u) << clean_round.trials[0].explanation;
+  EXPECT_EQ(clean_round.trials[0].verdict, TrialVerdict::kBelowThreshold);
+
+  mrd::model::DamperModel near = truth.model;
+  near.effects.get<mrd::model::CoilLagEffect>() = {.enabled = true, .time_constant = 15e-3};
+  search::Round close;
+  const std::int64_t spent = lagged.evaluations;
+  EXPECT_EQ(rebase_on(lagged, near, close), 1u);
+  EXPECT_LT(close.trials[0].validation_before, 3.0 * truth.force_noise);
+  EXPECT_EQ(lagged.evaluations, spent);
 }
 
+// What is reported is refit on every kept sample, the held-out blocks' too: with the validation
+// blocks' force 10 % above the truth's, the truth fits the fitting blocks best, and its refit
+// splits the difference (it pays on the fitting blocks for what it gains on the others).
 TEST(BaseFit, TheReportedModelIsRefitOnEveryKeptSample) {
   const DamperClass truth = another_damper();
   FitSeries full = make_fit_series({run_of(truth, RunProfile::kTable4, 4.0)}, {});
