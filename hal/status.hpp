@@ -1,6 +1,8 @@
 #pragma once
 
+#include <cerrno>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <string_view>
 
@@ -34,5 +36,8 @@ struct StartResult {
   static StartResult success() { return {}; }
   static StartResult failure(std::string why) { return {false, std::move(why)}; }
 };
+
+// `what` and the reason errno gives, for a system call that just failed (start-up only).
+inline std::string errno_text(const std::string& what) { return what + ": " + std::strerror(errno); }
 
 }  // namespace mrd::hal

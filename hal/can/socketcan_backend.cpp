@@ -17,8 +17,6 @@ namespace mrd::hal::can {
 
 namespace {
 
-std::string errno_text(const std::string& what) { return what + ": " + std::strerror(errno); }
-
 canid_t wire_id(std::uint32_t id, bool extended) {
   return extended ? (id | CAN_EFF_FLAG) : id;
 }

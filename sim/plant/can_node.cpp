@@ -25,8 +25,6 @@ can_frame to_wire(const hal::can::Frame& f, bool extended) {
   return frame;
 }
 
-std::string errno_text(const std::string& what) { return what + ": " + std::strerror(errno); }
-
 enum Published { kLvdtSent, kLvdtLost, kFeedbackSent, kErrorFrames, kTxErrors };
 
 }  // namespace
@@ -44,7 +42,7 @@ CanNode::~CanNode() { stop(); }
 hal::StartResult CanNode::start() {
   const std::string where = "plant can (" + interface_ + ")";
   const int fd = socket(PF_CAN, SOCK_RAW | SOCK_CLOEXEC, CAN_RAW);
-  if (fd < 0) return hal::StartResult::failure(errno_text(where + ": socket(PF_CAN) failed"));
+  if (fd < 0) return hal::StartResult::failure(hal::errno_text(where + ": socket(PF_CAN) failed"));
   const unsigned ifindex = if_nametoindex(interface_.c_str());
   const can_filter filter{wire_id(ids_.command_id, ids_.extended_ids),
                           (ids_.extended_ids ? CAN_EFF_MASK : CAN_SFF_MASK) | CAN_EFF_FLAG | CAN_RTR_FLAG};
@@ -55,7 +53,7 @@ hal::StartResult CanNode::start() {
   if (ifindex == 0 || setsockopt(fd, SOL_CAN_RAW, CAN_RAW_FILTER, &filter, sizeof filter) != 0 ||
       setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv) != 0 ||
       bind(fd, reinterpret_cast<const sockaddr*>(&addr), sizeof addr) != 0) {
-    const auto r = hal::StartResult::failure(errno_text(where + ": cannot open the interface"));
+    const auto r = hal::StartResult::failure(hal::errno_text(where + ": cannot open the interface"));
     close(fd);
     return r;
   }

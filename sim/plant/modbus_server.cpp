@@ -45,8 +45,6 @@ int top_address(const hal::modbus::RegisterMap& r) {
                    r.demand_counter_address + 1});
 }
 
-std::string errno_text(const std::string& what) { return what + ": " + std::strerror(errno); }
-
 }  // namespace
 
 ModbusServer::ModbusServer(hal::modbus::ModbusConfig layout, std::string host, int port,
@@ -74,14 +72,14 @@ bool ModbusServer::listen_tcp(std::string& error) {
   if (ctx_ == nullptr) {
     ctx_ = modbus_new_tcp(host_.c_str(), port_);
     if (ctx_ == nullptr) {
-      error = errno_text("modbus server: cannot create a TCP context for " + host_);
+      error = hal::errno_text("modbus server: cannot create a TCP context for " + host_);
       return false;
     }
     modbus_set_indication_timeout(ctx_, 0, 200'000);
   }
   listen_fd_ = modbus_tcp_listen(ctx_, kMaxClients);
   if (listen_fd_ < 0) {
-    error = errno_text("modbus server: cannot listen on " + host_ + ":" + std::to_string(port_));
+    error = hal::errno_text("modbus server: cannot listen on " + host_ + ":" + std::to_string(port_));
     return false;
   }
   if (port_ == 0) {
@@ -105,7 +103,7 @@ hal::StartResult ModbusServer::start() {
   }
   const int registers = std::max(top_address(layout_.registers), layout_.registers.load_cell_address + 2);
   map_ = modbus_mapping_new(0, 0, registers, registers);
-  if (map_ == nullptr) return hal::StartResult::failure(errno_text("modbus server: no mapping"));
+  if (map_ == nullptr) return hal::StartResult::failure(hal::errno_text("modbus server: no mapping"));
   std::string error;
   if (layout_.transport == hal::modbus::Transport::kTcp) {
     if (!listen_tcp(error)) return hal::StartResult::failure(error);
@@ -113,14 +111,14 @@ hal::StartResult ModbusServer::start() {
     const auto& rtu = layout_.rtu;
     // libmodbus's RTU framing on the pty master; the controller opens the slave side.
     ctx_ = modbus_new_rtu("/dev/null", rtu.baud, rtu.parity, rtu.data_bits, rtu.stop_bits);
-    if (ctx_ == nullptr) return hal::StartResult::failure(errno_text("modbus server: no RTU context"));
+    if (ctx_ == nullptr) return hal::StartResult::failure(hal::errno_text("modbus server: no RTU context"));
     modbus_set_slave(ctx_, layout_.slave_id);
     modbus_set_indication_timeout(ctx_, 0, 200'000);
     std::array<char, 128> name{};
     termios raw{};
     cfmakeraw(&raw);
     if (openpty(&pty_master_, &pty_slave_, name.data(), &raw, nullptr) != 0) {
-      return hal::StartResult::failure(errno_text("modbus server: openpty failed"));
+      return hal::StartResult::failure(hal::errno_text("modbus server: openpty failed"));
     }
     modbus_set_socket(ctx_, pty_master_);
     const std::string link = rtu_link_.empty() ? layout_.rtu.device : rtu_link_;

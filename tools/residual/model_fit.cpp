@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "model/observer.hpp"
+#include "model/typical_ranges.hpp"
 #include "tools/optimisation/particle_swarm.hpp"
 
 namespace mrd::tools {
@@ -300,10 +301,12 @@ model::DamperModel apply_linear_terms(model::DamperModel m, const LinearTerms& t
   const model::BinghamDamper before(m.geometry, m.fluid.viscosity);
   const double c0 = before.viscous_coefficient();
   m.geometry.pole_length *= a;
-  // c0 is proportional to the viscosity at fixed geometry; a damper cannot have c0 <= 0.
-  const double target = std::max(a * c0 + t.extra_viscous, 1e-6 * a * c0);
-  const model::BinghamDamper scaled(m.geometry, m.fluid.viscosity);
-  m.fluid.viscosity *= target / scaled.viscous_coefficient();
+  // c0 is proportional to the viscosity at fixed geometry. A solve that holds c0 at 0 leaves the
+  // viscosity at the least a fluid has (model/typical_ranges.hpp), not a share of the last one:
+  // applied again and again, a share ran Dyke's and a bump stop's fits to 1e-108 Pa s.
+  const double per_viscosity = model::BinghamDamper(m.geometry, 1.0).viscous_coefficient();  // c0 at 1 Pa s
+  const double target = std::max(a * c0 + t.extra_viscous, model::kTypicalViscosity.lo * per_viscosity);
+  m.fluid.viscosity = target / per_viscosity;
   m.geometry.seal_friction = std::max(a * m.geometry.seal_friction + t.extra_friction, 0.0);
   for (const model::EffectInfo& e : model::effect_infos()) e.scale_force(m.effects, a);
   std::size_t c = 0;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <random>
 
+#include "model/typical_ranges.hpp"
 #include "tools/residual/candidate_effects.hpp"
 #include "tools/residual/residual_structure.hpp"
 #include "tests/tools/residual/residual_test_support.hpp"
@@ -71,6 +72,22 @@ TEST(ModelFit, LinearTermsCarryTheFlowIndexAndTheSealFriction) {
   for (std::size_t i = 0; i < s.size(); ++i) from_made.force[i] = made[i] - 200.0 * std::tanh(s.velocity[i] / 1e-3);
   const LinearTerms held = fit_linear_terms(from_made, f, {}, &base);
   EXPECT_NEAR(held.force_scale * 50.0 + held.extra_friction, 0.0, 1e-9);
+}
+
+// A viscous term the solve holds at c0 = 0, applied fit after fit (each refinement starts from the
+// last one's model), leaves the viscosity at the least a fluid has, not a share of the one before
+// (that ran a bump stop's fit to 1e-108 Pa s); a positive c0 is the one asked for.
+TEST(ModelFit, AViscousTermHeldAtZeroStaysAtTheFluidsLeastViscosity) {
+  mrd::model::DamperModel m;
+  for (int fit = 0; fit < 20; ++fit) {
+    const mrd::model::BinghamDamper now(m.geometry, m.fluid.viscosity);
+    m = apply_linear_terms(m, LinearTerms{1.0, -now.viscous_coefficient(), 0.0, {}, {}});
+  }
+  EXPECT_DOUBLE_EQ(m.fluid.viscosity, mrd::model::kTypicalViscosity.lo);
+  const double c0_at_floor = mrd::model::BinghamDamper(m.geometry, m.fluid.viscosity).viscous_coefficient();
+  const mrd::model::DamperModel back = apply_linear_terms(m, LinearTerms{1.0, 2000.0, 0.0, {}, {}});
+  EXPECT_NEAR(mrd::model::BinghamDamper(back.geometry, back.fluid.viscosity).viscous_coefficient(),
+              c0_at_floor + 2000.0, 1e-9 * 2000.0);
 }
 
 // B from a trace serves a model with the same magnetics (here, more viscosity and a gas
