@@ -4,6 +4,7 @@
 
 #include "model/damper_model.hpp"
 #include "tools/residual/search_context.hpp"
+#include "tools/residual/term_discovery.hpp"
 
 namespace mrd::tools::search {
 
@@ -25,6 +26,9 @@ struct AcceptedSet {
   // Per effect, the others refined without it, as the last revision pass left them (empty when
   // the set never had two effects).
   std::vector<Reduced> without;
+  // Step 6a replaced the set by the library's terms: `model` is the base identified again
+  // beside them and carries them (learned_terms), no longer the base the rounds started from.
+  std::vector<DiscoveredTerm> terms_in_model;
 };
 
 }  // namespace mrd::tools::search

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "tools/residual/base_identification.hpp"
 #include "tools/residual/model_fit.hpp"
 #include "tools/residual/term_discovery.hpp"
 #include "tools/residual/term_rivalry.hpp"
@@ -37,7 +38,77 @@ WithTerms with_damper_terms(const Search& s, const model::DamperModel& m, double
   return out;
 }
 
+// Whether a term is the own physics of an effect in `effects` (a gas spring's k x).
+bool own_physics_of_any(const Effects& effects, const std::string& term) {
+  return std::ranges::any_of(effects, [&](const model::EffectInfo* e) {
+    return std::ranges::find(e->term_forms, term) != e->term_forms.end();
+  });
+}
+
+bool names_own_physics(const TermDiscovery& d, const Effects& effects) {
+  return std::ranges::any_of(d.terms, [&](const DiscoveredTerm& t) { return own_physics_of_any(effects, t.term); });
+}
+
+// The base identified again with the terms the regression found on it riding in the model (the
+// force scale scales them), then the terms regressed again on what the new base leaves: a force
+// the base has no form for bends a base fitted without it, and no regression on that base's
+// residual undoes the bend.
+struct TermsBesideBase {
+  model::DamperModel with_terms;  // the base identified beside the terms, carrying them
+  double validation = 0.0;
+  std::vector<DiscoveredTerm> terms;  // those of both regressions, once each
+  std::string names;
+  bool own_physics = false;  // a term is a named effect's own form
+};
+TermsBesideBase identify_base_beside_terms(Search& s, const model::DamperModel& base, const TermDiscovery& first,
+                                           const Effects& named) {
+  model::DamperModel riding = base;
+  first.add_to(riding);
+  ParameterSpace space;
+  const FittedModel again = identify_base_twice_if_short(s, riding, space, 1);
+  TermsBesideBase out;
+  out.with_terms = again.model;
+  out.validation = s.validation_rms(again.model);
+  const WithTerms more = with_damper_terms(s, again.model, out.validation);
+  if (more.discovery.has_terms() && more.validation < out.validation) {
+    more.discovery.add_to(out.with_terms);
+    out.validation = more.validation;
+  }
+  out.own_physics = names_own_physics(first, named) || names_own_physics(more.discovery, named);
+  out.terms = first.terms;
+  for (const DiscoveredTerm& t : more.discovery.terms)
+    if (std::ranges::none_of(out.terms, [&](const DiscoveredTerm& u) { return u.term == t.term; })) out.terms.push_back(t);
+  for (const DiscoveredTerm& t : out.terms) out.names += (out.names.empty() ? "" : " + ") + t.term;
+  return out;
+}
+
 }  // namespace
+
+bool weigh_set_against_terms_beside_base(Search& s, AcceptedSet& set, const model::DamperModel& base,
+                                         ResidualResult& result) {
+  if (!s.options.discover || !s.options.terms_beside_base || set.effects.empty()) return false;
+  const double threshold = s.options.minimum_reduction;
+  const WithTerms on_base = with_damper_terms(s, base, s.validation_rms(base));
+  if (!on_base.discovery.has_terms() || names_own_physics(on_base.discovery, set.effects)) return false;
+  const TermsBesideBase terms = identify_base_beside_terms(s, base, on_base.discovery, set.effects);
+  if (terms.own_physics || !(terms.validation < (1.0 - threshold) * set.validation)) return false;
+  const double beside = with_damper_terms(s, set.model, set.validation).validation;
+  if (weigh_terms_against_effect(set.validation, terms.validation, beside, threshold) != TermRivalry::kTermsReplace)
+    return false;
+  std::string named;
+  for (const model::EffectInfo* e : set.effects) named += (named.empty() ? "" : " + ") + std::string(e->name);
+  result.revisions.push_back(format(
+      "replaced %s by the terms %s beside the base identified again with them: validation RMS %.4g -> %.4g N "
+      "(the set with the terms %.4g N)",
+      named.c_str(), terms.names.c_str(), set.validation, terms.validation, beside));
+  set.effects.clear();
+  set.rivals.clear();
+  set.without.clear();
+  set.model = terms.with_terms;
+  set.validation = terms.validation;
+  set.terms_in_model = terms.terms;
+  return true;
+}
 
 void weigh_effects_against_terms(Search& s, AcceptedSet& set, const model::DamperModel& base,
                                  ResidualResult& result) {
@@ -88,7 +159,25 @@ void weigh_effects_against_terms(Search& s, AcceptedSet& set, const model::Dampe
   }
 }
 
-void discover(Search& s, model::DamperModel& model, ResidualResult& result) {
+namespace {
+
+// The terms step 6a put in the model, ahead of step 7's, each at the model's final coefficient.
+void list_carried_terms(const model::DamperModel& model, const std::vector<DiscoveredTerm>& carried,
+                        std::vector<DiscoveredTerm>& discovered) {
+  std::vector<DiscoveredTerm> listed;
+  for (DiscoveredTerm t : carried) {
+    t.coefficient = carried_coefficient(model, t.term);
+    listed.push_back(std::move(t));
+  }
+  for (DiscoveredTerm& t : discovered)
+    if (std::ranges::none_of(listed, [&](const DiscoveredTerm& u) { return u.term == t.term; }))
+      listed.push_back(std::move(t));
+  discovered = std::move(listed);
+}
+
+}  // namespace
+
+void discover(Search& s, model::DamperModel& model, ResidualResult& result, const std::vector<DiscoveredTerm>& carried) {
   std::vector<double> induction;
   predict_force_and_induction(model, s.full, result.predicted_after, induction);
   result.discovery = s.options.discover;
@@ -135,6 +224,7 @@ void discover(Search& s, model::DamperModel& model, ResidualResult& result) {
                                                     "scale differently with them)"});
     }
   }
+  list_carried_terms(model, carried, result.discovered);
   for (std::size_t i = 0; i < s.full.size(); ++i) result.predicted_after[i] += discovery.interference[i];
 }
 

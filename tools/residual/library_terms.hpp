@@ -4,8 +4,18 @@
 #include "tools/residual/accepted_set.hpp"
 #include "tools/residual/residual_result.hpp"
 #include "tools/residual/search_context.hpp"
+#include "tools/residual/term_discovery.hpp"
 
 namespace mrd::tools::search {
+
+// Step 6a (--terms-beside-base): the whole named set against the library's terms, the base
+// identified again beside the terms the regression finds on `base` (then the terms regressed
+// again on what it leaves). Where they validate better than the set by more than the threshold
+// and the set beside them earns less than that, with no term a named effect's own form (a gas
+// spring's k x), the set goes and `set.model` becomes the base identified beside the terms,
+// carrying the terms (step 7 lists them). Returns whether it replaced the set.
+bool weigh_set_against_terms_beside_base(Search& s, AcceptedSet& set, const model::DamperModel& base,
+                                         ResidualResult& result);
 
 // Step 6b: each named effect against the library's terms, the model without it with the damper
 // terms the regression accepts in its place. Terms led by the effect's own physics (its
@@ -19,7 +29,9 @@ void weigh_effects_against_terms(Search& s, AcceptedSet& set, const model::Dampe
 
 // Step 7: what the named effects left, regressed on the library of terms; damper terms join
 // `model` (learned_terms), mains lines are taken off the measurement. Leaves the prediction
-// after in result.predicted_after.
-void discover(Search& s, model::DamperModel& model, ResidualResult& result);
+// after in result.predicted_after. Terms the model carries from step 6a (`carried`) are listed
+// first, each at the final model's coefficient.
+void discover(Search& s, model::DamperModel& model, ResidualResult& result,
+              const std::vector<DiscoveredTerm>& carried = {});
 
 }  // namespace mrd::tools::search

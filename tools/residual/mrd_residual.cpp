@@ -82,6 +82,9 @@ void add_search_options(CLI::App& app, Arguments& a) {
                  "searches only: a repeated current jump from within this share of Ms of a kept one takes "
                  "its change of M instead of J-A's integration (0: off; 1e-6 runs a long telegraph run 3x faster)")
       ->check(mrd::cli::finite_in(0.0, 1e-3))->capture_default_str();
+  app.add_flag("--terms-beside-base", options.terms_beside_base,
+               "weigh the named effects together against the library's terms with the base identified again "
+               "beside those terms (a force the base has no form for, a bump stop, bends a base fitted without it)");
   app.add_option("--threads", options.threads, "worker threads (0: every core)")
       ->check(CLI::Range(0u, 1024u))->capture_default_str();
   app.add_option("--seed", options.seed, "seed of the swarms")->capture_default_str();

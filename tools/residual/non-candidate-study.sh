@@ -3,6 +3,7 @@
 # run with a force added after the fact, then mrd-residual. What must not happen is a candidate
 # claimed for it; what should happen is a description of the structure left.
 # Usage: tools/residual/non-candidate-study.sh [BUILD_DIR] [OUT_DIR]   (needs python3)
+# MRD_RESIDUAL_ARGS: more options for every mrd-residual (e.g. --terms-beside-base).
 set -euo pipefail
 build=${1:-build/release}
 out=${2:-out/non-candidate}
@@ -47,7 +48,7 @@ echo "| run | added | named | discovered | RMS before [N] | RMS after [N] | what
 echo "|---|---|---|---|---:|---:|---|"
 for name in inertia-1kN-telegraph inertia-50kN-table4 friction-1kN-telegraph hum-50kN-table4 \
             field-viscosity-50kN-table4 bump-stop-1kN-table4; do
-  "$build/tools/mrd-residual" "$out/$name.csv" --json "$out/$name.json" > "$out/$name.txt"
+  "$build/tools/mrd-residual" "$out/$name.csv" ${MRD_RESIDUAL_ARGS:-} --json "$out/$name.json" > "$out/$name.txt"
   python3 - "$out/$name.json" "$name" <<'PY'
 import json, sys
 r = json.load(open(sys.argv[1]))

@@ -47,6 +47,9 @@ struct ResidualOptions {
   unsigned threads = 0;  // 0: every core
   std::uint64_t seed = 1;
   bool discover = true;  // step 7: regress what the named effects left on the library of terms
+  // Step 6a (opt-in until the studies are re-run with it): the named set against the library's
+  // terms with the base identified again beside them (docs/CLOSING-THE-LOOP.md, "Limits").
+  bool terms_beside_base = false;
   // Step 3b (opt-in): a least-squares base that leaves a material share of weight to the robust
   // loss is identified again under it, and every later fit and judgement but the discovery's
   // regression runs under it. Off by

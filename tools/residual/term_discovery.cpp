@@ -182,6 +182,13 @@ std::vector<std::string> term_library(double sample_rate) {
   return names;
 }
 
+double carried_coefficient(const model::DamperModel& model, const std::string& term) {
+  const auto& learned = model.effects.get<model::LearnedTermsEffect>();
+  for (std::size_t k = 0; k < model::kLearnedTermCount; ++k)
+    if (model::kLearnedTerms[k].name == term) return learned.coefficients[k];
+  return 0.0;
+}
+
 void TermDiscovery::add_to(model::DamperModel& model) const {
   if (terms.empty()) return;
   LinearTerms base;

@@ -45,6 +45,9 @@ struct TermDiscovery {
   void add_to(model::DamperModel& model) const;
 };
 
+// The coefficient `model` carries for the library term named `term` (0 where it has none).
+double carried_coefficient(const model::DamperModel& model, const std::string& term);
+
 // Step 7 of mrd-residual: forward sparse regression of the residual (force - predicted) on the
 // library of physical terms, fitted on the fitting blocks and judged on the validation blocks:
 // the term that lowers the validation RMS most joins while every coefficient keeps its physical

@@ -65,6 +65,30 @@ TEST(TermDiscovery, MainsHumIsInterferenceAndStaysOutOfTheModel) {
   EXPECT_EQ(json["discovered"][0]["kind"], "interference") << json.dump(2);
 }
 
+// A cubic bump stop (100 N at the 20 mm stroke) has no candidate's form: the base fitted without
+// it bends, pre-yield's stiffness at the sine's reversals (its stroke ends) and the gas spring
+// take it, and no regression on the bent base's residual claims the cubic. With the base
+// identified again beside the terms (step 6a, --terms-beside-base) the named set goes and the
+// cubic is found, near its coefficient; without step 6a the same run names effects.
+TEST(TermDiscovery, ABumpStopIsACubicTermBesideTheBaseNotANamedEffect) {
+  const auto run = with_added_force(
+      residual_testing::simulated_recorded_run(RunProfile::kTable4, "1kN", {}, 4.0),
+      [](double, double x, double, double) { return 100.0 * std::pow(x / 0.02, 3); });
+  ResidualOptions options;
+  options.threads = 2;
+  options.candidates = {"gas_spring"};
+  const FitSeries series = make_fit_series({run}, {});
+  const ResidualResult named = find_missing_effects(series, options);
+  EXPECT_FALSE(named.accepted.empty()) << residual_summary({run}, named);
+  options.terms_beside_base = true;
+  const ResidualResult r = find_missing_effects(series, options);
+  EXPECT_TRUE(r.accepted.empty()) << residual_summary({run}, r);
+  const DiscoveredTerm* cubic = find_term(r, "displacement_cubed");
+  ASSERT_NE(cubic, nullptr) << residual_summary({run}, r);
+  EXPECT_NEAR(cubic->coefficient, 100.0 / std::pow(0.02, 3), 0.25 * 100.0 / std::pow(0.02, 3));
+  EXPECT_LT(r.after.all, 0.8 * named.after.all) << residual_summary({run}, r);
+}
+
 TEST(TermDiscovery, ACleanRunGainsNoTerm) {
   const auto run = residual_testing::simulated_recorded_run(RunProfile::kTelegraph, "1kN", {}, 4.0);
   const ResidualResult r = residual_testing::analyse(run);
