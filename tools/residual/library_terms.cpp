@@ -70,14 +70,18 @@ TermsBesideBase identify_base_beside_terms(Search& s, const model::DamperModel& 
   out.with_terms = again.model;
   out.validation = s.validation_rms(again.model);
   const WithTerms more = with_damper_terms(s, again.model, out.validation);
-  if (more.discovery.has_terms() && more.validation < out.validation) {
+  // The second regression's terms count only where the model takes them.
+  const bool more_taken = more.discovery.has_terms() && more.validation < out.validation;
+  if (more_taken) {
     more.discovery.add_to(out.with_terms);
     out.validation = more.validation;
   }
-  out.own_physics = names_own_physics(first, named) || names_own_physics(more.discovery, named);
+  out.own_physics = names_own_physics(first, named) || (more_taken && names_own_physics(more.discovery, named));
   out.terms = first.terms;
-  for (const DiscoveredTerm& t : more.discovery.terms)
-    if (std::ranges::none_of(out.terms, [&](const DiscoveredTerm& u) { return u.term == t.term; })) out.terms.push_back(t);
+  if (more_taken)
+    for (const DiscoveredTerm& t : more.discovery.terms)
+      if (std::ranges::none_of(out.terms, [&](const DiscoveredTerm& u) { return u.term == t.term; }))
+        out.terms.push_back(t);
   for (const DiscoveredTerm& t : out.terms) out.names += (out.names.empty() ? "" : " + ") + t.term;
   return out;
 }

@@ -66,10 +66,10 @@ TEST(TermDiscovery, MainsHumIsInterferenceAndStaysOutOfTheModel) {
 }
 
 // A cubic bump stop (100 N at the 20 mm stroke) has no candidate's form: the base fitted without
-// it bends, pre-yield's stiffness at the sine's reversals (its stroke ends) and the gas spring
-// take it, and no regression on the bent base's residual claims the cubic. With the base
-// identified again beside the terms (step 6a, --terms-beside-base) the named set goes and the
-// cubic is found, near its coefficient; without step 6a the same run names effects.
+// it bends, the gas spring takes part of it, and no regression on the bent base's residual
+// claims the cubic. With the base identified again beside the terms (step 6a,
+// --terms-beside-base) the named set goes and the cubic is found near its coefficient, listed
+// once at the model's own coefficient; without step 6a the same run names the gas spring.
 TEST(TermDiscovery, ABumpStopIsACubicTermBesideTheBaseNotANamedEffect) {
   const auto run = with_added_force(
       residual_testing::simulated_recorded_run(RunProfile::kTable4, "1kN", {}, 4.0),
@@ -86,6 +86,9 @@ TEST(TermDiscovery, ABumpStopIsACubicTermBesideTheBaseNotANamedEffect) {
   const DiscoveredTerm* cubic = find_term(r, "displacement_cubed");
   ASSERT_NE(cubic, nullptr) << residual_summary({run}, r);
   EXPECT_NEAR(cubic->coefficient, 100.0 / std::pow(0.02, 3), 0.25 * 100.0 / std::pow(0.02, 3));
+  EXPECT_EQ(std::ranges::count(r.discovered, std::string("displacement_cubed"), &DiscoveredTerm::term), 1);
+  EXPECT_DOUBLE_EQ(cubic->coefficient,
+                   r.final_model.effects.get<mrd::model::LearnedTermsEffect>()[mrd::model::LearnedTerm::kDisplacementCubed]);
   EXPECT_LT(r.after.all, 0.8 * named.after.all) << residual_summary({run}, r);
 }
 
