@@ -163,6 +163,11 @@ void weigh_effects_against_terms(Search& s, AcceptedSet& set, const model::Dampe
   }
 }
 
+void weigh_set_and_effects_against_terms(Search& s, AcceptedSet& set, const model::DamperModel& base,
+                                         ResidualResult& result) {
+  if (!weigh_set_against_terms_beside_base(s, set, base, result)) weigh_effects_against_terms(s, set, base, result);
+}
+
 namespace {
 
 // The terms step 6a put in the model, ahead of step 7's, each at the model's final coefficient.

@@ -27,6 +27,10 @@ bool weigh_set_against_terms_beside_base(Search& s, AcceptedSet& set, const mode
 void weigh_effects_against_terms(Search& s, AcceptedSet& set, const model::DamperModel& base,
                                  ResidualResult& result);
 
+// Step 6a, then, where it kept the set, step 6b.
+void weigh_set_and_effects_against_terms(Search& s, AcceptedSet& set, const model::DamperModel& base,
+                                         ResidualResult& result);
+
 // Step 7: what the named effects left, regressed on the library of terms; damper terms join
 // `model` (learned_terms), mains lines are taken off the measurement. Leaves the prediction
 // after in result.predicted_after. Terms the model carries from step 6a (`carried`) are listed

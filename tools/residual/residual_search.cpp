@@ -207,8 +207,7 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   clock.done("greedy rounds");
   search::revise_set(s, set, result);
   clock.done("set revision");
-  if (!search::weigh_set_against_terms_beside_base(s, set, base.model, result))
-    search::weigh_effects_against_terms(s, set, base.model, result);
+  search::weigh_set_and_effects_against_terms(s, set, base.model, result);
   search::name_ambiguities(set, ambiguous_groups, result);
   for (const model::EffectInfo* e : set.effects) result.accepted.emplace_back(e->name);
   search::mark_final_set(result);
@@ -217,9 +216,7 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   // 6b. The named model refit on every kept sample (the base's refit when none was named);
   // 7. discovery on what it leaves.
   model::DamperModel current =
-      set.effects.empty() && set.terms_in_model.empty()
-          ? result.base
-          : reported(search::refit_on_every_sample(s, set.model, set.model).model);
+      set.is_the_base() ? result.base : reported(search::refit_on_every_sample(s, set.model, set.model).model);
   if (time_steps_within_rows(s, set.effects, current, result)) {
     current = reported(current);
     clock.done("switch timing");
