@@ -7,7 +7,7 @@
 #include <iterator>
 #include <sstream>
 
-#include "common/cli/command_line.hpp"
+#include "common/cli/program_outputs.hpp"
 #include "tools/plot/gnuplot.hpp"
 #include "tools/report/sha256.hpp"
 #include "tools/text_format.hpp"

@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "common/cli/command_line.hpp"
+#include "common/cli/program_outputs.hpp"
 #include "common/cli/exit_code.hpp"
 #include "record/csv.hpp"
 #include "record/run_reader.hpp"
