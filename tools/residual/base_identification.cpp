@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "tools/residual/joint_refinement.hpp"
 #include "tools/residual/least_squares_refine.hpp"
 #include "tools/text_format.hpp"
 
@@ -97,20 +98,24 @@ FittedModel identify_base(Search& s, const model::DamperModel& origin, Parameter
   return search_base_space(s, space, std::move(chain_starts), swarms);
 }
 
-FittedModel identify_base_with(Search& s, const model::DamperModel& origin, const model::EffectInfo& effect, int swarms) {
-  ParameterSpace base = base_space(origin, s.options.start, s.scales, Magnetics::kMaterial);
-  base.linear = linear_effects_of(origin);
-  const ParameterSpace joint = combine(base, effect_space(effect, origin, s.scales));
+FittedModel identify_base_with(Search& s, const model::DamperModel& origin, const Effects& effects, int swarms) {
+  ParameterSpace joint = base_space(origin, s.options.start, s.scales, Magnetics::kMaterial);
+  joint.linear = linear_effects_of(origin);
+  for (const model::EffectInfo* e : effects) joint = combine(joint, effect_space(*e, origin, s.scales));
   const Point base_start = base_coordinates(origin, s.options.start, s.scales, Magnetics::kMaterial);
-  const Point effect_start = effect_coordinates(effect, origin, s.scales);
+  const Point effect_start = effect_coordinates(effects, origin, s.scales);
   Point from(base_start.size() + effect_start.size());
   from << base_start, effect_start;
-  // A second chain from the config's damper (the prior) with the effect as fitted: the basin the
-  // first base fit left may be the one the effect needed.
+  // A second chain from the config's damper (the prior) with the effects as fitted: the basin the
+  // first base fit left may be the one the effects needed.
   const Point prior_start = base_coordinates(s.options.start, s.options.start, s.scales, Magnetics::kMaterial);
   Point from_prior(prior_start.size() + effect_start.size());
   from_prior << prior_start, effect_start;
   return search_base_space(s, joint, {from, from_prior}, swarms);
+}
+
+FittedModel identify_base_with(Search& s, const model::DamperModel& origin, const model::EffectInfo& effect, int swarms) {
+  return identify_base_with(s, origin, Effects{&effect}, swarms);
 }
 
 FittedModel identify_base_twice_if_short(Search& s, const model::DamperModel& origin, ParameterSpace& space,

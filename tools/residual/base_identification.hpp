@@ -43,6 +43,8 @@ FittedModel identify_base(Search& s, const model::DamperModel& origin, Parameter
 // Polish_accepted runs it with kSecondStartSwarms swarms: with two, the independent logger run
 // with a 0.05 s gap stayed at 7.2 N, with four it reached 2.3 N, its noise.
 FittedModel identify_base_with(Search& s, const model::DamperModel& origin, const model::EffectInfo& effect, int swarms);
+// The same with every effect of `effects` searched beside the base, in that order.
+FittedModel identify_base_with(Search& s, const model::DamperModel& origin, const Effects& effects, int swarms);
 
 // identify_base from `origin` with `swarms`; where its residual on the fitting series stays
 // above kSecondStartRatio times its white noise, a second start (kSecondStartSwarms swarms of

@@ -56,8 +56,8 @@ AcceptedSet greedy_rounds(Search& s, const model::DamperModel& base, ResidualRes
   for (int round_number = 1; !candidates.empty(); ++round_number) {
     Round round = try_candidates(s, set.model, set.validation, candidates, round_number);
     std::size_t best = judge_round(s, round, set.validation);
-    if (best == round.trials.size() && set.effects.empty())
-      best = rebase_round_leader(s, round, set.model, candidates, round_number);
+    if (best == round.trials.size())
+      best = rebase_round_leader(s, round, set.model, set.effects, candidates, round_number);
     if (best < round.trials.size()) {
       Effects alike = ambiguous_with_winner(round, candidates, best, s.options.minimum_reduction);
       Effects rivals;
