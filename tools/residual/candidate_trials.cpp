@@ -230,8 +230,8 @@ std::size_t judge_round(const Search& s, Round& round, double current_validation
   return best;
 }
 
-std::size_t rebase_round_leader(Search& s, Round& round, const model::DamperModel& current, const Effects& accepted,
-                                const Effects& candidates, int round_number) {
+std::size_t rebase_round_leader(Search& s, Round& round, const model::DamperModel& current, const Effects& candidates,
+                                int round_number) {
   const std::size_t none = round.trials.size();
   std::size_t leader = none;
   for (std::size_t k = 0; k < round.trials.size(); ++k) {
@@ -244,9 +244,7 @@ std::size_t rebase_round_leader(Search& s, Round& round, const model::DamperMode
     return none;
   const model::EffectInfo& effect = *candidates[leader];
   if (effect_space(effect, round.fits[leader].model, s.scales).bounds.dimension() == 0) return none;
-  Effects searched = accepted;
-  searched.push_back(&effect);
-  FittedModel beside = identify_base_with(s, round.fits[leader].model, searched, kSecondStartSwarms);
+  FittedModel beside = identify_base_with(s, round.fits[leader].model, effect, kSecondStartSwarms);
   if (effect.implausible(beside.model.effects, s.scales)) return none;
   // The base alone gets every start the effect's search had (the config's damper, and the base
   // it found beside the effect) besides its own, and the same swarms; the round's own models

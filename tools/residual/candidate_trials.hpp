@@ -47,13 +47,10 @@ Round try_candidates(Search& s, const model::DamperModel& current, double curren
 // Returns its index, or trials.size() when none passes.
 std::size_t judge_round(const Search& s, Round& round, double current_validation);
 
-// Step 5c, in a round where no candidate passed while the model leaves more than kRebaseRatio
-// times the noise on the validation blocks: the base may sit in a basin that only the missing
-// effect leads out of (a lagged telegraph run's base without the lag lands anywhere from 190 to
-// 350 N RMS, and the lag fitted on the worse one gains too little to be claimed; in a later
-// round, the base that was identified again beside the first effect can sit in such a basin
-// too, as in the random-damper study's coil_lag+stroke_end_air-204). The effects already
-// accepted (`accepted`) are searched again beside the base and the candidate.
+// Step 5c, in the first round only, where no candidate passed while the base leaves more than
+// kRebaseRatio times the noise on the validation blocks: the base may sit in a basin that only
+// the missing effect leads out of (a lagged telegraph run's base without the lag lands anywhere
+// from 190 to 350 N RMS, and the lag fitted on the worse one gains too little to be claimed).
 // The candidate that changes B (the magnetics are where the base's basins and such an effect
 // trade) and lowered the validation error most is identified together with the base
 // (identify_base_with). The base is identified again alone with the same swarms and every start
@@ -62,7 +59,7 @@ std::size_t judge_round(const Search& s, Round& round, double current_validation
 // how it was found). The other candidates are not tried beside a new base, so no rival or
 // ambiguity is weighed for it. Returns its index, or trials.size().
 inline constexpr double kRebaseRatio = 3.0;
-std::size_t rebase_round_leader(Search& s, Round& round, const model::DamperModel& current, const Effects& accepted,
-                                const Effects& candidates, int round_number);
+std::size_t rebase_round_leader(Search& s, Round& round, const model::DamperModel& current, const Effects& candidates,
+                                int round_number);
 
 }  // namespace mrd::tools::search

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <string>
 
 #include "tools/residual/ambiguity_naming.hpp"
 #include "tools/residual/base_identification.hpp"
 #include "tools/residual/candidate_effects.hpp"
 #include "tools/residual/candidate_trials.hpp"
 #include "tools/residual/joint_refinement.hpp"
+#include "tools/text_format.hpp"
 
 namespace mrd::tools::search {
 
@@ -25,6 +27,23 @@ Effects candidate_effects(const ResidualOptions& options) {
 }
 
 }  // namespace
+
+bool rebase_the_set(Search& s, AcceptedSet& set, ResidualResult& result) {
+  if (!(s.noise_floor > 0.0) || !(set.validation > kRebaseRatio * s.noise_floor)) return false;
+  const FittedModel again = identify_base_with(s, set.model, set.effects, kSecondStartSwarms);
+  for (const model::EffectInfo* e : set.effects)
+    if (e->implausible(again.model.effects, s.scales)) return false;
+  const double validation = s.validation_rms(again.model);
+  if (!(validation < set.validation)) return false;
+  std::string names;
+  for (const model::EffectInfo* e : set.effects) names += (names.empty() ? "" : ", ") + std::string(e->name);
+  result.revisions.push_back(format("after a round that claimed nothing, the base identified again with %s searched "
+                                    "beside it: validation RMS %.4g -> %.4g N; the round tried again",
+                                    names.c_str(), set.validation, validation));
+  set.model = again.model;
+  set.validation = validation;
+  return true;
+}
 
 model::DamperModel polish_accepted(Search& s, const model::DamperModel& accepted, const Effects& effects,
                                    double& validation) {
@@ -53,11 +72,19 @@ AcceptedSet greedy_rounds(Search& s, const model::DamperModel& base, ResidualRes
   AcceptedSet set;
   set.model = base;
   set.validation = s.validation_rms(set.model);
+  bool set_rebased = false;  // once: rebase_the_set
   for (int round_number = 1; !candidates.empty(); ++round_number) {
     Round round = try_candidates(s, set.model, set.validation, candidates, round_number);
     std::size_t best = judge_round(s, round, set.validation);
-    if (best == round.trials.size())
-      best = rebase_round_leader(s, round, set.model, set.effects, candidates, round_number);
+    if (best == round.trials.size() && set.effects.empty())
+      best = rebase_round_leader(s, round, set.model, candidates, round_number);
+    if (best == round.trials.size() && !set_rebased && !set.effects.empty()) {
+      set_rebased = true;
+      if (rebase_the_set(s, set, result)) {
+        result.trials.insert(result.trials.end(), round.trials.begin(), round.trials.end());
+        continue;  // the round again, on the set's new base
+      }
+    }
     if (best < round.trials.size()) {
       Effects alike = ambiguous_with_winner(round, candidates, best, s.options.minimum_reduction);
       Effects rivals;

@@ -150,7 +150,7 @@ std::size_t rebase_on(search::Search& s, const mrd::model::DamperModel& current,
   round.trials[0].verdict = TrialVerdict::kBelowThreshold;
   round.trials[0].validation_before = round.null_validation = s.validation_rms(current);
   round.trials[0].validation_rms = 0.95 * round.trials[0].validation_before;
-  return search::rebase_round_leader(s, round, current, {}, {&lag}, 1);
+  return search::rebase_round_leader(s, round, current, {&lag}, 1);
 }
 
 TEST(BaseFit, AFirstRoundThatClaimsNothingOnAFarOffBaseIdentifiesTheBaseBesideItsLeader) {
