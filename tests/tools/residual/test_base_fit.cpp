@@ -15,6 +15,7 @@
 #include "tools/residual/base_identification.hpp"
 #include "tools/residual/candidate_trials.hpp"
 #include "tools/residual/candidate_effects.hpp"
+#include "tools/residual/greedy_rounds.hpp"
 #include "tools/residual/residual_report.hpp"
 #include "tools/residual/residual_search.hpp"
 
@@ -187,6 +188,47 @@ TEST(BaseFit, AFirstRoundThatClaimsNothingOnAFarOffBaseIdentifiesTheBaseBesideIt
   EXPECT_EQ(rebase_on(lagged, near, close), 1u);
   EXPECT_LT(close.trials[0].validation_before, 3.0 * truth.force_noise);
   EXPECT_EQ(lagged.evaluations, spent);
+}
+
+// Step 5d: a named set whose base is far off (the lag named, the coil a tenth of the truth's)
+// after a round that claimed nothing. The base identified again with the lag searched beside it
+// reaches the noise, with the truth's time constant, and the revision is reported; a set within
+// three times the noise is left alone, and no search runs.
+TEST(BaseFit, ASetFarOffItsBaseIsIdentifiedAgainWithItsEffectsAfterARoundThatClaimsNothing) {
+  DamperClass truth = *find_damper_class("1kN");
+  truth.nominal_effects.get<mrd::model::CoilLagEffect>() = {.enabled = true, .time_constant = 15e-3};
+  ResidualOptions options;
+  options.threads = 2;
+  options.start = find_damper_class("1kN")->model;
+  search::Search lagged(make_fit_series({telegraph_run(truth, {{"coil_lag", 1.0}})}, {}), options);
+  lagged.noise_floor = truth.force_noise;
+
+  search::AcceptedSet set;
+  set.effects = {mrd::model::find_effect("coil_lag")};
+  set.rivals.resize(1);
+  set.model = options.start;
+  set.model.circuit.turns *= 0.1;
+  set.model.effects.get<mrd::model::CoilLagEffect>() = {.enabled = true, .time_constant = 4e-3};
+  set.validation = lagged.validation_rms(set.model);
+  ASSERT_GT(set.validation, 10.0 * truth.force_noise);
+  ResidualResult result;
+  ASSERT_TRUE(search::rebase_the_set(lagged, set, result));
+  EXPECT_LT(set.validation, 1.5 * truth.force_noise);
+  EXPECT_NEAR(lagged.validation_rms(set.model), set.validation, 1e-9 * set.validation);
+  EXPECT_NEAR(set.model.effects.get<mrd::model::CoilLagEffect>().time_constant, 15e-3, 3e-3);
+  ASSERT_EQ(result.revisions.size(), 1u);
+  EXPECT_NE(result.revisions[0].find("identified again with coil_lag"), std::string::npos) << result.revisions[0];
+
+  search::AcceptedSet near = set;
+  near.model = truth.model;
+  near.model.effects.get<mrd::model::CoilLagEffect>() = {.enabled = true, .time_constant = 15e-3};
+  near.validation = lagged.validation_rms(near.model);
+  ASSERT_LT(near.validation, 3.0 * truth.force_noise);
+  const std::int64_t spent = lagged.evaluations;
+  EXPECT_FALSE(search::rebase_the_set(lagged, near, result));
+  EXPECT_EQ(lagged.evaluations, spent);
+  EXPECT_EQ(near.model.circuit.turns, truth.model.circuit.turns);
+  EXPECT_EQ(result.revisions.size(), 1u);
 }
 
 // What is reported is refit on every kept sample, the held-out blocks' too: with the validation
