@@ -29,6 +29,8 @@ struct AcceptedSet {
   // Step 6a replaced the set by the library's terms: `model` is the base identified again
   // beside them and carries them (learned_terms), no longer the base the rounds started from.
   std::vector<DiscoveredTerm> terms_in_model;
+  // Among those, the terms their regression could not tell apart, each group led by the one taken.
+  std::vector<std::vector<std::string>> terms_ambiguous;
   // Nothing named and no term carried: `model` is the base the rounds started from.
   [[nodiscard]] bool is_the_base() const { return effects.empty() && terms_in_model.empty(); }
 };

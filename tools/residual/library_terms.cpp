@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "tools/residual/base_identification.hpp"
+#include "tools/residual/candidate_trials.hpp"
 #include "tools/residual/model_fit.hpp"
 #include "tools/residual/term_discovery.hpp"
 #include "tools/residual/term_rivalry.hpp"
@@ -57,6 +58,7 @@ struct TermsBesideBase {
   model::DamperModel with_terms;  // the base identified beside the terms, carrying them
   double validation = 0.0;
   std::vector<DiscoveredTerm> terms;  // those of both regressions, once each
+  std::vector<std::vector<std::string>> ambiguous;  // the groups of the regressions taken
   std::string names;
   bool own_physics = false;  // a term is a named effect's own form
 };
@@ -78,10 +80,13 @@ TermsBesideBase identify_base_beside_terms(Search& s, const model::DamperModel& 
   }
   out.own_physics = names_own_physics(first, named) || (more_taken && names_own_physics(more.discovery, named));
   out.terms = first.terms;
-  if (more_taken)
+  out.ambiguous = first.ambiguous;
+  if (more_taken) {
     for (const DiscoveredTerm& t : more.discovery.terms)
       if (std::ranges::none_of(out.terms, [&](const DiscoveredTerm& u) { return u.term == t.term; }))
         out.terms.push_back(t);
+    out.ambiguous.insert(out.ambiguous.end(), more.discovery.ambiguous.begin(), more.discovery.ambiguous.end());
+  }
   for (const DiscoveredTerm& t : out.terms) out.names += (out.names.empty() ? "" : " + ") + t.term;
   return out;
 }
@@ -111,6 +116,47 @@ bool weigh_set_against_terms_beside_base(Search& s, AcceptedSet& set, const mode
   set.model = terms.with_terms;
   set.validation = terms.validation;
   set.terms_in_model = terms.terms;
+  set.terms_ambiguous = terms.ambiguous;
+  return true;
+}
+
+// Passes of step 6c's base and terms, each kept while it lowers the validation RMS by this share.
+constexpr int kTermAlternations = 4;
+constexpr double kTermAlternationGain = 0.02;
+
+bool identify_base_beside_terms_where_nothing_is_named(Search& s, AcceptedSet& set, const model::DamperModel& base,
+                                                       ResidualResult& result) {
+  if (!s.options.discover || !set.is_the_base() || !(s.noise_floor > 0.0) ||
+      !(set.validation > kRebaseRatio * s.noise_floor))
+    return false;
+  const WithTerms on_base = with_damper_terms(s, base, set.validation);
+  if (!on_base.discovery.has_terms() || !(on_base.validation < set.validation)) return false;
+  TermsBesideBase terms = identify_base_beside_terms(s, base, on_base.discovery, {});
+  // The config's damper, which the force never bent, as a second seed for the terms.
+  const WithTerms on_start = with_damper_terms(s, s.options.start, s.validation_rms(s.options.start));
+  if (on_start.discovery.has_terms()) {
+    TermsBesideBase from_start = identify_base_beside_terms(s, s.options.start, on_start.discovery, {});
+    if (from_start.validation < terms.validation) terms = std::move(from_start);
+  }
+  if (!(terms.validation < on_base.validation)) return false;
+  // The terms were regressed on the bent base: on the base identified beside them, regressed
+  // afresh (and the base identified again beside those) while that keeps paying.
+  for (int pass = 1; pass < kTermAlternations; ++pass) {
+    const model::DamperModel bare = without_terms(terms.with_terms);
+    const WithTerms afresh = with_damper_terms(s, bare, s.validation_rms(bare));
+    if (!afresh.discovery.has_terms()) break;
+    TermsBesideBase next = identify_base_beside_terms(s, bare, afresh.discovery, {});
+    if (!(next.validation < (1.0 - kTermAlternationGain) * terms.validation)) break;
+    terms = std::move(next);
+  }
+  result.revisions.push_back(format(
+      "nothing named, and the base left %.4g N on the validation blocks (%.3g times the noise): the base "
+      "identified again beside the terms %s, %.4g N (the terms on the base as fitted: %.4g N)",
+      set.validation, set.validation / s.noise_floor, terms.names.c_str(), terms.validation, on_base.validation));
+  set.model = terms.with_terms;
+  set.validation = terms.validation;
+  set.terms_in_model = terms.terms;
+  set.terms_ambiguous = terms.ambiguous;
   return true;
 }
 
@@ -165,6 +211,10 @@ void weigh_effects_against_terms(Search& s, AcceptedSet& set, const model::Dampe
 
 void weigh_set_and_effects_against_terms(Search& s, AcceptedSet& set, const model::DamperModel& base,
                                          ResidualResult& result) {
+  if (set.effects.empty()) {
+    identify_base_beside_terms_where_nothing_is_named(s, set, base, result);
+    return;
+  }
   if (!weigh_set_against_terms_beside_base(s, set, base, result)) weigh_effects_against_terms(s, set, base, result);
 }
 
@@ -186,7 +236,8 @@ void list_carried_terms(const model::DamperModel& model, const std::vector<Disco
 
 }  // namespace
 
-void discover(Search& s, model::DamperModel& model, ResidualResult& result, const std::vector<DiscoveredTerm>& carried) {
+void discover(Search& s, model::DamperModel& model, ResidualResult& result, const std::vector<DiscoveredTerm>& carried,
+              const std::vector<std::vector<std::string>>& carried_ambiguous) {
   std::vector<double> induction;
   predict_force_and_induction(model, s.full, result.predicted_after, induction);
   result.discovery = s.options.discover;
@@ -224,15 +275,17 @@ void discover(Search& s, model::DamperModel& model, ResidualResult& result, cons
           format("%s not added: the model with them errs by %.4g N RMS, without them %.4g N", what.c_str(), with, without));
     }
   }
-  // Groups among terms the model did not take would name a choice that was never made.
-  if (added) {
-    for (const auto& group : discovery.ambiguous) {
+  const auto report_ambiguous = [&](const std::vector<std::vector<std::string>>& groups) {
+    for (const auto& group : groups) {
       result.ambiguous.push_back({.members = group,
                                   .separating_run = "to separate the terms " + group.front() + " and " + group[1] +
                                                     ", run: a motion at other frequencies and amplitudes (the terms "
                                                     "scale differently with them)"});
     }
-  }
+  };
+  report_ambiguous(carried_ambiguous);
+  // Groups among terms the model did not take would name a choice that was never made.
+  if (added) report_ambiguous(discovery.ambiguous);
   list_carried_terms(model, carried, result.discovered);
   for (std::size_t i = 0; i < s.full.size(); ++i) result.predicted_after[i] += discovery.interference[i];
 }

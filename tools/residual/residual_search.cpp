@@ -221,7 +221,7 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
     current = reported(current);
     clock.done("switch timing");
   }
-  search::discover(s, current, result, set.terms_in_model);
+  search::discover(s, current, result, set.terms_in_model, set.terms_ambiguous);
   clock.done("discovery");
   result.final_model = current;
   result.evaluations = s.evaluations;

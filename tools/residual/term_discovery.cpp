@@ -189,6 +189,11 @@ double carried_coefficient(const model::DamperModel& model, const std::string& t
   return 0.0;
 }
 
+model::DamperModel without_terms(model::DamperModel model) {
+  model.effects.get<model::LearnedTermsEffect>() = {};
+  return model;
+}
+
 void TermDiscovery::add_to(model::DamperModel& model) const {
   if (terms.empty()) return;
   LinearTerms base;

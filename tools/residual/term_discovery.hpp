@@ -45,6 +45,10 @@ struct TermDiscovery {
   void add_to(model::DamperModel& model) const;
 };
 
+// `model` without the library's terms it carries (its learned_terms switched off, every
+// coefficient 0); the refitted force scale and viscous term stay, as base coordinates.
+[[nodiscard]] model::DamperModel without_terms(model::DamperModel model);
+
 // The coefficient `model` carries for the library term named `term` (0 where it has none).
 double carried_coefficient(const model::DamperModel& model, const std::string& term);
 
