@@ -26,8 +26,9 @@ struct AcceptedSet {
   // Per effect, the others refined without it, as the last revision pass left them (empty when
   // the set never had two effects).
   std::vector<Reduced> without;
-  // Step 6a replaced the set by the library's terms: `model` is the base identified again
-  // beside them and carries them (learned_terms), no longer the base the rounds started from.
+  // Step 6a replaced the set by the library's terms, or step 6d put them beside a base that
+  // named nothing: `model` is the base identified again beside them and carries them
+  // (learned_terms), no longer the base the rounds started from.
   std::vector<DiscoveredTerm> terms_in_model;
   // Among those, the terms their regression could not tell apart, each group led by the one taken.
   std::vector<std::vector<std::string>> terms_ambiguous;

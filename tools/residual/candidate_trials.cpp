@@ -238,10 +238,9 @@ std::size_t rebase_round_leader(Search& s, Round& round, const model::DamperMode
     if (round.trials[k].verdict != TrialVerdict::kBelowThreshold || !candidates[k]->changes_induction) continue;
     if (leader == none || round.trials[k].validation_rms < round.trials[leader].validation_rms) leader = k;
   }
-  if (leader == none || !(s.noise_floor > 0.0)) return none;
+  if (leader == none) return none;
   const CandidateTrial& trial = round.trials[leader];
-  if (!(trial.validation_before > kRebaseRatio * s.noise_floor) || !(trial.validation_rms < trial.validation_before))
-    return none;
+  if (!far_above_noise(s, trial.validation_before) || !(trial.validation_rms < trial.validation_before)) return none;
   const model::EffectInfo& effect = *candidates[leader];
   if (effect_space(effect, round.fits[leader].model, s.scales).bounds.dimension() == 0) return none;
   FittedModel beside = identify_base_with(s, round.fits[leader].model, effect, kSecondStartSwarms);

@@ -59,6 +59,11 @@ std::size_t judge_round(const Search& s, Round& round, double current_validation
 // how it was found). The other candidates are not tried beside a new base, so no rival or
 // ambiguity is weighed for it. Returns its index, or trials.size().
 inline constexpr double kRebaseRatio = 3.0;
+// Whether a validation RMS [N] is more than kRebaseRatio times the run's noise floor (false
+// while the floor is unknown): the gate of steps 5c, 5d and 6d.
+[[nodiscard]] inline bool far_above_noise(const Search& s, double validation_rms) {
+  return s.noise_floor > 0.0 && validation_rms > kRebaseRatio * s.noise_floor;
+}
 std::size_t rebase_round_leader(Search& s, Round& round, const model::DamperModel& current, const Effects& candidates,
                                 int round_number);
 

@@ -29,7 +29,7 @@ Effects candidate_effects(const ResidualOptions& options) {
 }  // namespace
 
 bool rebase_the_set(Search& s, AcceptedSet& set, ResidualResult& result) {
-  if (!(s.noise_floor > 0.0) || !(set.validation > kRebaseRatio * s.noise_floor)) return false;
+  if (!far_above_noise(s, set.validation)) return false;
   const FittedModel again = identify_base_with(s, set.model, set.effects, kSecondStartSwarms);
   for (const model::EffectInfo* e : set.effects)
     if (e->implausible(again.model.effects, s.scales)) return false;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,10 @@ WithTerms with_damper_terms(const Search& s, const model::DamperModel& m, double
   out.discovery = discover_terms(s.fit_series, force, induction, fluid_of(m), s.options.minimum_reduction,
                                  {.pieces = &s.blocks, .noise_floor = s.noise_floor, .criterion = s.options.claim});
   std::erase_if(out.discovery.terms, [](const DiscoveredTerm& t) { return t.interference; });
+  // A group led by a term left out (a mains line) names a choice the model does not carry.
+  std::erase_if(out.discovery.ambiguous, [&](const std::vector<std::string>& group) {
+    return std::ranges::none_of(out.discovery.terms, [&](const DiscoveredTerm& t) { return t.term == group.front(); });
+  });
   out.validation = validation;
   if (!out.discovery.has_terms()) return out;
   model::DamperModel with_terms = m;
@@ -85,10 +90,19 @@ TermsBesideBase identify_base_beside_terms(Search& s, const model::DamperModel& 
     for (const DiscoveredTerm& t : more.discovery.terms)
       if (std::ranges::none_of(out.terms, [&](const DiscoveredTerm& u) { return u.term == t.term; }))
         out.terms.push_back(t);
-    out.ambiguous.insert(out.ambiguous.end(), more.discovery.ambiguous.begin(), more.discovery.ambiguous.end());
+    for (const auto& group : more.discovery.ambiguous)
+      if (std::ranges::find(out.ambiguous, group) == out.ambiguous.end()) out.ambiguous.push_back(group);
   }
   for (const DiscoveredTerm& t : out.terms) out.names += (out.names.empty() ? "" : " + ") + t.term;
   return out;
+}
+
+// The set becomes the base identified beside the terms, carrying them (step 7 lists them).
+void carry_terms(AcceptedSet& set, TermsBesideBase terms) {
+  set.model = std::move(terms.with_terms);
+  set.validation = terms.validation;
+  set.terms_in_model = std::move(terms.terms);
+  set.terms_ambiguous = std::move(terms.ambiguous);
 }
 
 }  // namespace
@@ -113,50 +127,48 @@ bool weigh_set_against_terms_beside_base(Search& s, AcceptedSet& set, const mode
   set.effects.clear();
   set.rivals.clear();
   set.without.clear();
-  set.model = terms.with_terms;
-  set.validation = terms.validation;
-  set.terms_in_model = terms.terms;
-  set.terms_ambiguous = terms.ambiguous;
+  carry_terms(set, terms);
   return true;
 }
 
-// Passes of step 6c's base and terms, each kept while it lowers the validation RMS by this share.
-constexpr int kTermAlternations = 4;
-constexpr double kTermAlternationGain = 0.02;
+// Step 6d's passes after the first: each regresses the terms afresh and is kept while it lowers
+// the validation RMS by kTermPassGain.
+constexpr int kMoreTermPasses = 3;
+constexpr double kTermPassGain = 0.02;
 
 bool identify_base_beside_terms_where_nothing_is_named(Search& s, AcceptedSet& set, const model::DamperModel& base,
                                                        ResidualResult& result) {
-  if (!s.options.discover || !set.is_the_base() || !(s.noise_floor > 0.0) ||
-      !(set.validation > kRebaseRatio * s.noise_floor))
-    return false;
+  if (!s.options.discover || !set.is_the_base() || !far_above_noise(s, set.validation)) return false;
   const WithTerms on_base = with_damper_terms(s, base, set.validation);
   if (!on_base.discovery.has_terms() || !(on_base.validation < set.validation)) return false;
+  // The terms regressed on `m`'s residual, then the base identified again beside them.
+  const auto beside_terms_of = [&](const model::DamperModel& m) -> std::optional<TermsBesideBase> {
+    const WithTerms regressed = with_damper_terms(s, m, s.validation_rms(m));
+    if (!regressed.discovery.has_terms()) return std::nullopt;
+    return identify_base_beside_terms(s, m, regressed.discovery, {});
+  };
   TermsBesideBase terms = identify_base_beside_terms(s, base, on_base.discovery, {});
-  // The config's damper, which the force never bent, as a second seed for the terms.
-  const WithTerms on_start = with_damper_terms(s, s.options.start, s.validation_rms(s.options.start));
-  if (on_start.discovery.has_terms()) {
-    TermsBesideBase from_start = identify_base_beside_terms(s, s.options.start, on_start.discovery, {});
-    if (from_start.validation < terms.validation) terms = std::move(from_start);
+  const char* seed = "the base as fitted";
+  // The config's damper, which the force never bent, as a second seed: terms regressed on the
+  // bent base can hold it bent (the 2 t mass's cubic and linear terms did).
+  if (auto from_start = beside_terms_of(s.options.start); from_start && from_start->validation < terms.validation) {
+    terms = std::move(*from_start);
+    seed = "the config's damper";
   }
   if (!(terms.validation < on_base.validation)) return false;
-  // The terms were regressed on the bent base: on the base identified beside them, regressed
-  // afresh (and the base identified again beside those) while that keeps paying.
-  for (int pass = 1; pass < kTermAlternations; ++pass) {
-    const model::DamperModel bare = without_terms(terms.with_terms);
-    const WithTerms afresh = with_damper_terms(s, bare, s.validation_rms(bare));
-    if (!afresh.discovery.has_terms()) break;
-    TermsBesideBase next = identify_base_beside_terms(s, bare, afresh.discovery, {});
-    if (!(next.validation < (1.0 - kTermAlternationGain) * terms.validation)) break;
-    terms = std::move(next);
+  int passes = 1;
+  for (int more = 0; more < kMoreTermPasses; ++more) {
+    std::optional<TermsBesideBase> next = beside_terms_of(without_terms(terms.with_terms));
+    if (!next || !(next->validation < (1.0 - kTermPassGain) * terms.validation)) break;
+    terms = std::move(*next);
+    ++passes;
   }
   result.revisions.push_back(format(
-      "nothing named, and the base left %.4g N on the validation blocks (%.3g times the noise): the base "
-      "identified again beside the terms %s, %.4g N (the terms on the base as fitted: %.4g N)",
-      set.validation, set.validation / s.noise_floor, terms.names.c_str(), terms.validation, on_base.validation));
-  set.model = terms.with_terms;
-  set.validation = terms.validation;
-  set.terms_in_model = terms.terms;
-  set.terms_ambiguous = terms.ambiguous;
+      "nothing named, and the base left %.4g N on the validation blocks (%.3g times the noise): the base identified "
+      "again beside the terms %s (regressed first on %s; %d pass%s), %.4g N (the terms on the base as fitted: %.4g N)",
+      set.validation, set.validation / s.noise_floor, terms.names.c_str(), seed, passes, passes == 1 ? "" : "es",
+      terms.validation, on_base.validation));
+  carry_terms(set, std::move(terms));
   return true;
 }
 
@@ -220,7 +232,7 @@ void weigh_set_and_effects_against_terms(Search& s, AcceptedSet& set, const mode
 
 namespace {
 
-// The terms step 6a put in the model, ahead of step 7's, each at the model's final coefficient.
+// The terms step 6a or 6d put in the model, ahead of step 7's, each at the model's final coefficient.
 void list_carried_terms(const model::DamperModel& model, const std::vector<DiscoveredTerm>& carried,
                         std::vector<DiscoveredTerm>& discovered) {
   std::vector<DiscoveredTerm> listed;
@@ -277,6 +289,7 @@ void discover(Search& s, model::DamperModel& model, ResidualResult& result, cons
   }
   const auto report_ambiguous = [&](const std::vector<std::vector<std::string>>& groups) {
     for (const auto& group : groups) {
+      if (std::ranges::find(result.ambiguous, group, &AmbiguousGroup::members) != result.ambiguous.end()) continue;
       result.ambiguous.push_back({.members = group,
                                   .separating_run = "to separate the terms " + group.front() + " and " + group[1] +
                                                     ", run: a motion at other frequencies and amplitudes (the terms "

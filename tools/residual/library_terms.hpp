@@ -27,24 +27,27 @@ bool weigh_set_against_terms_beside_base(Search& s, AcceptedSet& set, const mode
 void weigh_effects_against_terms(Search& s, AcceptedSet& set, const model::DamperModel& base,
                                  ResidualResult& result);
 
-// Step 6c, where nothing was named: a force no candidate has a form for bends the base (the
+// Step 6d, where nothing was named: a force no candidate has a form for bends the base (the
 // 2 t mass of the non-candidate study, m a = -m w^2 x on a sine, took the flow index to its edge
 // and left 220 N against 26 N of noise), and step 7's regression on the bent base's residual
 // cannot undo the bend. Where the base leaves more than kRebaseRatio times the noise on the
 // validation blocks and the regression finds damper terms that lower it, the base is identified
-// again beside them (as in step 6a) and kept if that validates better than the terms on the
-// base as fitted; `set.model` then carries the terms (step 7 lists them). A run at its noise
-// never reaches it. Returns whether it did.
+// again beside them (as in step 6a), and again beside the terms regressed on the config's damper
+// (which the force never bent; the terms of the bent base can hold it bent). The better is kept
+// if it validates better than the terms on the base as fitted; then, up to kMoreTermPasses
+// times, the terms are regressed afresh on the new base and the base identified beside those,
+// while that pays. `set.model` then carries the terms (step 7 lists them). A run at its noise
+// never reaches it; each pass costs a base identification. Returns whether it acted.
 bool identify_base_beside_terms_where_nothing_is_named(Search& s, AcceptedSet& set, const model::DamperModel& base,
                                                        ResidualResult& result);
 
-// Step 6c where nothing was named; else step 6a, then, where it kept the set, step 6b.
+// Step 6d where nothing was named; else step 6a, then, where it kept the set, step 6b.
 void weigh_set_and_effects_against_terms(Search& s, AcceptedSet& set, const model::DamperModel& base,
                                          ResidualResult& result);
 
 // Step 7: what the named effects left, regressed on the library of terms; damper terms join
 // `model` (learned_terms), mains lines are taken off the measurement. Leaves the prediction
-// after in result.predicted_after. Terms the model carries from step 6a or 6c (`carried`) are listed
+// after in result.predicted_after. Terms the model carries from step 6a or 6d (`carried`) are listed
 // first, each at the final model's coefficient, and the groups their regression could not tell
 // apart (`carried_ambiguous`) are reported as step 7's own.
 void discover(Search& s, model::DamperModel& model, ResidualResult& result,

@@ -213,7 +213,8 @@ ResidualResult find_missing_effects(const FitSeries& full, const ResidualOptions
   search::mark_final_set(result);
   search::name_unplaced_thresholds(s, set, result);
   clock.done("effects against terms");
-  // 6b. The named model refit on every kept sample (the base's refit when none was named);
+  // 6b. The named model refit on every kept sample (the base's refit when nothing was named and
+  // step 6d carried no terms);
   // 7. discovery on what it leaves.
   model::DamperModel current =
       set.is_the_base() ? result.base : reported(search::refit_on_every_sample(s, set.model, set.model).model);
